@@ -1,0 +1,87 @@
+#pragma once
+// The omnicam rangefinder: colour image in, 2D range scan out. It owns the
+// camera model, the free-space classifier and the polar scanner, and runs
+// the paper's steps in order (see process()).
+
+#include <omnirange/CameraModel.h>
+#include <omnirange/ColourHistogram.h>
+#include <omnirange/FreeSpaceClassifier.h>
+#include <omnirange/OutlierFilter.h>
+#include <omnirange/PolarScanner.h>
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <string>
+#include <vector>
+
+namespace cv
+{
+class Mat;
+}
+
+namespace omnirange
+{
+/** Every parameter of the rangefinder, read from one ini section whose keys
+ * equal the member names (see ini/maze.ini for a commented example). */
+struct RangefinderParams
+{
+	CameraParams camera;
+	PolarScannerParams scanner;
+	OutlierFilterParams outliers;
+	double threshold{0.05};  ///< Theta of eq. (5) [-] (default 0.05, the maze's)
+	std::string sensor_label{"OMNISCAN"};  ///< label of the produced scans
+	/** The omnicam's pose on the robot, which becomes the scan's sensorPose
+	 * (ini keys pose_x, pose_y, pose_z [m]; pose_yaw, pose_pitch, pose_roll
+	 * [deg], as in MRPT's sensor sections). pose_z defaults to camera h. */
+	mrpt::poses::CPose3D sensor_pose{0, 0, 0.931, 0, 0, 0};
+	/** [m] stdError written into each scan (default 0.1, about the paper's
+	 * measured mean absolute difference). */
+	double std_error{0.10};
+
+	/** Reads every key of `section`; throws std::invalid_argument on an
+	 * unknown key or an impossible value. */
+	void loadFromConfig(
+		const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	void validate() const;
+	static std::vector<std::string> keys();
+	/** One "key = value" line per parameter, in ini syntax. */
+	std::string asIni() const;
+};
+
+/** What one image produced. */
+struct RangeScan
+{
+	std::vector<Ray> rays;  ///< S rays, in scanline order
+	int outliers{0};  ///< rays the outlier filter rejected
+	int count(RayStatus s) const;
+};
+
+class Rangefinder
+{
+   public:
+	/** Throws std::invalid_argument on bad parameters or an empty histogram. */
+	Rangefinder(const RangefinderParams& params, const ColourHistogram& histogram);
+
+	const RangefinderParams& params() const { return p_; }
+	const OmniCameraModel& camera() const { return camera_; }
+	const FreeSpaceClassifier& classifier() const { return classifier_; }
+	const PolarScanner& scanner() const { return scanner_; }
+
+	/** One decoded BGR image of the camera's size -> one scan. */
+	RangeScan process(const cv::Mat& bgr) const;
+
+	/** The scan as an MRPT observation: S rays over 2 pi (S-1)/S, ray i at
+	 * scanline i's bearing, valid only where status is Hit. */
+	mrpt::obs::CObservation2DRangeScan::Ptr toObservation(
+		const RangeScan& scan, mrpt::Clock::time_point stamp) const;
+
+   private:
+	RangefinderParams p_;
+	OmniCameraModel camera_;
+	FreeSpaceClassifier classifier_;
+	PolarScanner scanner_;
+};
+
+}  // namespace omnirange
