@@ -1,0 +1,126 @@
+// Camera model: the paraboloid's known angles, round trips both ways, the
+// image orientation convention, and the alpha fit.
+#include <omnirange/CameraModel.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace omnirange;
+
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+CameraParams firstOrder(double alpha)
+{
+	CameraParams p;
+	p.mirror_model = MirrorModel::FirstOrder;
+	p.alpha = alpha;
+	return p;
+}
+}  // namespace
+
+TEST(CameraModel, ParaboloidKnownAngles)
+{
+	const OmniCameraModel cam{CameraParams{}};  // R = 192, h = 0.931
+	// theta = 2 atan(rho/R): rho = R is the 90-degree circle ...
+	EXPECT_NEAR(cam.thetaFromRho(192.0), kPi / 2, 1e-12);
+	EXPECT_TRUE(std::isinf(cam.distanceFromRho(192.0)));
+	// ... and rho = R tan(pi/8) sees 45 degrees, where d = h.
+	EXPECT_NEAR(cam.distanceFromRho(192.0 * std::tan(kPi / 8)), 0.931, 1e-9);
+	EXPECT_DOUBLE_EQ(cam.distanceFromRho(0.0), 0.0);
+	// The paper's max range, 3.8 m, lies near 151 px (its Fig. 8).
+	EXPECT_NEAR(cam.rhoFromDistance(3.8), 150.6, 0.1);
+}
+
+TEST(CameraModel, RoundTripsBothModels)
+{
+	for (const CameraParams& p : {CameraParams{}, firstOrder(110.0)})
+	{
+		const OmniCameraModel cam{p};
+		for (double rho = 0.5; rho < 170; rho += 3.7)
+		{
+			EXPECT_NEAR(cam.rhoFromTheta(cam.thetaFromRho(rho)), rho, 1e-9);
+			const double d = cam.distanceFromRho(rho);
+			EXPECT_NEAR(cam.rhoFromDistance(d), rho, 1e-9);
+		}
+		for (double b = -3.1; b < 3.14; b += 0.37)
+			for (double d : {0.2, 1.0, 3.7})
+			{
+				const FloorPoint f{d * std::cos(b), d * std::sin(b)};
+				const auto back = cam.floorFromPixel(cam.pixelFromFloor(f));
+				ASSERT_TRUE(back.has_value());
+				EXPECT_NEAR(back->x, f.x, 1e-9);
+				EXPECT_NEAR(back->y, f.y, 1e-9);
+			}
+	}
+}
+
+TEST(CameraModel, DefaultOrientationIsMirroredWithForwardAtTheLeft)
+{
+	const OmniCameraModel cam{CameraParams{}};
+	// Forward (+x) appears on the image's left, on the centre row.
+	const Pixel fwd = cam.pixelFromFloor({1.0, 0.0});
+	EXPECT_LT(fwd.u, 512.0 - 50);
+	EXPECT_NEAR(fwd.v, 384.0, 1e-9);
+	// The robot's left (+y) appears at the top of the image.
+	const Pixel left = cam.pixelFromFloor({0.0, 1.0});
+	EXPECT_NEAR(left.u, 512.0, 1e-9);
+	EXPECT_LT(left.v, 384.0 - 50);
+	// Hence a mirror image: the right (-y) is at the bottom, behind at the right.
+	EXPECT_GT(cam.pixelFromFloor({0.0, -1.0}).v, 384.0 + 50);
+	EXPECT_GT(cam.pixelFromFloor({-1.0, 0.0}).u, 512.0 + 50);
+}
+
+TEST(CameraModel, UnmirroredAndRotatedMount)
+{
+	CameraParams p;
+	p.mirrored = false;
+	p.forward_azimuth = kPi / 2;  // forward at the top
+	const OmniCameraModel cam{p};
+	EXPECT_LT(cam.pixelFromFloor({1.0, 0.0}).v, 384.0 - 50);
+	// Not mirrored: left is counter-clockwise from forward on screen.
+	EXPECT_LT(cam.pixelFromFloor({0.0, 1.0}).u, 512.0 - 50);
+}
+
+TEST(CameraModel, AboveTheHorizonSeesNoFloor)
+{
+	const OmniCameraModel cam{CameraParams{}};
+	EXPECT_FALSE(cam.floorFromPixel({512.0 + 200.0, 384.0}).has_value());
+	EXPECT_TRUE(cam.floorFromPixel({512.0 + 150.0, 384.0}).has_value());
+}
+
+TEST(CameraModel, FitAlphaRecoversTheFirstOrderConstant)
+{
+	const OmniCameraModel truth{firstOrder(123.4)};
+	std::vector<RhoRangePair> pairs;
+	for (double rho = 20; rho < 150; rho += 10)
+		pairs.push_back({rho, truth.distanceFromRho(rho)});
+	EXPECT_NEAR(fitAlpha(pairs, 0.931), 123.4, 1e-9);
+}
+
+TEST(CameraModel, FitAlphaOnParaboloidDataIsNearHalfR)
+{
+	// Small angles: 2 atan(rho/R) ~ 2 rho / R, so alpha ~ R/2 = 96.
+	const OmniCameraModel para{CameraParams{}};
+	std::vector<RhoRangePair> pairs;
+	for (double rho = 2; rho < 20; rho += 2)
+		pairs.push_back({rho, para.distanceFromRho(rho)});
+	EXPECT_NEAR(fitAlpha(pairs, 0.931), 96.0, 0.5);
+}
+
+TEST(CameraModel, BadParametersAreRejected)
+{
+	CameraParams p;
+	p.R = 0;
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);
+	p = {};
+	p.h = -1;
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);
+	p = {};
+	p.cx = 2000;
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);
+	EXPECT_THROW(fitAlpha({}, 0.931), std::invalid_argument);
+	EXPECT_THROW(mirrorModelFromString("hyperbolic"), std::invalid_argument);
+}

@@ -1,0 +1,177 @@
+// Colour histogram: counting, eq. (4)/(5), the colour spaces, and the file.
+#include <omnirange/ColourHistogram.h>
+#include <omnirange/FreeSpaceClassifier.h>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+using namespace omnirange;
+
+namespace
+{
+std::string tempPath(const std::string& name)
+{
+	return testing::TempDir() + "omnirange_" + name;
+}
+
+std::string readAll(const std::string& path)
+{
+	std::ifstream f(path, std::ios::binary);
+	std::ostringstream s;
+	s << f.rdbuf();
+	return s.str();
+}
+
+void writeAll(const std::string& path, const std::string& bytes)
+{
+	std::ofstream(path, std::ios::binary) << bytes;
+}
+
+ColourHistogram sample()
+{
+	ColourHistogram h;
+	const std::uint8_t green[3] = {60, 140, 70}, grey[3] = {128, 128, 128};
+	for (int i = 0; i < 90; ++i) h.addPixel(green);
+	for (int i = 0; i < 10; ++i) h.addPixel(grey);
+	return h;
+}
+}  // namespace
+
+TEST(ColourHistogram, BinsAndProbabilities)
+{
+	const ColourHistogram h = sample();
+	EXPECT_EQ(h.total(), 100u);
+	EXPECT_EQ(h.binner().binCount(), 13u * 13u * 13u);
+	// R=70 -> bin 3, G=140 -> bin 7, B=60 -> bin 3 (x * 13 / 256).
+	const std::uint32_t green_bin = 3 * 169 + 7 * 13 + 3;
+	EXPECT_EQ(h.count(green_bin), 90u);
+	EXPECT_DOUBLE_EQ(h.probability(green_bin), 0.9);  // eq. (4)
+	const std::uint8_t grey[3] = {128, 128, 128};
+	EXPECT_DOUBLE_EQ(h.probability(h.binner().binOf(grey)), 0.1);
+}
+
+TEST(ColourHistogram, AddImageCountsOnlyMaskedPixels)
+{
+	cv::Mat img(4, 5, CV_8UC3, cv::Scalar(10, 20, 30));
+	cv::Mat mask = cv::Mat::zeros(4, 5, CV_8UC1);
+	mask.at<std::uint8_t>(1, 1) = 255;
+	mask.at<std::uint8_t>(2, 3) = 1;
+	ColourHistogram h;
+	h.addImage(img, mask);
+	EXPECT_EQ(h.total(), 2u);
+	EXPECT_THROW(h.addImage(img, cv::Mat::zeros(3, 5, CV_8UC1)), std::invalid_argument);
+}
+
+TEST(ColourHistogram, ThresholdDecidesFreeSpace)
+{
+	const ColourHistogram h = sample();
+	const std::uint8_t green[3] = {60, 140, 70}, grey[3] = {128, 128, 128},
+					   red[3] = {0, 0, 255};
+	const FreeSpaceClassifier c05(h, 0.05);
+	EXPECT_TRUE(c05.isFree(green));
+	EXPECT_TRUE(c05.isFree(grey));  // P = 0.1 >= 0.05
+	EXPECT_FALSE(c05.isFree(red));  // never seen
+	const FreeSpaceClassifier c2(h, 0.2);
+	EXPECT_TRUE(c2.isFree(green));
+	EXPECT_FALSE(c2.isFree(grey));  // P = 0.1 < 0.2
+	EXPECT_EQ(c2.freeBinCount(), 1u);
+}
+
+TEST(ColourHistogram, ClassifierRejectsBadInput)
+{
+	EXPECT_THROW(FreeSpaceClassifier(sample(), -0.1), std::invalid_argument);
+	EXPECT_THROW(FreeSpaceClassifier(sample(), 1.5), std::invalid_argument);
+	EXPECT_THROW(FreeSpaceClassifier(ColourHistogram{}, 0.05), std::invalid_argument);
+	EXPECT_THROW(ColourHistogram(ColourSpace::RGB, 0), std::invalid_argument);
+}
+
+TEST(ColourHistogram, HsvSeparatesBrightnessFromHue)
+{
+	// Two greens of one hue and saturation, one dark and one bright, share an
+	// HSV hue/saturation bin but differ in RGB bins.
+	const std::uint8_t dark[3] = {20, 60, 30}, bright[3] = {60, 180, 90};
+	std::uint8_t a[3], b[3];
+	bgrToHsv(dark, a);
+	bgrToHsv(bright, b);
+	EXPECT_EQ(a[0], b[0]);
+	EXPECT_EQ(a[1], b[1]);
+	EXPECT_EQ(a[2], 60);
+	EXPECT_EQ(b[2], 180);
+	// Pure hues land where the full-range hue circle puts them.
+	const std::uint8_t red[3] = {0, 0, 255}, green[3] = {0, 255, 0}, blue[3] = {255, 0, 0};
+	bgrToHsv(red, a);
+	EXPECT_EQ(a[0], 0);
+	bgrToHsv(green, a);
+	EXPECT_EQ(a[0], 85);  // 256 / 3
+	bgrToHsv(blue, a);
+	EXPECT_EQ(a[0], 170);
+	const ColourBinner hsv(ColourSpace::HSV, 4), rgb(ColourSpace::RGB, 4);
+	EXPECT_EQ(hsv.binOf(dark) / 4, hsv.binOf(bright) / 4);  // same H, S bins
+	EXPECT_NE(rgb.binOf(dark), rgb.binOf(bright));
+}
+
+TEST(ColourHistogram, SaveLoadRoundTrip)
+{
+	for (const ColourSpace space : {ColourSpace::RGB, ColourSpace::HSV})
+	{
+		ColourHistogram h(space, 7);
+		const std::uint8_t px[3] = {1, 200, 33}, qx[3] = {90, 90, 10};
+		for (int i = 0; i < 5; ++i) h.addPixel(px);
+		h.addPixel(qx);
+		const std::string path = tempPath("roundtrip.hist");
+		h.save(path);
+		const ColourHistogram back = ColourHistogram::load(path);
+		EXPECT_EQ(back.space(), space);
+		EXPECT_EQ(back.binsPerChannel(), 7);
+		EXPECT_EQ(back.total(), 6u);
+		for (std::uint32_t b = 0; b < h.binner().binCount(); ++b)
+			ASSERT_EQ(back.count(b), h.count(b)) << "bin " << b;
+		std::remove(path.c_str());
+	}
+}
+
+TEST(ColourHistogram, CorruptFilesAreRejectedWithTheirName)
+{
+	const std::string path = tempPath("corrupt.hist");
+	sample().save(path);
+	const std::string good = readAll(path);
+
+	const auto expectRejected = [&](const std::string& bytes, const std::string& why) {
+		writeAll(path, bytes);
+		try
+		{
+			ColourHistogram::load(path);
+			ADD_FAILURE() << "accepted: " << why;
+		}
+		catch (const std::runtime_error& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+		}
+	};
+	std::string flipped = good;
+	flipped[good.size() / 2] ^= 0x10;
+	expectRejected(flipped, "a flipped bit in the counts");
+	expectRejected(good.substr(0, good.size() - 9), "a truncated file");
+	expectRejected("", "an empty file");
+	expectRejected("P6\n640 480\n255\n" + std::string(100, 'x'), "another format");
+	std::string version = good;
+	version[8] = 9;
+	expectRejected(version, "a future version");
+	EXPECT_THROW(ColourHistogram::load(tempPath("no_such_file.hist")), std::runtime_error);
+	std::remove(path.c_str());
+}
+
+TEST(ColourHistogram, SaveFailureLeavesTheOldFileWhole)
+{
+	const std::string path = tempPath("keep.hist");
+	sample().save(path);
+	const std::string before = readAll(path);
+	// A folder that does not exist: the save fails and nothing changes.
+	EXPECT_THROW(sample().save(tempPath("missing_dir/x.hist")), std::runtime_error);
+	EXPECT_EQ(readAll(path), before);
+	std::remove(path.c_str());
+}

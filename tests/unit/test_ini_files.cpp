@@ -1,0 +1,106 @@
+// The shipped ini files load, carry the paper's Table I, document every key
+// with a unit; docs/parameters.md lists every key with the code's default.
+#include "SyntheticOmni.h"
+
+#include <omnirange/Rangefinder.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+using namespace omnirange;
+
+namespace
+{
+const std::string kSource = OMNIRANGE_SOURCE_DIR;
+
+RangefinderParams loadIni(const std::string& name)
+{
+	mrpt::config::CConfigFile ini(kSource + "/ini/" + name);
+	RangefinderParams p;
+	p.loadFromConfig(ini, "rangefinder");
+	return p;
+}
+
+std::vector<std::string> lines(const std::string& path)
+{
+	std::ifstream f(path);
+	EXPECT_TRUE(f.good()) << path;
+	std::vector<std::string> out;
+	for (std::string l; std::getline(f, l);) out.push_back(l);
+	return out;
+}
+}  // namespace
+
+TEST(IniFiles, MazeAndFactoryCarryTableI)
+{
+	const RangefinderParams maze = loadIni("maze.ini");
+	EXPECT_EQ(maze.scanner.filter.N, 20);
+	EXPECT_EQ(maze.scanner.filter.K, 2);
+	EXPECT_DOUBLE_EQ(maze.threshold, 0.05);
+	const RangefinderParams factory = loadIni("factory.ini");
+	EXPECT_EQ(factory.scanner.filter.N, 20);
+	EXPECT_EQ(factory.scanner.filter.K, 2);
+	EXPECT_DOUBLE_EQ(factory.threshold, 0.075);
+	for (const auto* p : {&maze, &factory})
+	{
+		EXPECT_EQ(p->scanner.scanlines, 360);
+		EXPECT_DOUBLE_EQ(p->scanner.max_range, 3.8);
+		EXPECT_DOUBLE_EQ(p->camera.R, 192);
+		EXPECT_DOUBLE_EQ(p->camera.h, 0.931);
+		EXPECT_NO_THROW(Rangefinder(*p, test::floorHistogram()));
+	}
+}
+
+TEST(IniFiles, EveryKeyHasAUnitComment)
+{
+	const std::regex key(R"(^\s*([A-Za-z_]+)\s*=)");
+	const std::regex unit(R"(^\s*;.*\[[^\]]+\])");
+	for (const std::string name : {"maze.ini", "factory.ini"})
+	{
+		const auto ls = lines(kSource + "/ini/" + name);
+		std::string last_unit_comment;
+		bool has_unit = false;
+		for (const auto& l : ls)
+		{
+			std::smatch m;
+			if (std::regex_search(l, unit)) has_unit = true;
+			else if (std::regex_search(l, m, key))
+				EXPECT_TRUE(has_unit) << name << ": key '" << m[1] << "' has no [unit] comment";
+			else if (l.empty() || l[0] == '[')
+				has_unit = false;  // a unit comment covers only the keys right below it
+		}
+	}
+}
+
+TEST(IniFiles, DocsListEveryKeyWithTheCodesDefault)
+{
+	// The code's defaults, as "key = value" lines.
+	mrpt::config::CConfigFileMemory defaults("[d]\n" + RangefinderParams{}.asIni());
+	const std::regex row(R"(^\|\s*`([A-Za-z_]+)`\s*\|[^|]*\|\s*([^|]*?)\s*\|)");
+	std::map<std::string, std::string> documented;
+	for (const auto& l : lines(kSource + "/docs/parameters.md"))
+	{
+		std::smatch m;
+		if (std::regex_search(l, m, row)) documented[m[1]] = m[2];
+	}
+	for (const auto& key : RangefinderParams::keys())
+	{
+		ASSERT_TRUE(documented.count(key)) << "docs/parameters.md lacks '" << key << "'";
+		const std::string code = defaults.read_string("d", key, "");
+		const std::string doc = documented[key];
+		char* end = nullptr;
+		const double dv = std::strtod(doc.c_str(), &end);
+		if (end != doc.c_str())
+			EXPECT_NEAR(dv, std::stod(code), 1e-5 * std::max(1.0, std::abs(dv))) << key;
+		else
+			EXPECT_EQ(doc, code) << key;
+	}
+	EXPECT_EQ(documented.size(), RangefinderParams::keys().size());
+}

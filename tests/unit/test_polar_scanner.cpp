@@ -1,0 +1,171 @@
+// Polar scanner on drawn images: ranges within the one-pixel quantisation
+// bound, the max/min range cases, scanline geometry and bad input.
+#include "SyntheticOmni.h"
+
+#include <omnirange/PolarScanner.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace omnirange;
+
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+struct Fixture
+{
+	OmniCameraModel cam{CameraParams{}};
+	FreeSpaceClassifier classifier{test::floorHistogram(), 0.05};
+	PolarScanner scanner{cam, PolarScannerParams{}};
+};
+
+/** The range step one pixel further out makes at image radius rho: the
+ * quantisation bound (d is convex in rho, so the step inwards is smaller). */
+double onePixelBound(const OmniCameraModel& cam, double rho)
+{
+	return cam.distanceFromRho(rho + 1) - cam.distanceFromRho(rho);
+}
+}  // namespace
+
+class FloorDisc : public testing::TestWithParam<double>
+{
+};
+
+TEST_P(FloorDisc, EveryRayWithinOnePixelOfTheTrueDistance)
+{
+	Fixture f;
+	const double rho = GetParam();
+	const auto rays = f.scanner.scan(test::drawFloorDisc(f.cam, rho), f.classifier);
+	ASSERT_EQ(rays.size(), 360u);
+	const double truth = f.cam.distanceFromRho(rho);
+	const double bound = onePixelBound(f.cam, rho);
+	double worst = 0;
+	for (const Ray& r : rays)
+	{
+		ASSERT_EQ(r.status, RayStatus::Hit) << "bearing " << r.bearing;
+		worst = std::max(worst, std::abs(r.range - truth));
+	}
+	EXPECT_LE(worst, bound) << "true " << truth << " m at " << rho << " px";
+}
+
+// From just outside the base (30 px) to just inside max range (150.6 px).
+INSTANTIATE_TEST_SUITE_P(
+	Radii, FloorDisc, testing::Values(33.0, 47.5, 64.2, 90.0, 111.7, 130.3, 149.0));
+
+TEST(PolarScanner, NoHitBeforeMaxRangeReportsMaxRange)
+{
+	Fixture f;
+	const auto rays = f.scanner.scan(test::drawFloorDisc(f.cam, 165.0), f.classifier);
+	for (const Ray& r : rays)
+	{
+		ASSERT_EQ(r.status, RayStatus::NoHit);
+		ASSERT_FLOAT_EQ(r.range, 3.8f);
+	}
+}
+
+TEST(PolarScanner, WallInsideTheBaseReportsMinRange)
+{
+	Fixture f;
+	const auto rays = f.scanner.scan(test::drawFloorDisc(f.cam, 20.0), f.classifier);
+	for (const Ray& r : rays)
+	{
+		ASSERT_EQ(r.status, RayStatus::TooClose);
+		ASSERT_FLOAT_EQ(r.range, 0.30f);
+	}
+}
+
+TEST(PolarScanner, HitCloserThanMinRangeReportsMinRange)
+{
+	Fixture f;
+	PolarScannerParams p;
+	p.min_range = 1.0;
+	const PolarScanner scanner(f.cam, p);
+	const double rho = f.cam.rhoFromDistance(0.8);
+	for (const Ray& r : scanner.scan(test::drawFloorDisc(f.cam, rho), f.classifier))
+		ASSERT_EQ(r.status, RayStatus::TooClose);
+}
+
+TEST(PolarScanner, MisclassifiedSpecksDoNotStopAScanline)
+{
+	Fixture f;
+	cv::Mat img = test::drawFloorDisc(f.cam, 120.0);
+	// Wall-coloured specks of one pixel on the floor along the forward ray
+	// (image left): the N filter must ignore them.
+	for (int u = 512 - 100; u > 512 - 110; u -= 3)
+		for (int v = 382; v <= 386; ++v) img.at<cv::Vec3b>(v, u) = test::kWall;
+	const auto rays = f.scanner.scan(img, f.classifier);
+	const double truth = f.cam.distanceFromRho(120.0);
+	for (int i : {179, 180})  // the two rays either side of straight ahead
+		EXPECT_NEAR(rays[i].range, truth, onePixelBound(f.cam, 120.0));
+}
+
+TEST(PolarScanner, ScanlineBearingsFollowMrptsRayAngles)
+{
+	// S rays over 2 pi (S-1)/S: -pi (S-1)/S first, +pi (S-1)/S last, 2 pi/S apart.
+	EXPECT_NEAR(scanlineBearing(0, 360), -kPi * 359 / 360, 1e-12);
+	EXPECT_NEAR(scanlineBearing(359, 360), kPi * 359 / 360, 1e-12);
+	EXPECT_NEAR(scanlineBearing(180, 360) - scanlineBearing(179, 360), kPi / 180, 1e-12);
+	EXPECT_NEAR(scanlineBearing(179, 360), -kPi / 360, 1e-12);  // just right of ahead
+	EXPECT_NEAR(scanAperture(4), 1.5 * kPi, 1e-12);
+}
+
+TEST(PolarScanner, ScanlinesAreConnectedAndOutward)
+{
+	Fixture f;
+	for (int s : {0, 45, 179, 359})
+	{
+		const auto px = f.scanner.scanlinePixels(s);
+		ASSERT_GT(px.size(), 120u);
+		for (std::size_t k = 1; k < px.size(); ++k)
+		{
+			const int du = px[k] % 1024 - px[k - 1] % 1024;
+			const int dv = px[k] / 1024 - px[k - 1] / 1024;
+			ASSERT_LE(std::max(std::abs(du), std::abs(dv)), 1) << "gap at " << k;
+			ASSERT_FALSE(du == 0 && dv == 0) << "repeated pixel at " << k;
+		}
+	}
+	EXPECT_GT(f.scanner.scanRadius(), f.scanner.maxRangeRho() + 20);  // N + K window
+}
+
+TEST(PolarScanner, ImpossibleParametersAreRejected)
+{
+	const OmniCameraModel cam{CameraParams{}};
+	const auto rejects = [&](auto edit) {
+		PolarScannerParams p;
+		edit(p);
+		EXPECT_THROW(PolarScanner(cam, p), std::invalid_argument);
+	};
+	rejects([](PolarScannerParams& p) { p.filter.N = 0; });
+	rejects([](PolarScannerParams& p) { p.filter.K = -1; });
+	rejects([](PolarScannerParams& p) { p.scanlines = 1; });
+	rejects([](PolarScannerParams& p) { p.max_range = 0.1; });  // below min_range
+	rejects([](PolarScannerParams& p) { p.base_radius = 160; });  // beyond max range
+	rejects([](PolarScannerParams& p) { p.max_range = std::nan(""); });
+}
+
+TEST(PolarScanner, ScanCircleLargerThanTheImageIsRejected)
+{
+	CameraParams small;
+	small.image_width = 300;
+	small.image_height = 300;
+	small.cx = small.cy = 150;
+	const OmniCameraModel cam{small};
+	try
+	{
+		PolarScanner(cam, PolarScannerParams{});
+		FAIL() << "accepted a scan circle larger than the image";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("300x300"), std::string::npos) << e.what();
+	}
+}
+
+TEST(PolarScanner, ImageOfTheWrongSizeOrTypeIsRejected)
+{
+	Fixture f;
+	EXPECT_THROW(f.scanner.scan(cv::Mat(480, 640, CV_8UC3), f.classifier), std::invalid_argument);
+	EXPECT_THROW(f.scanner.scan(cv::Mat(768, 1024, CV_8UC1), f.classifier), std::invalid_argument);
+}
