@@ -1,0 +1,93 @@
+// One decoded 1024x768 omnicam frame -> one 360-ray scan, with the paper's
+// parameters (N = 20, K = 2, Theta = 0.05). Run:
+//   build/tests/benchmarks/omnirange_bench_rangefinder --benchmark_repetitions=10
+// The frame is a room drawn through the camera model: a noisy floor texture,
+// walls between 0.8 m and 3.5 m, and a doorway the rays see past max range.
+#include "SyntheticOmni.h"
+
+#include <omnirange/Rangefinder.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+
+using namespace omnirange;
+
+namespace
+{
+cv::Mat noisy(const cv::Mat& img, std::uint32_t seed)
+{
+	cv::Mat out = img.clone();
+	std::mt19937 rng(seed);
+	std::normal_distribution<float> n(0.f, 6.f);
+	for (auto it = out.begin<cv::Vec3b>(); it != out.end<cv::Vec3b>(); ++it)
+		for (int c = 0; c < 3; ++c)
+			(*it)[c] = cv::saturate_cast<std::uint8_t>((*it)[c] + n(rng));
+	return out;
+}
+
+struct Scene
+{
+	RangefinderParams params;
+	cv::Mat frame;
+	ColourHistogram histogram;
+
+	/** open: no wall within max range, so every scanline is read to its end
+	 * (the worst case). */
+	explicit Scene(bool open)
+	{
+		const OmniCameraModel cam{params.camera};
+		const cv::Mat clean = test::drawOmni(cam, [open](const FloorPoint& f) {
+			if (open) return std::hypot(f.x, f.y) > 4.5;
+			const bool doorway = f.x < -1.0 && std::abs(f.y) < 0.5;
+			return (f.x > 1.6 || f.x < -3.5 || f.y > 0.8 || f.y < -2.4) && !doorway;
+		});
+		frame = noisy(clean, 1);
+		// Train on the floor pixels of a second noisy frame of the same room.
+		const cv::Mat train = noisy(clean, 2);
+		cv::Mat mask(clean.size(), CV_8UC1);
+		for (int v = 0; v < clean.rows; ++v)
+			for (int u = 0; u < clean.cols; ++u)
+				mask.at<std::uint8_t>(v, u) = clean.at<cv::Vec3b>(v, u) == test::kFloor ? 255 : 0;
+		histogram.addImage(train, mask);
+	}
+};
+
+const Scene& scene(bool open)
+{
+	static const Scene room(false), field(true);
+	return open ? field : room;
+}
+
+void BM_FrameToScan(benchmark::State& state)
+{
+	const Scene& scene = ::scene(state.range(0) != 0);
+	const Rangefinder rf(scene.params, scene.histogram);
+	int hits = 0;
+	for (auto _ : state)
+	{
+		const RangeScan scan = rf.process(scene.frame);
+		hits = scan.count(RayStatus::Hit);
+		benchmark::DoNotOptimize(scan.rays.data());
+	}
+	state.counters["hit_rays"] = hits;
+}
+// Arg 0: the room; arg 1: open floor, every ray to max range.
+BENCHMARK(BM_FrameToScan)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_FrameToObservation(benchmark::State& state)
+{
+	const Scene& scene = ::scene(false);
+	const Rangefinder rf(scene.params, scene.histogram);
+	for (auto _ : state)
+	{
+		auto obs = rf.toObservation(rf.process(scene.frame), mrpt::Clock::now());
+		benchmark::DoNotOptimize(obs.get());
+	}
+}
+BENCHMARK(BM_FrameToObservation)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
