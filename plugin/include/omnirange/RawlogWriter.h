@@ -1,0 +1,49 @@
+#pragma once
+// Writes an observations-only, gzip-compressed MRPT rawlog and its folder of
+// external images (NAME_Images/ beside NAME.rawlog) under temporary names;
+// commit() renames both into place. Destroyed without commit(), it removes
+// them, so a failed run leaves nothing that looks whole.
+
+#include <mrpt/img/CImage.h>
+#include <mrpt/serialization/CSerializable.h>
+
+#include <memory>
+#include <string>
+
+namespace mrpt::io
+{
+class CFileGZOutputStream;
+}
+
+namespace omnirange
+{
+/** NAME_Images beside NAME.rawlog (the folder MRPT's programs look in). */
+std::string imagesDirFor(const std::string& rawlog_path);
+
+class RawlogWriter
+{
+   public:
+	explicit RawlogWriter(const std::string& path, int gz_level = 1);
+	~RawlogWriter();
+	RawlogWriter(const RawlogWriter&) = delete;
+	RawlogWriter& operator=(const RawlogWriter&) = delete;
+
+	void write(const mrpt::serialization::CSerializable& obj);
+	/** Saves `bgr` as `file_name` (".jpg" or ".png") in the images folder and
+	 * returns a CImage stored externally under that name. */
+	mrpt::img::CImage externalImage(
+		const cv::Mat& bgr, const std::string& file_name, int jpeg_quality = 90);
+	/** Finishes the rawlog and moves it (and its images, if any) into place,
+	 * replacing what was there. */
+	void commit();
+
+	std::size_t objectsWritten() const { return count_; }
+
+   private:
+	std::string path_, tmp_path_, images_, tmp_images_;
+	std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
+	bool has_images_{false}, committed_{false};
+	std::size_t count_{0};
+};
+
+}  // namespace omnirange

@@ -1,0 +1,70 @@
+#pragma once
+// Renders what the robot's omnicam sees: for each pixel, the ray through the
+// paraboloid's single viewpoint is traced into the world of vertical prisms;
+// textured materials, sun and ambient light, floor shadows, the robot's own
+// body, the mirror's rim, anti-aliased edges, sensor noise.
+
+#include <omnirange_sim/Materials.h>
+#include <omnirange_sim/RobotParams.h>
+#include <omnirange_sim/Route.h>
+#include <omnirange_sim/World.h>
+
+#include <omnirange/CameraModel.h>
+
+#include <opencv2/core.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace omnirange::sim
+{
+class OmniRenderer
+{
+   public:
+	OmniRenderer(const World& world, const RobotParams& robot);
+
+	/** The 8-bit BGR image seen from a robot pose; the noise is drawn from
+	 * `noise_seed`, so equal inputs give equal images. */
+	cv::Mat render(const Pose2& robot, std::uint64_t noise_seed) const;
+
+	/** The camera model the renderer uses (with the misalignment applied). */
+	const OmniCameraModel& trueCamera() const { return cam_; }
+
+	static constexpr int kBearingBins = 4096;
+
+   private:
+	struct Sample
+	{
+		std::array<double, 3> bgr;
+		int surface;  // what was hit: floor, sky, robot, a solid's face
+	};
+	struct PixelRay
+	{
+		std::int32_t bin;  // bearing bin in the sensor frame, -1 outside the mirror
+		float theta;  // [rad] incidence angle
+		std::uint8_t kind;  // 0 scene, 1 robot body, 2 rim, 3 outside
+	};
+	struct Frame;  // per-frame ray casts
+
+	Sample trace(const Frame& f, int bin, double theta) const;
+	Sample shadeFloor(const Vec2& p) const;
+	Sample shadeRobot(double theta, double bearing) const;
+	PixelRay pixelRay(double u, double v) const;
+	int binOf(double bearing) const;
+	void buildShadowMap();
+	double floorLight(const Vec2& p) const;
+
+	const World& world_;
+	RobotParams robot_;
+	OmniCameraModel cam_;
+	NoiseTexture tex_;
+	double rim_rho_;
+	std::vector<PixelRay> rays_;  // per pixel, row-major
+	std::vector<float> noise_;  // standard normal values, a power of two long
+	cv::Mat shadow_;  // 8-bit floor light map: 255 lit, 0 in shadow
+	Vec2 shadow_lo_;
+	double shadow_res_{0.04};
+	Vec2 sun_h_;  // horizontal unit vector towards the sun
+};
+
+}  // namespace omnirange::sim

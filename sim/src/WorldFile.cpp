@@ -1,0 +1,473 @@
+// The world file reader. Syntax: docs/worlds.md. Every error names the file
+// and the line.
+#include "omnirange_sim/World.h"
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace omnirange::sim
+{
+namespace
+{
+/** One line's "key=value" tokens, with checks that name the line. */
+class Fields
+{
+   public:
+	Fields(std::string where, const std::vector<std::string>& tokens) : where_(std::move(where))
+	{
+		for (const auto& t : tokens)
+		{
+			const auto eq = t.find('=');
+			if (eq == std::string::npos || eq == 0)
+				throw error("expected key=value, got '" + t + "'");
+			kv_[t.substr(0, eq)] = t.substr(eq + 1);
+		}
+	}
+	std::runtime_error error(const std::string& what) const
+	{
+		return std::runtime_error(where_ + ": " + what);
+	}
+	bool has(const std::string& k) const { return kv_.count(k) != 0; }
+	std::string str(const std::string& k) const
+	{
+		used_.insert(k);
+		const auto it = kv_.find(k);
+		if (it == kv_.end()) throw error("missing key '" + k + "'");
+		return it->second;
+	}
+	double num(const std::string& k) const
+	{
+		const std::string s = str(k);
+		char* end = nullptr;
+		const double v = std::strtod(s.c_str(), &end);
+		if (end == s.c_str() || *end != '\0' || !std::isfinite(v))
+			throw error("key '" + k + "' is not a number: '" + s + "'");
+		return v;
+	}
+	double num(const std::string& k, double def) const { return has(k) ? num(k) : def; }
+	double positive(const std::string& k) const
+	{
+		const double v = num(k);
+		if (!(v > 0)) throw error("key '" + k + "' must be > 0, not " + str(k));
+		return v;
+	}
+	std::array<double, 3> rgb(const std::string& k) const
+	{
+		std::array<double, 3> c{};
+		std::istringstream s(str(k));
+		char comma;
+		if (!(s >> c[0] >> comma >> c[1] >> comma >> c[2]))
+			throw error("key '" + k + "' must be R,G,B");
+		for (double v : c)
+			if (v < 0 || v > 255) throw error("key '" + k + "' has a value outside 0..255");
+		return c;
+	}
+	/** Throws on a key nothing read (a typo must not pass silently). */
+	void requireAllUsed() const
+	{
+		for (const auto& [k, v] : kv_)
+			if (!used_.count(k)) throw error("unknown key '" + k + "'");
+	}
+
+   private:
+	std::string where_;
+	std::map<std::string, std::string> kv_;
+	mutable std::set<std::string> used_;
+};
+
+struct LegendEntry
+{
+	int material;
+	double z0, z1, gap0, gap1;
+};
+
+class Parser
+{
+   public:
+	explicit Parser(const std::string& path) : path_(path) { w_.file = path; }
+
+	World run()
+	{
+		std::ifstream f(path_);
+		if (!f) throw std::runtime_error(path_ + ": cannot open world file");
+		w_.materials = stockMaterials();
+		w_.floor_material = w_.findMaterial("concrete");
+		std::string raw;
+		bool header = false;
+		bool have_bounds = false;
+		while (std::getline(f, raw))
+		{
+			++line_;
+			const auto tokens = split(raw);
+			if (tokens.empty()) continue;
+			const std::string& cmd = tokens[0];
+			if (!header)
+			{
+				if (cmd != "omnirange-world" || tokens.size() != 2 || tokens[1] != "1")
+					throw error("the first line must be 'omnirange-world 1'");
+				header = true;
+				continue;
+			}
+			if (cmd == "plan")
+			{
+				plan(fields(tokens), f);
+				continue;
+			}
+			const Fields fl = fields(tokens);
+			if (cmd == "name")
+			{
+				if (tokens.size() != 2) throw error("expected 'name NAME'");
+				w_.name = tokens[1];
+				continue;
+			}
+			else if (cmd == "bounds")
+			{
+				w_.lo = {fl.num("xmin"), fl.num("ymin")};
+				w_.hi = {fl.num("xmax"), fl.num("ymax")};
+				if (!(w_.hi.x > w_.lo.x && w_.hi.y > w_.lo.y))
+					throw error("bounds need xmax > xmin and ymax > ymin");
+				have_bounds = true;
+			}
+			else if (cmd == "floor")
+				w_.floor_material = material(fl);
+			else if (cmd == "sky")
+			{
+				const auto c = fl.rgb("rgb");
+				for (int i = 0; i < 3; ++i) w_.sky_rgb[i] = static_cast<std::uint8_t>(c[i]);
+			}
+			else if (cmd == "light")
+			{
+				w_.light.azimuth = fl.num("azimuth", w_.light.azimuth);
+				w_.light.elevation = fl.num("elevation", w_.light.elevation);
+				w_.light.ambient = fl.num("ambient", w_.light.ambient);
+				w_.light.diffuse = fl.num("diffuse", w_.light.diffuse);
+				if (!(w_.light.elevation > 0.05 && w_.light.elevation <= 1.5708))
+					throw error("light elevation must be in (0.05, pi/2] rad");
+			}
+			else if (cmd == "material")
+				defineMaterial(fl);
+			else if (cmd == "legend")
+				legend(fl);
+			else if (cmd == "box")
+				add(fl, Footprint::box({fl.num("x"), fl.num("y")}, fl.positive("w"),
+									   fl.positive("d"), fl.num("yaw", 0.0)));
+			else if (cmd == "wall")
+				wall(fl);
+			else if (cmd == "cylinder")
+				add(fl, Footprint::circle({fl.num("x"), fl.num("y")}, fl.positive("r")));
+			else if (cmd == "arc")
+				arc(fl);
+			else if (cmd == "polygon")
+				add(fl, polygon(fl));
+			else if (cmd == "gridmap")
+				gridmap(fl, have_bounds);
+			else
+				throw error("unknown statement '" + cmd + "'");
+			fl.requireAllUsed();
+		}
+		if (!header) throw error("empty world file");
+		if (w_.name.empty()) w_.name = "world";
+		w_.buildIndex();
+		return std::move(w_);
+	}
+
+   private:
+	std::string path_;
+	int line_{0};
+	World w_;
+	std::map<char, LegendEntry> legend_;
+
+	std::string where() const { return path_ + ":" + std::to_string(line_); }
+	std::runtime_error error(const std::string& what) const
+	{
+		return std::runtime_error(where() + ": " + what);
+	}
+
+	static std::vector<std::string> split(const std::string& raw)
+	{
+		const std::string s = raw.substr(0, raw.find('#'));
+		std::istringstream in(s);
+		std::vector<std::string> out;
+		for (std::string t; in >> t;) out.push_back(t);
+		return out;
+	}
+
+	Fields fields(const std::vector<std::string>& tokens) const
+	{
+		if (tokens[0] == "name") return Fields(where(), {});
+		return Fields(where(), {tokens.begin() + 1, tokens.end()});
+	}
+
+	int material(const Fields& fl) const
+	{
+		const std::string name = fl.str("material");
+		const int m = w_.findMaterial(name);
+		if (m < 0) throw error("unknown material '" + name + "'");
+		return m;
+	}
+
+	void defineMaterial(const Fields& fl)
+	{
+		Material m;
+		m.name = fl.str("name");
+		m.rgb = fl.rgb("rgb");
+		m.grain = fl.has("grain") ? fl.positive("grain") : m.grain;
+		m.grain_contrast = fl.num("grain_contrast", m.grain_contrast);
+		m.patch = fl.has("patch") ? fl.positive("patch") : m.patch;
+		m.patch_contrast = fl.num("patch_contrast", m.patch_contrast);
+		m.hue_jitter = fl.num("hue_jitter", m.hue_jitter);
+		const int existing = w_.findMaterial(m.name);
+		if (existing >= 0)
+			w_.materials[existing] = m;
+		else
+			w_.materials.push_back(m);
+	}
+
+	void add(const Fields& fl, const Footprint& fp)
+	{
+		const double z0 = fl.num("z0", 0.0), z1 = fl.num("z1");
+		if (z0 < 0 || !(z1 > z0)) throw error("need 0 <= z0 < z1");
+		w_.solids.push_back({fp, z0, z1, material(fl), line_});
+	}
+
+	void wall(const Fields& fl)
+	{
+		const Vec2 a{fl.num("x0"), fl.num("y0")}, b{fl.num("x1"), fl.num("y1")};
+		const double len = (b - a).norm();
+		if (!(len > 0)) throw error("a wall needs two different end points");
+		const double t = fl.positive("thickness");
+		// The wall's box covers the segment plus half the thickness at each end,
+		// so walls that meet at a corner close it.
+		add(fl, Footprint::box((a + b) * 0.5, len + t, t, std::atan2(b.y - a.y, b.x - a.x)));
+	}
+
+	void arc(const Fields& fl)
+	{
+		const Vec2 c{fl.num("x"), fl.num("y")};
+		const double r = fl.positive("r"), a0 = fl.num("a0"), a1 = fl.num("a1");
+		const double t = fl.positive("thickness");
+		const int n = static_cast<int>(fl.num("segments", 16));
+		if (n < 1 || n > 1000) throw error("segments must be in 1..1000");
+		if (!(t < r)) throw error("an arc's thickness must be below its radius");
+		for (int i = 0; i < n; ++i)
+		{
+			const double b0 = a0 + (a1 - a0) * i / n, b1 = a0 + (a1 - a0) * (i + 1) / n;
+			const auto at = [&](double rad, double ang) {
+				return c + Vec2{std::cos(ang), std::sin(ang)} * rad;
+			};
+			add(fl, Footprint::polygon({at(r - t / 2, b0), at(r + t / 2, b0), at(r + t / 2, b1),
+										at(r - t / 2, b1)}));
+		}
+	}
+
+	Footprint polygon(const Fields& fl) const
+	{
+		std::vector<Vec2> pts;
+		std::istringstream s(fl.str("points"));
+		for (std::string p; std::getline(s, p, ';');)
+		{
+			double x, y;
+			char comma;
+			std::istringstream ps(p);
+			if (!(ps >> x >> comma >> y)) throw error("points must be x,y;x,y;...");
+			pts.push_back({x, y});
+		}
+		try
+		{
+			return Footprint::polygon(pts);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw error(e.what());
+		}
+	}
+
+	void legend(const Fields& fl)
+	{
+		const std::string c = fl.str("char");
+		if (c.size() != 1 || c == "." || c == " ") throw error("legend char must be one character other than '.'");
+		LegendEntry e{material(fl), fl.num("z0", 0.0), fl.num("z1"), fl.num("gap0", -1),
+					  fl.num("gap1", -1)};
+		if (e.z0 < 0 || !(e.z1 > e.z0)) throw error("need 0 <= z0 < z1");
+		if (fl.has("gap0") && !(e.gap0 > e.z0 && e.gap1 > e.gap0 && e.gap1 < e.z1))
+			throw error("a gap needs z0 < gap0 < gap1 < z1");
+		legend_[c[0]] = e;
+	}
+
+	void plan(const Fields& fl, std::istream& in)
+	{
+		const double x0 = fl.num("x0"), y0 = fl.num("y0"), cell = fl.positive("cell");
+		fl.requireAllUsed();
+		std::string row;
+		int r = 0;
+		while (std::getline(in, row))
+		{
+			++line_;
+			if (row == "end") return;
+			// Merge runs of one character into one box per row.
+			for (std::size_t c = 0; c < row.size();)
+			{
+				const char ch = row[c];
+				std::size_t e = c;
+				while (e < row.size() && row[e] == ch) ++e;
+				if (ch != '.' && ch != ' ')
+				{
+					const auto it = legend_.find(ch);
+					if (it == legend_.end())
+						throw error(std::string("plan character '") + ch + "' has no legend");
+					const LegendEntry& L = it->second;
+					const Footprint fp = Footprint::box(
+						{x0 + cell * 0.5 * (c + e), y0 - cell * (r + 0.5)}, cell * (e - c), cell, 0.0);
+					if (L.gap0 > 0)
+					{
+						w_.solids.push_back({fp, L.z0, L.gap0, L.material, line_});
+						w_.solids.push_back({fp, L.gap1, L.z1, L.material, line_});
+					}
+					else
+						w_.solids.push_back({fp, L.z0, L.z1, L.material, line_});
+				}
+				c = e;
+			}
+			++r;
+		}
+		throw error("plan without 'end'");
+	}
+
+	void gridmap(const Fields& fl, bool have_bounds)
+	{
+		std::string file = fl.str("file");
+		if (file.rfind("mrpt:", 0) == 0)
+			file = std::string(MRPT_DATASETS_DIR) + "/" + file.substr(5);
+		else if (!file.empty() && file[0] != '/')
+		{
+			const auto slash = path_.rfind('/');
+			if (slash != std::string::npos) file = path_.substr(0, slash + 1) + file;
+		}
+		mrpt::maps::COccupancyGridMap2D grid;
+		try
+		{
+			mrpt::io::CFileGZInputStream f;
+			if (!f.open(file)) throw std::runtime_error("cannot open");
+			mrpt::serialization::archiveFrom(f) >> grid;
+		}
+		catch (const std::exception& e)
+		{
+			throw error("cannot read grid map '" + file + "': " +
+						std::string(e.what()).substr(0, 200));
+		}
+		const double z0 = fl.num("z0", 0.0), z1 = fl.num("z1");
+		const double below = fl.num("occupied_below", 0.4);
+		if (z0 < 0 || !(z1 > z0)) throw error("need 0 <= z0 < z1");
+		const int m = material(fl);
+		const double res = grid.getResolution();
+		for (unsigned y = 0; y < grid.getSizeY(); ++y)
+			for (unsigned x = 0; x < grid.getSizeX();)
+			{
+				// getCell() is the probability of the cell being free.
+				const auto occ = [&](unsigned i) { return grid.getCell(i, y) < below; };
+				if (!occ(x))
+				{
+					++x;
+					continue;
+				}
+				unsigned e = x;
+				while (e < grid.getSizeX() && occ(e)) ++e;
+				const double cx = grid.getXMin() + res * 0.5 * (x + e);
+				const double cy = grid.getYMin() + res * (y + 0.5);
+				w_.solids.push_back(
+					{Footprint::box({cx, cy}, res * (e - x), res, 0.0), z0, z1, m, line_});
+				x = e;
+			}
+		if (!have_bounds)
+		{
+			w_.lo = {grid.getXMin(), grid.getYMin()};
+			w_.hi = {grid.getXMax(), grid.getYMax()};
+		}
+	}
+};
+}  // namespace
+
+int World::findMaterial(const std::string& n) const
+{
+	for (std::size_t i = 0; i < materials.size(); ++i)
+		if (materials[i].name == n) return static_cast<int>(i);
+	return -1;
+}
+
+void World::buildIndex(double cell)
+{
+	cell_ = cell;
+	Vec2 lo = this->lo, hi = this->hi;
+	for (const auto& s : solids)
+	{
+		lo = {std::min(lo.x, s.footprint.lo().x), std::min(lo.y, s.footprint.lo().y)};
+		hi = {std::max(hi.x, s.footprint.hi().x), std::max(hi.y, s.footprint.hi().y)};
+	}
+	grid_lo_ = lo;
+	nx_ = static_cast<int>(std::ceil((hi.x - lo.x) / cell_)) + 1;
+	ny_ = static_cast<int>(std::ceil((hi.y - lo.y) / cell_)) + 1;
+	grid_.assign(static_cast<std::size_t>(nx_) * ny_, {});
+	for (std::size_t i = 0; i < solids.size(); ++i)
+	{
+		const auto& f = solids[i].footprint;
+		const int x0 = static_cast<int>((f.lo().x - lo.x) / cell_);
+		const int x1 = static_cast<int>((f.hi().x - lo.x) / cell_);
+		const int y0 = static_cast<int>((f.lo().y - lo.y) / cell_);
+		const int y1 = static_cast<int>((f.hi().y - lo.y) / cell_);
+		for (int y = y0; y <= y1; ++y)
+			for (int x = x0; x <= x1; ++x) grid_[y * nx_ + x].push_back(static_cast<int>(i));
+	}
+}
+
+void World::castRay(const Vec2& o, const Vec2& d, double max_t,
+					std::vector<SolidCrossing>& out) const
+{
+	out.clear();
+	thread_local std::vector<int> candidates;
+	candidates.clear();
+	// March through the grid cells the ray visits (Amanatides-Woo).
+	double px = (o.x - grid_lo_.x) / cell_, py = (o.y - grid_lo_.y) / cell_;
+	int cx = static_cast<int>(std::floor(px)), cy = static_cast<int>(std::floor(py));
+	const int sx = d.x > 0 ? 1 : -1, sy = d.y > 0 ? 1 : -1;
+	const double inf = 1e30;
+	const double dtx = d.x != 0 ? cell_ / std::abs(d.x) : inf;
+	const double dty = d.y != 0 ? cell_ / std::abs(d.y) : inf;
+	double tx = d.x != 0 ? ((sx > 0 ? (cx + 1 - px) : (px - cx)) * cell_) / std::abs(d.x) : inf;
+	double ty = d.y != 0 ? ((sy > 0 ? (cy + 1 - py) : (py - cy)) * cell_) / std::abs(d.y) : inf;
+	double t = 0;
+	while (t <= max_t)
+	{
+		if (cx >= 0 && cy >= 0 && cx < nx_ && cy < ny_)
+		{
+			const auto& cellv = grid_[cy * nx_ + cx];
+			candidates.insert(candidates.end(), cellv.begin(), cellv.end());
+		}
+		else if ((cx < 0 && sx < 0) || (cy < 0 && sy < 0) || (cx >= nx_ && sx > 0) ||
+				 (cy >= ny_ && sy > 0))
+			break;  // outside and moving away
+		if (tx < ty)
+			t = tx, tx += dtx, cx += sx;
+		else
+			t = ty, ty += dty, cy += sy;
+	}
+	std::sort(candidates.begin(), candidates.end());
+	candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+	for (int i : candidates)
+		if (const auto c = solids[i].footprint.intersect(o, d); c && c->t_in < max_t)
+			out.push_back({*c, i});
+	std::sort(out.begin(), out.end(), [](const SolidCrossing& a, const SolidCrossing& b) {
+		return a.crossing.t_in < b.crossing.t_in;
+	});
+}
+
+World loadWorld(const std::string& path) { return Parser(path).run(); }
+
+}  // namespace omnirange::sim
