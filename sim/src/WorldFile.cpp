@@ -6,6 +6,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -191,9 +192,14 @@ class Parser
 		return std::runtime_error(where() + ": " + what);
 	}
 
+	/** Tokens of a line; a comment starts at a '#' that begins a word. */
 	static std::vector<std::string> split(const std::string& raw)
 	{
-		const std::string s = raw.substr(0, raw.find('#'));
+		std::size_t hash = 0;
+		while ((hash = raw.find('#', hash)) != std::string::npos &&
+			   hash > 0 && !std::isspace(static_cast<unsigned char>(raw[hash - 1])))
+			++hash;
+		const std::string s = raw.substr(0, hash);
 		std::istringstream in(s);
 		std::vector<std::string> out;
 		for (std::string t; in >> t;) out.push_back(t);

@@ -45,8 +45,8 @@ double scanAperture(int S);
 struct PolarScannerParams
 {
 	int scanlines{360};  ///< S
-	double base_radius{30.0};  ///< [px] the robot base; scanlines start here
-	double min_range{0.30};  ///< [m]
+	double base_radius{40.0};  ///< [px] the robot base; scanlines start here
+	double min_range{0.40};  ///< [m]
 	double max_range{3.8};  ///< [m]
 	HitFilterParams filter{};
 };

@@ -53,7 +53,7 @@ struct RobotBodyParams
 	double frame_rate{4.0};  ///< [Hz] one image, scan, odometry and GT per frame (default 4)
 	double length{0.45};  ///< [m] the body seen below the omnicam (default 0.45)
 	double width{0.38};  ///< [m] (default 0.38)
-	double height{0.40};  ///< [m] top of the body (default 0.40)
+	double height{0.25};  ///< [m] top of the body (default 0.25)
 	double clearance{0.30};  ///< [m] nearest a route may pass a solid (default 0.30)
 	std::uint32_t seed{1};  ///< all randomness derives from it (default 1)
 };
