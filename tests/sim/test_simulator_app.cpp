@@ -1,0 +1,84 @@
+// The whole simulator: its rawlog passes the real `rawlog-edit --info` with
+// the expected count per label; bad input leaves nothing behind.
+#include "SimFixtures.h"
+
+#include <omnirange_sim/Simulator.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+using namespace omnirange::sim;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kSource = OMNIRANGE_SOURCE_DIR;
+
+std::string run(const std::string& cmd)
+{
+	std::string out;
+	FILE* p = ::popen((cmd + " </dev/null 2>&1").c_str(), "r");
+	char buf[4096];
+	while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+	if (p) ::pclose(p);
+	return out;
+}
+}  // namespace
+
+TEST(SimulatorApp, RawlogPassesRawlogEditInfo)
+{
+	const std::string out = test::tempDir() + "/factory10.rawlog";
+	SimOptions o;
+	o.world_file = kSource + "/worlds/factory.world";
+	o.route_file = kSource + "/worlds/factory.route";
+	o.robot_ini = kSource + "/ini/robot-omnip2dx.ini";
+	o.output = out;
+	o.max_frames = 10;
+	Simulator sim;
+	sim.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+	const auto s = sim.run(o);
+	EXPECT_EQ(s.frames, 10);
+	EXPECT_TRUE(fs::exists(test::tempDir() + "/factory10_Images/factory10_OMNICAM_000009.jpg"));
+	EXPECT_TRUE(fs::exists(test::tempDir() + "/factory10_truemap.png"));
+	EXPECT_TRUE(fs::exists(test::tempDir() + "/factory10_truemap.gridmap.gz"));
+
+	const std::string info = run("rawlog-edit --info -i '" + out + "'");
+	for (const std::string label : {"OMNICAM", "LASER", "ODOMETRY", "GT"})
+	{
+		const std::regex row(label + R"(\s*/\s*(\d+)\s*/)");
+		std::smatch m;
+		ASSERT_TRUE(std::regex_search(info, m, row)) << info;
+		EXPECT_EQ(m[1], "10") << label;
+	}
+	EXPECT_NE(info.find("Overall number of objects         : 40"), std::string::npos) << info;
+	EXPECT_NE(info.find("Observations format               : Yes"), std::string::npos) << info;
+}
+
+TEST(SimulatorApp, BadInputLeavesNoOutput)
+{
+	const std::string out = test::tempDir() + "/never.rawlog";
+	SimOptions o;
+	o.world_file = test::writeFile("room.world", test::roomWorld());
+	o.route_file = test::writeFile("through.route", "0 0\n4 0\n");
+	o.output = out;
+	Simulator sim;
+	EXPECT_THROW(sim.run(o), std::runtime_error);
+	o.route_file = test::writeFile("fine.route", "0 0\n1.5 0\n");
+	o.robot_ini = test::writeFile("bad.ini", "[laser]\nrays = 1\n");
+	try
+	{
+		sim.run(o);
+		ADD_FAILURE() << "accepted rays = 1";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("bad.ini"), std::string::npos) << e.what();
+	}
+	o.robot_ini = test::writeFile("typo.ini", "[robot]\nsped = 1\n");
+	EXPECT_THROW(sim.run(o), std::runtime_error);
+	EXPECT_FALSE(fs::exists(out));
+	EXPECT_FALSE(fs::exists(test::tempDir() + "/never_Images"));
+}
