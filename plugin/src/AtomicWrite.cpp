@@ -1,10 +1,12 @@
 #include "omnirange/AtomicWrite.h"
 
+#include <opencv2/imgcodecs.hpp>
 #include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
+#include <vector>
 
 namespace omnirange
 {
@@ -38,6 +40,15 @@ void writeFileAtomically(const std::string& path, const std::string& bytes)
 		f.close();
 		if (!f) throw std::runtime_error("error while writing '" + path + "'");
 	});
+}
+
+void writeImageAtomically(const std::string& path, const cv::Mat& image)
+{
+	const auto dot = path.rfind('.');
+	std::vector<uchar> buf;
+	if (dot == std::string::npos || !cv::imencode(path.substr(dot), image, buf))
+		throw std::runtime_error("cannot encode image '" + path + "'");
+	writeFileAtomically(path, std::string(buf.begin(), buf.end()));
 }
 
 }  // namespace omnirange

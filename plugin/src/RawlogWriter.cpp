@@ -76,6 +76,11 @@ void RawlogWriter::commit()
 		fs::remove_all(images_);
 		fs::rename(tmp_images_, images_);
 	}
+	else if (!link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_))
+	{
+		fs::remove_all(images_);
+		fs::create_directory_symlink(fs::absolute(link_to_), images_);
+	}
 	fs::rename(tmp_path_, path_);
 	committed_ = true;
 }

@@ -116,10 +116,9 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		if (!f.open(tmp)) throw std::runtime_error("cannot write '" + base + "_truemap.gridmap.gz'");
 		mrpt::serialization::archiveFrom(f) << grid;
 	});
-	writeAtomically(base + "_truemap.png", [&](const std::string& tmp) {
-		if (!grid.saveAsBitmapFile(tmp + ".png")) throw std::runtime_error("cannot write '" + base + "_truemap.png'");
-		std::filesystem::rename(tmp + ".png", tmp);
-	});
+	mrpt::img::CImage png;
+	grid.getAsImage(png, true);  // north up, as saveAsBitmapFile() draws it
+	writeImageAtomically(base + "_truemap.png", png.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY));
 	out.commit();
 
 	SimSummary s;

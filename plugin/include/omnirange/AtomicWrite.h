@@ -5,6 +5,11 @@
 #include <functional>
 #include <string>
 
+namespace cv
+{
+class Mat;
+}
+
 namespace omnirange
 {
 /** Calls `write(tmp_path)` and renames tmp_path to `path` when it returns.
@@ -16,5 +21,9 @@ void writeAtomically(
 /** Writes `bytes` to `path` atomically; throws std::runtime_error naming the
  * file on any I/O failure. */
 void writeFileAtomically(const std::string& path, const std::string& bytes);
+
+/** Encodes `image` in the format its path's extension names (.png, .jpg)
+ * and writes it atomically. */
+void writeImageAtomically(const std::string& path, const cv::Mat& image);
 
 }  // namespace omnirange

@@ -33,6 +33,9 @@ class RawlogWriter
 	 * returns a CImage stored externally under that name. */
 	mrpt::img::CImage externalImage(
 		const cv::Mat& bgr, const std::string& file_name, int jpeg_quality = 90);
+	/** At commit(), make NAME_Images a symbolic link to an existing images
+	 * folder (a rawlog that adds observations to another keeps its images). */
+	void linkImagesTo(const std::string& existing_dir) { link_to_ = existing_dir; }
 	/** Finishes the rawlog and moves it (and its images, if any) into place,
 	 * replacing what was there. */
 	void commit();
@@ -40,7 +43,7 @@ class RawlogWriter
 	std::size_t objectsWritten() const { return count_; }
 
    private:
-	std::string path_, tmp_path_, images_, tmp_images_;
+	std::string path_, tmp_path_, images_, tmp_images_, link_to_;
 	std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
 	bool has_images_{false}, committed_{false};
 	std::size_t count_{0};

@@ -1,0 +1,43 @@
+#pragma once
+// Streams an MRPT rawlog (observations-only or actions/sensory-frames,
+// gzip or plain) one object at a time, so memory does not grow with its
+// length. Unlike MRPT's own readers, which stop silently where a rawlog is
+// truncated or holds a class MRPT does not know, it throws, naming the file
+// and how many objects were read.
+
+#include <mrpt/serialization/CSerializable.h>
+
+#include <memory>
+#include <string>
+
+namespace mrpt::io
+{
+class CFileGZInputStream;
+}
+
+namespace omnirange
+{
+class RawlogReader
+{
+   public:
+	/** Opens `path` and points CImage's external-image folder at
+	 * NAME_Images beside it. Throws std::runtime_error if it cannot. */
+	explicit RawlogReader(const std::string& path);
+	~RawlogReader();
+
+	/** The next object, or nullptr at a clean end of file. Throws
+	 * std::runtime_error on a truncated or corrupt file or an unknown class. */
+	mrpt::serialization::CSerializable::Ptr next();
+
+	std::size_t objectsRead() const { return count_; }
+	const std::string& path() const { return path_; }
+	/** Fraction of the (compressed) file consumed, for progress. */
+	double progress() const;
+
+   private:
+	std::string path_;
+	std::unique_ptr<mrpt::io::CFileGZInputStream> in_;
+	std::size_t count_{0};
+};
+
+}  // namespace omnirange

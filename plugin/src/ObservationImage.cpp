@@ -1,0 +1,30 @@
+#include "omnirange/ObservationImage.h"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <stdexcept>
+
+namespace omnirange
+{
+cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
+{
+	cv::Mat img;
+	if (obs.image.isExternallyStored())
+	{
+		// Read the file ourselves: CImage's lazy loading shares state between
+		// threads and reports a missing file with a stack trace.
+		const std::string file = obs.image.getExternalStorageFileAbsolutePath();
+		img = cv::imread(file, cv::IMREAD_COLOR);
+		if (img.empty())
+			throw std::runtime_error("image '" + file + "' of " + obs.sensorLabel +
+									 " is missing or unreadable");
+		return img;
+	}
+	img = obs.image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+	if (img.empty()) throw std::runtime_error("an empty " + obs.sensorLabel + " image");
+	if (img.channels() == 1) cv::cvtColor(img, img, cv::COLOR_GRAY2BGR);
+	return img.clone();
+}
+
+}  // namespace omnirange
