@@ -8,8 +8,8 @@ cd "$(dirname "$0")/.."
 
 mode=${1:-full}
 case "$mode" in
-  full)    out=rawlogs/full; frames=0; suffix="" ;;
-  samples) out=rawlogs; frames=20; suffix="-sample" ;;
+  full)    out=rawlogs/full; frames=0; suffix=""; format=png ;;
+  samples) out=rawlogs; frames=20; suffix="-sample"; format=jpg ;;   # JPEG keeps them small
   *) echo "make-datasets: unknown mode '$mode' (full or samples)" >&2; exit 2 ;;
 esac
 mkdir -p "$out"
@@ -17,5 +17,5 @@ for world in factory maze campus; do
   [ -f "worlds/$world.world" ] || continue
   echo "== $world"
   build/apps/omnirange-sim -w "worlds/$world.world" -r "worlds/$world.route" \
-    -c ini/robot-omnip2dx.ini -o "$out/$world$suffix.rawlog" -n "$frames"
+    -c ini/robot-omnip2dx.ini -o "$out/$world$suffix.rawlog" -n "$frames" -f "$format"
 done

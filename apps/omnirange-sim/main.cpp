@@ -15,6 +15,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> out("o", "output", "rawlog to write (NAME.rawlog; images go to NAME_Images/)", true, "", "FILE", cmd);
 		TCLAP::ValueArg<int> frames("n", "max-frames", "stop after this many frames (0: the whole route)", false, 0, "N", cmd);
 		TCLAP::ValueArg<int> threads("j", "threads", "rendering threads", false, 2, "N", cmd);
+		TCLAP::ValueArg<std::string> format("f", "image-format", "png or jpg, overriding the robot ini", false, "", "FMT", cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary", cmd);
 		omnirange::app::parseArgs(cmd, argc, argv);
 
@@ -27,6 +28,7 @@ int main(int argc, char** argv)
 		o.output = out.getValue();
 		o.max_frames = frames.getValue();
 		o.threads = threads.getValue();
+		o.image_format = format.getValue();
 		const auto s = sim.run(o, [&](int done, int total) {
 			if (!quiet.getValue()) omnirange::app::showProgress("frames", done, total);
 		});

@@ -57,6 +57,11 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 			throw std::runtime_error(o.robot_ini + ": " + e.what());
 		}
 	}
+	if (!o.image_format.empty())
+	{
+		robot.omnicam.format = o.image_format;
+		robot.validate();
+	}
 	const World world = loadWorld(o.world_file);
 	const Route route = loadRoute(o.route_file);
 	checkRouteClear(route, world, robot.robot.clearance, robot.omnicam.camera.h);

@@ -26,7 +26,7 @@ struct OmnicamSimParams
 	double centre_offset_v{0};  ///< [px] the same for cy (default 0)
 	double noise_sigma{3.0};  ///< [grey levels] sensor noise per channel (default 3)
 	bool antialias{true};  ///< supersample pixels on edges (default true)
-	std::string format{"jpg"};  ///< jpg | png (default jpg)
+	std::string format{"png"};  ///< png | jpg (default png: lossless)
 	int jpeg_quality{90};  ///< [1..100] (default 90)
 };
 

@@ -21,6 +21,7 @@ struct SimOptions
 	std::string output;  ///< the rawlog to write, NAME.rawlog
 	int max_frames{0};  ///< 0: the whole route
 	int threads{2};
+	std::string image_format;  ///< png or jpg; empty: the robot ini's
 	double map_resolution{0.05};  ///< [m] of the true grid map
 };
 
