@@ -23,10 +23,13 @@ std::vector<std::string> RangefinderParams::keys()
 }
 
 void RangefinderParams::loadFromConfig(
-	const mrpt::config::CConfigFileBase& c, const std::string& s)
+	const mrpt::config::CConfigFileBase& c, const std::string& s,
+	const std::vector<std::string>& also_allowed)
 {
 	requireParam(c.sectionExists(s), s, "section not found in the ini file");
-	requireKnownKeys(c, s, keys());
+	std::vector<std::string> known = keys();
+	known.insert(known.end(), also_allowed.begin(), also_allowed.end());
+	requireKnownKeys(c, s, known);
 	camera.loadFromConfig(c, s);
 
 	scanner.scanlines = c.read_int(s, "scanlines", scanner.scanlines);

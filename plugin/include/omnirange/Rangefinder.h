@@ -41,9 +41,10 @@ struct RangefinderParams
 	double std_error{0.10};
 
 	/** Reads every key of `section`; throws std::invalid_argument on an
-	 * unknown key or an impossible value. */
+	 * unknown key (one not ours nor in `also_allowed`) or an impossible value. */
 	void loadFromConfig(
-		const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+		const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+		const std::vector<std::string>& also_allowed = {});
 	void validate() const;
 	static std::vector<std::string> keys();
 	/** One "key = value" line per parameter, in ini syntax. */

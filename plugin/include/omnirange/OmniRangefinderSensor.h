@@ -1,0 +1,52 @@
+#pragma once
+// The rangefinder as an MRPT sensor: `rawlog-grabber -p libomnirange.so`
+// with `driver = COmniRangefinderSensor` grabs omnicam frames through an
+// embedded CCameraSensor (any of its grabber types, e.g. a live camera, a
+// folder of images or a rawlog to replay) and emits each image followed by
+// its range scan.
+//
+// Example (see ini/grabber-replay.ini):
+//   [OMNIRANGE]
+//   driver          = COmniRangefinderSensor
+//   process_rate    = 10              ; [Hz]
+//   camera_section  = OMNICAM_SOURCE  ; a CCameraSensor section of this ini
+//   histogram_file  = floor.hist      ; from omnirange-train
+//   ; ...and any key of docs/parameters.md (N, K, threshold, R, h, ...)
+
+#include <omnirange/Rangefinder.h>
+
+#include <mrpt/hwdrivers/CCameraSensor.h>
+#include <mrpt/hwdrivers/CGenericSensor.h>
+
+#include <memory>
+
+namespace omnirange
+{
+class COmniRangefinderSensor : public mrpt::hwdrivers::CGenericSensor
+{
+	DEFINE_GENERIC_SENSOR(COmniRangefinderSensor)
+
+   public:
+	COmniRangefinderSensor();
+	~COmniRangefinderSensor() override;
+
+	void initialize() override;
+	void doProcess() override;
+	void setPathForExternalImages(const std::string& directory) override;
+
+	/** Frames turned into scans so far. */
+	std::size_t framesProcessed() const { return frames_; }
+
+   protected:
+	void loadConfig_sensorSpecific(
+		const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
+
+   private:
+	RangefinderParams params_;
+	std::string histogram_file_;
+	std::unique_ptr<Rangefinder> rangefinder_;
+	std::unique_ptr<mrpt::hwdrivers::CCameraSensor> camera_;
+	std::size_t frames_{0};
+};
+
+}  // namespace omnirange
