@@ -3,6 +3,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <filesystem>
 #include <stdexcept>
 
 namespace omnirange
@@ -15,7 +16,7 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
 		// Read the file ourselves: CImage's lazy loading shares state between
 		// threads and reports a missing file with a stack trace.
 		const std::string file = obs.image.getExternalStorageFileAbsolutePath();
-		img = cv::imread(file, cv::IMREAD_COLOR);
+		if (std::filesystem::is_regular_file(file)) img = cv::imread(file, cv::IMREAD_COLOR);
 		if (img.empty())
 			throw std::runtime_error("image '" + file + "' of " + obs.sensorLabel +
 									 " is missing or unreadable");

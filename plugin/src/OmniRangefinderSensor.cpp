@@ -2,7 +2,7 @@
 
 #include "omnirange/ObservationImage.h"
 
-#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/obs/CObservationImage.h>
 
 #include <stdexcept>
@@ -17,17 +17,25 @@ COmniRangefinderSensor::~COmniRangefinderSensor() = default;
 void COmniRangefinderSensor::loadConfig_sensorSpecific(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {
-	// The section also holds CGenericSensor's own keys and ours.
-	params_.loadFromConfig(
-		cfg, section,
-		{"driver", "process_rate", "max_queue_len", "grab_decimation", "sensorLabel", "camera_section",
-		 "histogram_file"});
+	// rawlog-grabber runs every section as a sensor, so the embedded camera's
+	// keys live in ours, prefixed "camera_"; they become a section of their own.
+	std::vector<std::string> keys, allowed{"driver", "process_rate", "max_queue_len", "grab_decimation",
+										   "sensorLabel", "histogram_file"};
+	cfg.getAllKeys(section, keys);
+	mrpt::config::CConfigFileMemory camera_cfg;
+	const std::string prefix = "camera_";
+	for (const auto& k : keys)
+		if (k.rfind(prefix, 0) == 0)
+		{
+			camera_cfg.write("camera", k.substr(prefix.size()), cfg.read_string(section, k, ""));
+			allowed.push_back(k);
+		}
+	if (!camera_cfg.sectionExists("camera"))
+		throw std::invalid_argument("[" + section + "] has no camera_* keys (e.g. camera_grabber_type)");
+	params_.loadFromConfig(cfg, section, allowed);
 	histogram_file_ = cfg.read_string(section, "histogram_file", "", true);
-	const std::string cam = cfg.read_string(section, "camera_section", "", true);
-	if (!cfg.sectionExists(cam))
-		throw std::invalid_argument("[" + section + "] camera_section: no section [" + cam + "]");
 	camera_ = std::make_unique<mrpt::hwdrivers::CCameraSensor>();
-	camera_->loadConfig(cfg, cam);
+	camera_->loadConfig(camera_cfg, "camera");
 }
 
 void COmniRangefinderSensor::initialize()

@@ -48,12 +48,10 @@ mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 			"rawlog '" + path_ + "' is truncated or corrupt after " + std::to_string(count_) +
 			" objects (" + why + ")");
 	};
+	mrpt::serialization::CSerializable::Ptr obj;
 	try
 	{
-		auto obj = mrpt::serialization::archiveFrom(*in_).ReadObject();
-		if (!obj) throw fail("a null object");
-		++count_;
-		return obj;
+		obj = mrpt::serialization::archiveFrom(*in_).ReadObject();
 	}
 	catch (const mrpt::serialization::CExceptionEOF&)
 	{
@@ -61,16 +59,16 @@ mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 		if (in_->getPosition() == before) return nullptr;
 		throw fail("it ends inside an object");
 	}
-	catch (const std::runtime_error& e)
+	catch (const std::exception& e)
 	{
+		const std::string what = e.what();
+		if (what.find("EOF") != std::string::npos) throw fail("it ends inside an object");
 		throw fail(gist(e));
 	}
+	if (!obj) throw fail("a null object");
+	++count_;
+	return obj;
 }
 
-double RawlogReader::progress() const
-{
-	const auto total = in_->getTotalBytesCount();
-	return total ? static_cast<double>(in_->getPosition()) / static_cast<double>(total) : 0.0;
-}
 
 }  // namespace omnirange

@@ -9,8 +9,10 @@
 //   [OMNIRANGE]
 //   driver          = COmniRangefinderSensor
 //   process_rate    = 10              ; [Hz]
-//   camera_section  = OMNICAM_SOURCE  ; a CCameraSensor section of this ini
 //   histogram_file  = floor.hist      ; from omnirange-train
+//   camera_grabber_type = rawlog      ; any CCameraSensor key, prefixed camera_
+//   camera_rawlog_file  = old.rawlog
+//   camera_sensorLabel  = OMNICAM
 //   ; ...and any key of docs/parameters.md (N, K, threshold, R, h, ...)
 
 #include <omnirange/Rangefinder.h>

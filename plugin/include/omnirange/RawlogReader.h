@@ -31,8 +31,6 @@ class RawlogReader
 
 	std::size_t objectsRead() const { return count_; }
 	const std::string& path() const { return path_; }
-	/** Fraction of the (compressed) file consumed, for progress. */
-	double progress() const;
 
    private:
 	std::string path_;

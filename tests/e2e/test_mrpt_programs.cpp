@@ -1,0 +1,77 @@
+// The produced data in MRPT's own programs: rawlog-edit counts the scans,
+// icp-slam builds a map and a path from them, rawlog-grabber runs the sensor
+// plugin.
+#include "Programs.h"
+
+#include <cmath>
+
+using namespace omnirange::e2e;
+namespace fs = std::filesystem;
+
+TEST(MrptPrograms, RawlogEditCountsTheOmniscans)
+{
+	const std::string dir = workDir("rawlog_edit");
+	const std::string scanned = scannedFactorySample(dir);
+	const RunResult info = run("rawlog-edit --info -i " + q(scanned));
+	ASSERT_EQ(info.code, 0) << info.out;
+	EXPECT_EQ(labelCount(info.out, "OMNISCAN"), 20) << info.out;
+	EXPECT_EQ(labelCount(info.out, "OMNICAM"), 20) << info.out;
+	EXPECT_EQ(labelCount(info.out, "LASER"), 20) << info.out;
+	// Every scan comes right after its image.
+	const RunResult list = run("cd " + q(dir) + " && rawlog-edit --list-timestamps -i scanned.rawlog >/dev/null && cat out.txt");
+	ASSERT_EQ(list.code, 0) << list.out;
+	std::istringstream in(list.out);
+	std::string prev, line;
+	int after_image = 0;
+	while (std::getline(in, line))
+	{
+		if (line.find("OMNISCAN") != std::string::npos && prev.find("OMNICAM") != std::string::npos) ++after_image;
+		prev = line;
+	}
+	EXPECT_EQ(after_image, 20) << list.out.substr(0, 2000);
+}
+
+TEST(MrptPrograms, IcpSlamMapsTheOmniscans)
+{
+	const std::string dir = workDir("icp_slam");
+	const std::string scanned = scannedFactorySample(dir);
+	const RunResult keep = run("cd " + q(dir) + " && rawlog-edit --keep-label OMNISCAN,ODOMETRY -i scanned.rawlog -o only.rawlog -w");
+	ASSERT_EQ(keep.code, 0) << keep.out;
+	const RunResult icp = run("cd " + q(dir) + " && icp-slam " + q(kSource + "/ini/icp-slam-omniscan.ini") + " only.rawlog");
+	ASSERT_EQ(icp.code, 0) << icp.out;
+	const auto path = readTable(dir + "/icp_slam_omniscan/log_estimated_path.txt");
+	ASSERT_GE(path.size(), 20u);
+	// The sample drives 8 s at 0.4 m/s straight ahead; odometry drifts, ICP
+	// must keep the path straight and about that long.
+	const auto& last = path.back();
+	EXPECT_NEAR(std::hypot(last[1], last[2]), 0.4 * 7.6, 0.6);
+	EXPECT_LT(std::abs(last[3]), 0.1);
+	EXPECT_TRUE(fs::exists(dir + "/icp_slam_omniscan/_finalmaps_.txt_mrpt__maps__COccupancyGridMap2D_00.png"));
+}
+
+TEST(MrptPrograms, RawlogGrabberRunsTheSensorPlugin)
+{
+	const std::string dir = workDir("grabber");
+	const RunResult t = run(app("omnirange-train") + " -q -i " + q(kSource + "/rawlogs/factory-sample.rawlog") + " -c " +
+					  q(kSource + "/ini/factory.ini") + " -o " + q(dir + "/f.hist"));
+	ASSERT_EQ(t.code, 0) << t.out;
+	std::ofstream(dir + "/grab.ini")
+		<< "[global]\nrawlog_prefix = " << dir << "/grabbed\ntime_between_launches = 300\n"
+		<< "use_sensoryframes = 0\nGRABBER_PERIOD_MS = 100\n\n"
+		<< "[OMNIRANGE]\ndriver = COmniRangefinderSensor\nprocess_rate = 20\nhistogram_file = " << dir
+		<< "/f.hist\nthreshold = 0.075\ncamera_grabber_type = image_dir\ncamera_image_dir_url = " << kSource
+		<< "/rawlogs/factory-sample_Images\ncamera_left_format = factory-sample_OMNICAM_%06d.jpg\n"
+		<< "camera_start_index = 0\ncamera_end_index = 19\ncamera_sensorLabel = OMNICAM\n";
+	// rawlog-grabber quits at the end of its input: keep it open while the
+	// 20 frames replay (the sensor stops at the last one).
+	const RunResult g = run("cd " + q(dir) + " && sleep 8 | rawlog-grabber -p " + q(kPlugin) + " grab.ini");
+	std::string grabbed;
+	for (const auto& e : fs::directory_iterator(dir))
+		if (e.path().extension() == ".rawlog") grabbed = e.path().string();
+	ASSERT_FALSE(grabbed.empty()) << g.out;
+	const RunResult info = run("rawlog-edit --info -i " + q(grabbed));
+	const int images = labelCount(info.out, "OMNICAM"), scans = labelCount(info.out, "OMNISCAN");
+	EXPECT_GE(scans, 15) << info.out << g.out.substr(0, 3000);
+	EXPECT_LE(scans, images);
+	EXPECT_GE(images, scans);
+}
