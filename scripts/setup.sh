@@ -9,6 +9,7 @@ packages=(
   libmrpt-dev mrpt-apps
   libopencv-dev libopencv-contrib-dev libeigen3-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xdotool x11-apps imagemagick
 )
 missing=()
 for p in "${packages[@]}"; do
