@@ -9,7 +9,7 @@ packages=(
   libmrpt-dev mrpt-apps
   libopencv-dev libopencv-contrib-dev libeigen3-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xdotool x11-apps imagemagick
+  xvfb xdotool x11-apps imagemagick bc
 )
 missing=()
 for p in "${packages[@]}"; do

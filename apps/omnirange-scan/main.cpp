@@ -4,53 +4,9 @@
 #include "Progress.h"
 #include "RangefinderIni.h"
 
-#include <omnirange/ObservationImage.h>
-#include <omnirange/RawlogReader.h>
-#include <omnirange/RawlogWriter.h>
-
-#include <opencv2/core/utility.hpp>
-
-#include <exception>
-#include <filesystem>
+#include <omnirange/RawlogScan.h>
 
 using namespace omnirange;
-
-namespace
-{
-/** Objects read but not yet written, with the scans of their images. */
-struct Batch
-{
-	std::vector<mrpt::serialization::CSerializable::Ptr> objects;
-	std::vector<std::size_t> images;  // indices into objects
-	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;  // one per image
-	std::vector<std::exception_ptr> errors;
-};
-
-/** Decodes and scans the batch's images on `threads` cores. */
-void scanBatch(Batch& b, const Rangefinder& rf, const std::string& ini)
-{
-	b.scans.assign(b.images.size(), nullptr);
-	b.errors.assign(b.images.size(), nullptr);
-	const auto& cam = rf.params().camera;
-	cv::parallel_for_(cv::Range(0, static_cast<int>(b.images.size())), [&](const cv::Range& r) {
-		for (int k = r.start; k < r.end; ++k) try
-			{
-				const auto& img = static_cast<const mrpt::obs::CObservationImage&>(*b.objects[b.images[k]]);
-				const cv::Mat bgr = decodeImage(img);
-				if (bgr.cols != cam.image_width || bgr.rows != cam.image_height)
-					throw std::runtime_error(
-						"image '" + img.image.getExternalStorageFile() + "' is " + std::to_string(bgr.cols) + "x" +
-						std::to_string(bgr.rows) + " but " + ini + " says " + std::to_string(cam.image_width) + "x" +
-						std::to_string(cam.image_height));
-				b.scans[k] = rf.toObservation(rf.process(bgr), img.timestamp);
-			}
-			catch (...)
-			{
-				b.errors[k] = std::current_exception();
-			}
-	});
-}
-}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -63,54 +19,24 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", true, "", "FILE", cmd);
 		TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images to scan", false, "OMNICAM", "LABEL", cmd);
 		TCLAP::ValueArg<int> threads("j", "threads", "threads decoding and scanning images", false, 2, "N", cmd);
+		TCLAP::SwitchArg decode_only("", "decode-only", "only read and decode the images, write nothing (to time decoding alone)", cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary", cmd);
 		app::parseArgs(cmd, argc, argv);
-		if (threads.getValue() < 1) throw std::invalid_argument("--threads must be >= 1");
-		namespace fs = std::filesystem;
-		if (fs::exists(out.getValue()) && fs::exists(in.getValue()) && fs::equivalent(in.getValue(), out.getValue()))
-			throw std::invalid_argument("the output must not be the input rawlog");
 
 		const RangefinderParams params = app::loadRangefinderIni(ini.getValue(), section.getValue());
 		const Rangefinder rf(params, ColourHistogram::load(hist.getValue()));
-		cv::setNumThreads(threads.getValue());
-
-		RawlogReader reader(in.getValue());
-		RawlogWriter writer(out.getValue());
-		writer.linkImagesTo(imagesDirFor(in.getValue()));
-		const std::size_t batch_images = 8 * static_cast<std::size_t>(threads.getValue());
-		std::size_t scanned = 0, hits = 0, rays = 0;
-		Batch b;
-		const auto flush = [&] {
-			scanBatch(b, rf, ini.getValue());
-			for (std::size_t k = 0, i = 0; i < b.objects.size(); ++i)
-			{
-				writer.write(*b.objects[i]);
-				if (k < b.images.size() && b.images[k] == i)
-				{
-					if (b.errors[k]) std::rethrow_exception(b.errors[k]);
-					writer.write(*b.scans[k]);
-					for (std::size_t r = 0; r < b.scans[k]->getScanSize(); ++r) hits += b.scans[k]->getScanRangeValidity(r);
-					rays += b.scans[k]->getScanSize();
-					++k, ++scanned;
-				}
-			}
-			b = Batch{};
-			if (!quiet.getValue()) app::showProgress("images scanned", static_cast<int>(scanned), static_cast<int>(scanned));
-		};
-		while (auto obj = reader.next())
-		{
-			auto img = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(obj);
-			if (img && img->sensorLabel == omni.getValue()) b.images.push_back(b.objects.size());
-			b.objects.push_back(std::move(obj));
-			if (b.images.size() >= batch_images) flush();
-		}
-		flush();
-		if (scanned == 0)
-			throw std::runtime_error("no " + omni.getValue() + " image in '" + in.getValue() + "'");
-		writer.commit();
+		RawlogScanOptions o;
+		o.input = in.getValue();
+		o.output = out.getValue();
+		o.omni_label = omni.getValue();
+		o.threads = threads.getValue();
+		o.decode_only = decode_only.getValue();
+		const auto s = scanRawlog(rf, o, [&](std::size_t n) {
+			if (!quiet.getValue()) app::showProgress("images scanned", static_cast<int>(n), static_cast<int>(n));
+		});
 		if (!quiet.getValue())
-			std::printf("%zu images scanned, %.1f %% of rays hit, %zu objects -> %s\n", scanned,
-						100.0 * hits / std::max<std::size_t>(1, rays), writer.objectsWritten(), out.getValue().c_str());
+			std::printf("%zu images scanned, %.1f %% of rays hit, %zu objects -> %s\n", s.images,
+						100.0 * s.hits / std::max<std::size_t>(1, s.rays), s.objects, o.output.c_str());
 		return 0;
 	});
 }
