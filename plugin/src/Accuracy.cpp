@@ -1,5 +1,7 @@
 #include "omnirange/Accuracy.h"
 
+#include "omnirange/RawlogReader.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -71,6 +73,57 @@ double AccuracyStats::excludedFraction() const
 {
 	const auto n = total();
 	return n ? static_cast<double>(laser_beyond + too_different) / n : 0.0;
+}
+
+AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions& o)
+{
+	if (!(o.max_difference > 0) || !(o.max_dt >= 0))
+		throw std::invalid_argument("accuracy: max_difference must be > 0 and max_dt >= 0");
+	RawlogReader reader(rawlog);
+	mrpt::obs::CObservation2DRangeScan::Ptr laser, omni;
+	AccuracyResult r;
+	r.csv = "frame,laser_ray,omni_ray,bearing_rad,laser_m,omni_m,difference_m,status\n";
+	while (auto obj = reader.next())
+	{
+		auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obj);
+		if (!scan) continue;
+		if (scan->sensorLabel == o.laser_label) laser = scan;
+		else if (scan->sensorLabel == o.omni_label) omni = scan;
+		else continue;
+		if (!laser || !omni || std::abs(mrpt::system::timeDifference(laser->timestamp, omni->timestamp)) > o.max_dt)
+			continue;
+		for (const RangePair& p : pairScans(*laser, *omni, o.max_difference))
+		{
+			r.stats.add(p);
+			char line[200];
+			std::snprintf(line, sizeof line, "%d,%d,%d,%.5f,%.4f,%.4f,%.4f,%s\n", r.frames, p.laser_ray, p.omni_ray,
+						  p.bearing, p.laser, p.omni, p.difference(), toString(p.status).c_str());
+			r.csv += line;
+		}
+		laser.reset();
+		omni.reset();
+		++r.frames;
+	}
+	if (r.frames == 0)
+		throw std::runtime_error("no " + o.laser_label + " scan had an " + o.omni_label + " scan within " +
+								 std::to_string(o.max_dt) + " s in '" + rawlog + "'");
+	return r;
+}
+
+std::string AccuracyResult::table(double max_difference) const
+{
+	const auto& s = stats;
+	const double n = static_cast<double>(std::max<std::size_t>(1, s.total()));
+	char row[512];
+	std::snprintf(row, sizeof row,
+				  "| frames | pairs | compared | excluded: laser beyond omni max range | excluded: difference > %.2f m "
+				  "| omni ray rejected | mean absolute difference | mean percentage difference | signed mean |\n"
+				  "|---|---|---|---|---|---|---|---|---|\n"
+				  "| %d | %zu | %zu | %zu (%.1f %%) | %zu (%.1f %%) | %zu | %.4f m | %.3f %% | %+.4f m |\n",
+				  max_difference, frames, s.total(), s.compared, s.laser_beyond, 100.0 * s.laser_beyond / n,
+				  s.too_different, 100.0 * s.too_different / n, s.omni_rejected, s.meanAbs(), s.meanPercent(),
+				  s.meanSigned());
+	return row;
 }
 
 cv::Mat differenceHistogram(const std::vector<double>& d, const std::string& title, double range, double bin)

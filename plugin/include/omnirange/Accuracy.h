@@ -55,6 +55,28 @@ struct AccuracyStats
 	double excludedFraction() const;
 };
 
+struct AccuracyOptions
+{
+	std::string laser_label{"LASER"};
+	std::string omni_label{"OMNISCAN"};
+	double max_difference{1.25};  ///< [m] pairs differing by more are excluded
+	double max_dt{0.1};  ///< [s] largest time between paired scans
+};
+
+struct AccuracyResult
+{
+	AccuracyStats stats;
+	int frames{0};  ///< scan pairs compared
+	std::string csv;  ///< every ray pair, with a header line
+	/** The Table II-style table, in Markdown. */
+	std::string table(double max_difference) const;
+};
+
+/** Streams a rawlog with both scans and pairs every laser scan with the
+ * omnicam scan taken with it. Throws std::runtime_error on a bad rawlog or
+ * when no pair is found. */
+AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions& options);
+
 /** A bar chart of the differences like paper Fig. 9 (bins of `bin` m over
  * [-range, range]), as an 8-bit BGR image. */
 cv::Mat differenceHistogram(const std::vector<double>& d, const std::string& title, double range = 1.25,
