@@ -1,0 +1,41 @@
+#pragma once
+// Robot paths: ground truth from a rawlog, keyframes estimated by icp-slam,
+// and the absolute trajectory error between them.
+
+#include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <string>
+#include <vector>
+
+namespace omnirange::eval
+{
+struct StampedPose
+{
+	double t;  ///< [s] timestamp
+	mrpt::poses::CPose2D pose;
+};
+
+/** Every GT (CObservationRobotPose) pose of a rawlog, in time order. */
+std::vector<StampedPose> groundTruthPath(const std::string& rawlog, const std::string& label = "GT");
+
+/** The pose of `path` at time t (the nearest sample). */
+mrpt::poses::CPose2D poseAt(const std::vector<StampedPose>& path, double t);
+
+/** Keyframes of an icp-slam simplemap: estimated pose, time of its first observation. */
+std::vector<StampedPose> simplemapKeyframes(const mrpt::maps::CSimpleMap& map);
+mrpt::maps::CSimpleMap loadSimplemap(const std::string& file);
+
+struct PathError
+{
+	int poses{0};
+	double ate_rmse{0};  ///< [m] after the best rigid alignment
+	double final_xy{0};  ///< [m] last pose, after aligning the first poses
+	double final_yaw{0};  ///< [rad]
+	mrpt::poses::CPose2D alignment;  ///< estimated frame -> ground-truth frame (best fit)
+};
+
+/** Compares estimated poses with the ground truth at the same times. */
+PathError comparePaths(const std::vector<StampedPose>& estimated, const std::vector<StampedPose>& truth);
+
+}  // namespace omnirange::eval

@@ -1,0 +1,93 @@
+#include "omnirange_eval/Trajectory.h"
+
+#include <omnirange/RawlogReader.h>
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CObservationRobotPose.h>
+#include <mrpt/poses/CPose3DPDF.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace omnirange::eval
+{
+std::vector<StampedPose> groundTruthPath(const std::string& rawlog, const std::string& label)
+{
+	RawlogReader reader(rawlog);
+	std::vector<StampedPose> out;
+	while (auto obj = reader.next())
+		if (auto gt = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obj); gt && gt->sensorLabel == label)
+			out.push_back({mrpt::Clock::toDouble(gt->timestamp), mrpt::poses::CPose2D(gt->pose.mean)});
+	if (out.empty()) throw std::runtime_error("no " + label + " pose in '" + rawlog + "'");
+	return out;
+}
+
+mrpt::poses::CPose2D poseAt(const std::vector<StampedPose>& path, double t)
+{
+	const auto it = std::lower_bound(path.begin(), path.end(), t, [](const StampedPose& p, double v) { return p.t < v; });
+	if (it == path.end()) return path.back().pose;
+	if (it == path.begin() || std::abs(it->t - t) < std::abs((it - 1)->t - t)) return it->pose;
+	return (it - 1)->pose;
+}
+
+mrpt::maps::CSimpleMap loadSimplemap(const std::string& file)
+{
+	mrpt::maps::CSimpleMap sm;
+	mrpt::io::CFileGZInputStream f;
+	if (!f.open(file)) throw std::runtime_error("cannot open simplemap '" + file + "'");
+	mrpt::serialization::archiveFrom(f) >> sm;
+	return sm;
+}
+
+std::vector<StampedPose> simplemapKeyframes(const mrpt::maps::CSimpleMap& sm)
+{
+	std::vector<StampedPose> out;
+	for (std::size_t i = 0; i < sm.size(); ++i)
+	{
+		const auto [pdf, sf] = sm.get(i);
+		if (!pdf || !sf || sf->size() == 0) continue;
+		out.push_back({mrpt::Clock::toDouble(sf->getObservationByIndex(0)->timestamp),
+					   mrpt::poses::CPose2D(pdf->getMeanVal())});
+	}
+	return out;
+}
+
+PathError comparePaths(const std::vector<StampedPose>& est, const std::vector<StampedPose>& truth)
+{
+	PathError e;
+	if (est.size() < 2 || truth.empty()) throw std::runtime_error("too few poses to compare paths");
+	std::vector<mrpt::poses::CPose2D> a, b;  // estimated, true
+	for (const auto& p : est) a.push_back(p.pose), b.push_back(poseAt(truth, p.t));
+	// Best rigid 2D alignment (least squares, no scale) of a onto b.
+	double ax = 0, ay = 0, bx = 0, by = 0;
+	for (std::size_t i = 0; i < a.size(); ++i) ax += a[i].x(), ay += a[i].y(), bx += b[i].x(), by += b[i].y();
+	const double n = static_cast<double>(a.size());
+	ax /= n, ay /= n, bx /= n, by /= n;
+	double sxx = 0, sxy = 0;
+	for (std::size_t i = 0; i < a.size(); ++i)
+	{
+		const double pax = a[i].x() - ax, pay = a[i].y() - ay, pbx = b[i].x() - bx, pby = b[i].y() - by;
+		sxx += pax * pbx + pay * pby;
+		sxy += pax * pby - pay * pbx;
+	}
+	const double th = std::atan2(sxy, sxx), c = std::cos(th), s = std::sin(th);
+	e.alignment = mrpt::poses::CPose2D(bx - (c * ax - s * ay), by - (s * ax + c * ay), th);
+	double se = 0;
+	for (std::size_t i = 0; i < a.size(); ++i)
+	{
+		const auto p = e.alignment + a[i];
+		se += std::pow(p.x() - b[i].x(), 2) + std::pow(p.y() - b[i].y(), 2);
+	}
+	e.poses = static_cast<int>(a.size());
+	e.ate_rmse = std::sqrt(se / n);
+	// Final pose: both paths start together, how far apart do they end?
+	const auto first = b.front() + (-a.front());
+	const auto last = first + a.back();
+	e.final_xy = std::hypot(last.x() - b.back().x(), last.y() - b.back().y());
+	e.final_yaw = std::abs(mrpt::math::wrapToPi(last.phi() - b.back().phi()));
+	return e;
+}
+
+}  // namespace omnirange::eval
