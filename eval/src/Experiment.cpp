@@ -186,7 +186,7 @@ Metrics Experiment::run(const ExperimentConfig& c)
 			runProgram(out, "icp-slam '" + ini + "' only_" + lc + ".rawlog", "icp-slam_" + lc + ".log");
 			const auto sm = loadSimplemap(out + "/icp_slam_" + lc + "/_finalmap_.simplemap");
 			icp_err[label] = comparePaths(simplemapKeyframes(sm), gt);
-			const auto g = mapFromSimplemap(sm, icp_err[label].alignment, truth);
+			const auto g = mapFromSimplemap(sm, icp_err[label].alignment, truth, invalidIsFreeFor(label));
 			icp_maps[label] = compareWithTruth(g, truth, c.match_tolerance, gt, reach);
 			figs.push_back({label + ", icp-slam", paperStyle(g)});
 			if (c.has_check_region)

@@ -47,19 +47,21 @@ Grid cropLike(const Grid& g, const Grid& like)
 }
 }  // namespace
 
-Grid emptyLike(const Grid& truth)
+Grid emptyLike(const Grid& truth, bool invalid_is_free)
 {
 	Grid g = truth;  // the very same extent and cells
 	g.fill(0.5f);
 	g.insertionOptions.maxDistanceInsertion = 20.0f;
-	g.insertionOptions.considerInvalidRangesAsFreeSpace = true;
+	g.insertionOptions.considerInvalidRangesAsFreeSpace = invalid_is_free;
 	return g;
 }
+
+bool invalidIsFreeFor(const std::string& label) { return label != "OMNISCAN"; }
 
 Grid mapWithGroundTruth(const std::string& rawlog, const std::string& label, const std::vector<StampedPose>& truth,
 						const Grid& like)
 {
-	Grid g = emptyLike(like);
+	Grid g = emptyLike(like, invalidIsFreeFor(label));
 	RawlogReader reader(rawlog);
 	while (auto obj = reader.next())
 		if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obj); scan && scan->sensorLabel == label)
@@ -67,9 +69,10 @@ Grid mapWithGroundTruth(const std::string& rawlog, const std::string& label, con
 	return cropLike(g, like);
 }
 
-Grid mapFromSimplemap(const mrpt::maps::CSimpleMap& sm, const mrpt::poses::CPose2D& alignment, const Grid& like)
+Grid mapFromSimplemap(const mrpt::maps::CSimpleMap& sm, const mrpt::poses::CPose2D& alignment, const Grid& like,
+					  bool invalid_is_free)
 {
-	Grid g = emptyLike(like);
+	Grid g = emptyLike(like, invalid_is_free);
 	for (std::size_t i = 0; i < sm.size(); ++i)
 	{
 		const auto [pdf, sf] = sm.get(i);

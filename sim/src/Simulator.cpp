@@ -75,7 +75,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	cv::setNumThreads(o.threads);
 	const OmniRenderer renderer(world, robot);
 
-	// 2. The frames: OMNICAM, LASER, ODOMETRY, GT at each pose.
+	// 2. The frames: ODOMETRY, GT, OMNICAM, LASER at each pose.
 	RawlogWriter out(o.output);
 	OdometrySimulator odometry(robot.odometry, robot.robot.seed * 31u + 1u);
 	std::mt19937_64 laser_rng(robot.robot.seed * 131u + 7u);
@@ -86,6 +86,15 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		const auto stamp = mrpt::Clock::fromDouble(kEpoch + k * dt);
 		const Pose2& pose = poses[k];
 
+		// Odometry first: icp-slam takes the motion up to an instant from the
+		// odometry before the scans taken at that instant.
+		auto odo = odometry.step(pose);
+		odo->timestamp = stamp;
+		out.write(*odo);
+
+		auto gt = groundTruth(pose);
+		gt->timestamp = stamp;
+		out.write(*gt);
 		auto img = mrpt::obs::CObservationImage::Create();
 		img->sensorLabel = "OMNICAM";
 		img->timestamp = stamp;
@@ -103,13 +112,6 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		laser->timestamp = stamp;
 		out.write(*laser);
 
-		auto odo = odometry.step(pose);
-		odo->timestamp = stamp;
-		out.write(*odo);
-
-		auto gt = groundTruth(pose);
-		gt->timestamp = stamp;
-		out.write(*gt);
 		if (progress) progress(static_cast<int>(k + 1), static_cast<int>(poses.size()));
 	}
 

@@ -11,8 +11,14 @@
 
 namespace omnirange::eval
 {
-/** An empty grid with the true map's extent and resolution. */
-mrpt::maps::COccupancyGridMap2D emptyLike(const mrpt::maps::COccupancyGridMap2D& truth);
+/** An empty grid with the true map's extent and resolution. `invalid_is_free`:
+ * rays without a return clear the cells up to max range (right for a laser;
+ * for the omnicam a "no hit" also covers obstacles too thin in pixels at
+ * long range, and clearing would erase what nearer scans saw). */
+mrpt::maps::COccupancyGridMap2D emptyLike(const mrpt::maps::COccupancyGridMap2D& truth, bool invalid_is_free);
+
+/** MRPT's default for the laser, not for the omnicam scans (see emptyLike). */
+bool invalidIsFreeFor(const std::string& label);
 
 /** The `label` scans of a rawlog inserted at the ground-truth poses. */
 mrpt::maps::COccupancyGridMap2D mapWithGroundTruth(const std::string& rawlog, const std::string& label,
@@ -22,7 +28,7 @@ mrpt::maps::COccupancyGridMap2D mapWithGroundTruth(const std::string& rawlog, co
 /** The scans of an icp-slam simplemap inserted at its poses moved by `alignment`. */
 mrpt::maps::COccupancyGridMap2D mapFromSimplemap(const mrpt::maps::CSimpleMap& sm,
 												  const mrpt::poses::CPose2D& alignment,
-												  const mrpt::maps::COccupancyGridMap2D& like);
+												  const mrpt::maps::COccupancyGridMap2D& like, bool invalid_is_free);
 
 /** Paper style (Figs. 10-13): obstacles black, well-explored free grey,
  * less-explored free white, unknown pale blue; north up. */
