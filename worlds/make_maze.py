@@ -126,8 +126,9 @@ name maze
 bounds xmin={-half - 1:.2f} ymin={-half - 3:.2f} xmax={half + 1:.2f} ymax={half + 1:.2f}
 floor material=grass
 sky rgb=200,215,235
-light azimuth=0.8 elevation=1.2 ambient=0.55 diffuse=0.55
+light azimuth=0.8 elevation=1.2 ambient=0.85 diffuse=0.2
 
+material name=hedge rgb=40,90,36 grain=0.04 grain_contrast=0.18 patch=0.6 patch_contrast=0.08 hue_jitter=0.06   # a darker green than the grass
 legend char=# material=hedge z1=1.8
 legend char=o material=hedge z1=1.8 gap0=0.24 gap1=0.36
 plan x0={-half:.2f} y0={half:.2f} cell={CHAR}
