@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# The main job on the embedded default: set up, then run the rangefinder on
-# one 1024x768 frame with the paper's parameters and print its speed.
-# (It grows into the full experiment as the simulator and apps land.)
+# The main job on the embedded default: set up, then run the two experiments
+# that reproduce the paper (simulate -> train -> scan -> accuracy -> maps ->
+# icp-slam -> report). Reports go to results/maze/ and results/factory/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
-build/tests/benchmarks/omnirange_bench_rangefinder \
-  --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+for experiment in maze factory; do
+  echo "== experiment: $experiment"
+  build/apps/omnirange-experiment "ini/$experiment.ini"
+done
+echo "reports: results/maze/report.md results/factory/report.md"

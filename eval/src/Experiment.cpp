@@ -159,9 +159,14 @@ Metrics Experiment::run(const ExperimentConfig& c)
 	std::map<std::string, MapMetrics> gt_maps;
 	step("maps with ground-truth poses", [&] {
 		std::vector<std::pair<std::string, cv::Mat>> figs{{"true map", paperStyle(truth)}};
-		for (const std::string label : {"LASER", "OMNISCAN"})
+		for (const auto& [label, ini] :
+			 {std::pair<std::string, std::string>{"LASER", c.map_laser_ini}, {"OMNISCAN", c.map_omni_ini}})
 		{
-			const auto g = mapWithGroundTruth(scanned, label, gt, truth);
+			// observations2map, the real program, on a simplemap at the GT poses.
+			const std::string lc = label == "LASER" ? "laser" : "omniscan";
+			saveSimplemap(simplemapWithGroundTruth(scanned, label, gt), out + "/gt_" + lc + ".simplemap");
+			runProgram(out, "observations2map '" + ini + "' gt_" + lc + ".simplemap gt_" + lc, "observations2map_" + lc + ".log");
+			const auto g = resampledLike(loadGrid(out + "/gt_" + lc + "_gridmap_no00.gridmap"), truth);
 			gt_maps[label] = compareWithTruth(g, truth, c.match_tolerance, gt, reach);
 			figs.push_back({label + ", ground-truth poses", paperStyle(g)});
 			if (c.has_check_region)

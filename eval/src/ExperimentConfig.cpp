@@ -18,7 +18,7 @@ std::vector<std::string> ExperimentConfig::keys()
 {
 	return {"name",		   "world",			"route",		 "robot",		  "output",
 			"max_frames",  "train_every",	"map_resolution", "match_tolerance", "icp_laser_ini",
-			"icp_omni_ini", "check_region"};
+			"icp_omni_ini", "map_laser_ini", "map_omni_ini", "check_region"};
 }
 
 ExperimentConfig ExperimentConfig::load(const std::string& ini)
@@ -47,6 +47,8 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 		c.output = path("output", false);
 		c.icp_laser_ini = path("icp_laser_ini", true);
 		c.icp_omni_ini = path("icp_omni_ini", true);
+		c.map_laser_ini = path("map_laser_ini", true);
+		c.map_omni_ini = path("map_omni_ini", true);
 		c.max_frames = cfg.read_int(s, "max_frames", c.max_frames);
 		c.train_every = cfg.read_int(s, "train_every", c.train_every);
 		c.map_resolution = cfg.read_double(s, "map_resolution", c.map_resolution);

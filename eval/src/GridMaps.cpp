@@ -1,6 +1,11 @@
 #include "omnirange_eval/GridMaps.h"
 
+#include <omnirange/AtomicWrite.h>
 #include <omnirange/RawlogReader.h>
+
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/poses/CPose3DPDFGaussian.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -32,8 +37,9 @@ cv::Mat distanceTo(const cv::Mat& m)
 	cv::distanceTransform(inv, d, cv::DIST_L2, cv::DIST_MASK_PRECISE);
 	return d;
 }
-/** `g` resampled onto `like`'s cells (inserting scans may have grown it). */
-Grid cropLike(const Grid& g, const Grid& like)
+}  // namespace
+
+Grid resampledLike(const Grid& g, const Grid& like)
 {
 	Grid out = like;
 	for (unsigned y = 0; y < like.getSizeY(); ++y)
@@ -45,7 +51,6 @@ Grid cropLike(const Grid& g, const Grid& like)
 		}
 	return out;
 }
-}  // namespace
 
 Grid emptyLike(const Grid& truth, bool invalid_is_free)
 {
@@ -58,15 +63,31 @@ Grid emptyLike(const Grid& truth, bool invalid_is_free)
 
 bool invalidIsFreeFor(const std::string& label) { return label != "OMNISCAN"; }
 
-Grid mapWithGroundTruth(const std::string& rawlog, const std::string& label, const std::vector<StampedPose>& truth,
-						const Grid& like)
+mrpt::maps::CSimpleMap simplemapWithGroundTruth(const std::string& rawlog, const std::string& label,
+												const std::vector<StampedPose>& truth)
 {
-	Grid g = emptyLike(like, invalidIsFreeFor(label));
+	mrpt::maps::CSimpleMap sm;
 	RawlogReader reader(rawlog);
 	while (auto obj = reader.next())
 		if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obj); scan && scan->sensorLabel == label)
-			g.insertObservation(*scan, mrpt::poses::CPose3D(poseAt(truth, mrpt::Clock::toDouble(scan->timestamp))));
-	return cropLike(g, like);
+		{
+			auto sf = mrpt::obs::CSensoryFrame::Create();
+			sf->insert(scan);
+			auto pose = mrpt::poses::CPose3DPDFGaussian::Create();
+			pose->mean = mrpt::poses::CPose3D(poseAt(truth, mrpt::Clock::toDouble(scan->timestamp)));
+			sm.insert(pose, sf);
+		}
+	if (sm.empty()) throw std::runtime_error("no " + label + " scan in '" + rawlog + "'");
+	return sm;
+}
+
+void saveSimplemap(const mrpt::maps::CSimpleMap& sm, const std::string& file)
+{
+	writeAtomically(file, [&](const std::string& tmp) {
+		mrpt::io::CFileGZOutputStream f;
+		if (!f.open(tmp)) throw std::runtime_error("cannot write '" + file + "'");
+		mrpt::serialization::archiveFrom(f) << sm;
+	});
 }
 
 Grid mapFromSimplemap(const mrpt::maps::CSimpleMap& sm, const mrpt::poses::CPose2D& alignment, const Grid& like,
@@ -80,7 +101,7 @@ Grid mapFromSimplemap(const mrpt::maps::CSimpleMap& sm, const mrpt::poses::CPose
 		const mrpt::poses::CPose3D pose(alignment + mrpt::poses::CPose2D(pdf->getMeanVal()));
 		for (const auto& obs : *sf) g.insertObservation(*obs, pose);
 	}
-	return cropLike(g, like);
+	return resampledLike(g, like);
 }
 
 cv::Mat paperStyle(const Grid& g)

@@ -62,7 +62,8 @@ TEST(IniFiles, EveryKeyHasAUnitComment)
 {
 	const std::regex key(R"(^\s*([A-Za-z_]+)\s*=)");
 	const std::regex unit(R"(^\s*;.*\[[^\]]+\])");
-	for (const std::string name : {"maze.ini", "factory.ini"})
+	for (const std::string name : {"maze.ini", "factory.ini", "robot-omnip2dx.ini", "icp-slam-laser.ini",
+								   "icp-slam-omniscan.ini", "observations2map-laser.ini", "observations2map-omniscan.ini"})
 	{
 		const auto ls = lines(kSource + "/ini/" + name);
 		std::string last_unit_comment;

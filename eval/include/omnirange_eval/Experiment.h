@@ -19,7 +19,8 @@ struct ExperimentConfig
 	std::string name{"experiment"};
 	std::string world, route, robot;  ///< files, relative to the ini's folder
 	std::string output;  ///< the report folder
-	std::string icp_laser_ini, icp_omni_ini;
+	std::string icp_laser_ini, icp_omni_ini;  ///< icp-slam configurations
+	std::string map_laser_ini, map_omni_ini;  ///< observations2map configurations
 	int max_frames{0};  ///< 0: the whole route
 	int train_every{3};
 	double map_resolution{0.05};  ///< [m]

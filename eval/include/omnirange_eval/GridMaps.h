@@ -20,10 +20,15 @@ mrpt::maps::COccupancyGridMap2D emptyLike(const mrpt::maps::COccupancyGridMap2D&
 /** MRPT's default for the laser, not for the omnicam scans (see emptyLike). */
 bool invalidIsFreeFor(const std::string& label);
 
-/** The `label` scans of a rawlog inserted at the ground-truth poses. */
-mrpt::maps::COccupancyGridMap2D mapWithGroundTruth(const std::string& rawlog, const std::string& label,
-													const std::vector<StampedPose>& truth,
-													const mrpt::maps::COccupancyGridMap2D& like);
+/** The `label` scans of a rawlog, each at the ground-truth pose of its time,
+ * as a simplemap (what MRPT's observations2map turns into a map). */
+mrpt::maps::CSimpleMap simplemapWithGroundTruth(const std::string& rawlog, const std::string& label,
+												const std::vector<StampedPose>& truth);
+void saveSimplemap(const mrpt::maps::CSimpleMap& sm, const std::string& file);
+
+/** `map` resampled onto the cells of `like` (unknown where it has none). */
+mrpt::maps::COccupancyGridMap2D resampledLike(const mrpt::maps::COccupancyGridMap2D& map,
+											   const mrpt::maps::COccupancyGridMap2D& like);
 
 /** The scans of an icp-slam simplemap inserted at its poses moved by `alignment`. */
 mrpt::maps::COccupancyGridMap2D mapFromSimplemap(const mrpt::maps::CSimpleMap& sm,

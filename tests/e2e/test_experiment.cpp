@@ -1,0 +1,61 @@
+// A small experiment end to end, through the real observations2map and
+// icp-slam: its numbers must be within bounds a broken stage would miss.
+#include "Programs.h"
+
+#include <mrpt/config/CConfigFile.h>
+
+using namespace omnirange::e2e;
+namespace fs = std::filesystem;
+
+TEST(Experiment, SmallFactoryRunEndToEnd)
+{
+	const std::string dir = workDir("experiment");
+	// 50 frames: 20 s of the loop's first leg, past the cabinet.
+	const RunResult r = run(app("omnirange-experiment") + " -q " + q(kSource + "/ini/factory.ini") + " -n 50 -o " + q(dir + "/report"));
+	ASSERT_EQ(r.code, 0) << r.out;
+	for (const std::string f : {"report.md", "maps_gt.png", "maps_icp.png", "accuracy_histogram.png", "fig1_fused.png",
+								"gt_laser_gridmap_no00.gridmap", "icp_slam_omniscan/log_estimated_path.txt"})
+		EXPECT_TRUE(fs::exists(dir + "/report/" + f)) << f;
+	const mrpt::config::CConfigFile m(dir + "/report/metrics.ini");
+	const auto v = [&](const std::string& k) { return m.read_double("metrics", k, -1, true); };
+	EXPECT_EQ(v("frames"), 50);
+	// Accuracy (paper Table II: 0.0809 m in the factory).
+	EXPECT_GT(v("accuracy_compared"), 1000);
+	EXPECT_LT(v("accuracy_mean_abs"), 0.15);
+	EXPECT_LT(std::abs(v("accuracy_signed_mean")), 0.15);
+	// Ground-truth maps: the laser's walls are where the true walls are; the
+	// omnicam finds most of the wall surface it could see.
+	EXPECT_GT(v("gt_LASER_precision"), 0.8);
+	EXPECT_GT(v("gt_OMNISCAN_precision"), 0.25);
+	EXPECT_GT(v("gt_OMNISCAN_recall"), 0.4);
+	// The cabinet: the omnicam marks it, the laser only its legs.
+	EXPECT_GT(v("gt_OMNISCAN_check_region_marked"), 1.0);
+	EXPECT_LT(v("gt_LASER_check_region_marked"), 1.0);
+	// icp-slam with the laser follows the true path closely.
+	EXPECT_LT(v("icp_LASER_ate_rmse"), 0.2);
+	EXPECT_LT(v("icp_OMNISCAN_ate_rmse"), 1.0);
+	EXPECT_GE(v("icp_LASER_keyframes"), 5);
+}
+
+TEST(Experiment, BadIniFailsBeforeAnyStage)
+{
+	const std::string dir = workDir("experiment_bad");
+	const auto expectRejected = [&](const std::string& name, const std::string& edit, const std::string& what) {
+		const std::string ini = kSource + "/ini/" + name;  // beside the real ini, so relative paths resolve
+		const RunResult copy = run("sed " + edit + " " + q(kSource + "/ini/factory.ini") + " > " + q(ini));
+		ASSERT_EQ(copy.code, 0) << copy.out;
+		const RunResult r = run(app("omnirange-experiment") + " -q " + q(ini) + " -o " + q(dir + "/out"));
+		fs::remove(ini);
+		EXPECT_EQ(r.code, 1) << r.out;
+		EXPECT_NE(r.out.find(what), std::string::npos) << r.out;
+		EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+		EXPECT_FALSE(fs::exists(dir + "/out")) << "a stage ran";
+	};
+	expectRejected("tmp-typo.ini", "'s/^train_every = /trainevery = /'", "unknown key 'trainevery'");
+	expectRejected("tmp-missing.ini", "'s/^world = .*/world = ..\\/worlds\\/nowhere.world/'", "nowhere.world");
+	expectRejected("tmp-impossible.ini", "'s/^train_every = .*/train_every = 0/'", "train_every must be >= 1");
+	expectRejected("tmp-theta.ini", "'s/^threshold = .*/threshold = 2/'", "threshold");
+	const RunResult none = run(app("omnirange-experiment") + " -q " + q(dir + "/none.ini"));
+	EXPECT_EQ(none.code, 1);
+	EXPECT_NE(none.out.find("cannot open experiment ini"), std::string::npos) << none.out;
+}
