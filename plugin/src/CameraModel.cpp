@@ -161,4 +161,41 @@ double fitAlpha(const std::vector<RhoRangePair>& pairs, double h)
 	return s_rr / s_rt;
 }
 
+double fitR(const std::vector<RhoRangePair>& pairs, double h)
+{
+	if (!(h > 0)) throw std::invalid_argument("fitR: h must be > 0 m");
+	std::vector<std::pair<double, double>> rt;  // rho, theta
+	for (const auto& p : pairs)
+		if (p.rho > 0 && p.range > 0 && std::isfinite(p.range)) rt.emplace_back(p.rho, std::atan2(p.range, h));
+	if (rt.empty()) throw std::invalid_argument("fitR: no (rho > 0, range > 0) pair to fit R from");
+	const auto cost = [&](double logR) {
+		const double R = std::exp(logR);
+		double c = 0;
+		for (const auto& [rho, theta] : rt) c += std::pow(2.0 * std::atan(rho / R) - theta, 2);
+		return c;
+	};
+	// Golden-section search on log R: the cost is unimodal in R for these pairs.
+	double a = std::log(10.0), b = std::log(10000.0);
+	const double g = 0.5 * (std::sqrt(5.0) - 1);
+	double x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = cost(x1), f2 = cost(x2);
+	for (int i = 0; i < 200 && b - a > 1e-10; ++i)
+		if (f1 < f2)
+			b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = cost(x1);
+		else
+			a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = cost(x2);
+	return std::exp(0.5 * (a + b));
+}
+
+double rmsRangeError(const OmniCameraModel& camera, const std::vector<RhoRangePair>& pairs)
+{
+	if (pairs.empty()) return 0;
+	double s = 0;
+	for (const auto& p : pairs)
+	{
+		const double d = camera.distanceFromRho(p.rho);
+		s += std::isfinite(d) ? std::pow(d - p.range, 2) : 100.0;
+	}
+	return std::sqrt(s / pairs.size());
+}
+
 }  // namespace omnirange

@@ -124,3 +124,17 @@ TEST(Apps, AccuracyOfTheFactorySample)
 	expectCleanFailure(none, "no LASER scan had an OMNISCAN scan");
 	EXPECT_FALSE(fs::exists(dir + "/none_table.md"));
 }
+
+TEST(Apps, CalibrateRecoversTheMirrorRadius)
+{
+	const std::string dir = workDir("calibrate");
+	const std::string hist = histogram(dir);
+	// Start from a wrong R: the fit must come back near the simulator's 192 px.
+	std::ofstream(dir + "/wrong.ini") << "[rangefinder]\nR = 205\nthreshold = 0.075\n";
+	const RunResult r = run(app("omnirange-calibrate") + " -i " + q(kSample) + " -c " + q(dir + "/wrong.ini") + " -H " +
+							q(hist) + " --every 1");
+	ASSERT_EQ(r.code, 0) << r.out;
+	const auto at = r.out.find("R = ");
+	ASSERT_NE(at, std::string::npos) << r.out;
+	EXPECT_NEAR(std::stod(r.out.substr(at + 4)), 192.0, 5.0) << r.out;
+}

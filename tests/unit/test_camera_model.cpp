@@ -110,6 +110,20 @@ TEST(CameraModel, FitAlphaOnParaboloidDataIsNearHalfR)
 	EXPECT_NEAR(fitAlpha(pairs, 0.931), 96.0, 0.5);
 }
 
+TEST(CameraModel, FitRRecoversTheParaboloid)
+{
+	CameraParams truth_params;
+	truth_params.R = 210.0;
+	const OmniCameraModel truth{truth_params};
+	std::vector<RhoRangePair> pairs;
+	for (double rho = 30; rho < 170; rho += 7) pairs.push_back({rho, truth.distanceFromRho(rho)});
+	EXPECT_NEAR(fitR(pairs, 0.931), 210.0, 1e-3);
+	EXPECT_NEAR(rmsRangeError(truth, pairs), 0.0, 1e-9);
+	// A wrong R shows in the range error.
+	EXPECT_GT(rmsRangeError(OmniCameraModel{CameraParams{}}, pairs), 0.05);
+	EXPECT_THROW(fitR({}, 0.931), std::invalid_argument);
+}
+
 TEST(CameraModel, BadParametersAreRejected)
 {
 	CameraParams p;

@@ -123,4 +123,14 @@ struct RhoRangePair
  * 1/alpha = sum(rho*theta) / sum(rho^2). Throws on no usable pair. */
 double fitAlpha(const std::vector<RhoRangePair>& pairs, double h);
 
+/** Least-squares fit of the paraboloid's R [px] (theta = 2 atan(rho/R)) from
+ * the same pairs, minimising the squared error in theta (a 1-D search over
+ * R in [10, 10000] px). Throws on no usable pair. */
+double fitR(const std::vector<RhoRangePair>& pairs, double h);
+
+/** RMS of the difference [m] between the pairs' ranges and the floor
+ * distances `camera` gives their rho (pairs beyond the horizon count as
+ * errors of 10 m). */
+double rmsRangeError(const OmniCameraModel& camera, const std::vector<RhoRangePair>& pairs);
+
 }  // namespace omnirange
