@@ -45,7 +45,7 @@ int main(int argc, char** argv)
 			if (!img || !scan || std::abs(mrpt::system::timeDifference(img->timestamp, scan->timestamp)) > 0.1) continue;
 			if (k++ % every.getValue() == 0)
 			{
-				const RangeScan omni_scan = rf.process(decodeImage(*img));
+				const RangeScan omni_scan = rf.process(decodeImage(*img, params.camera));
 				const auto obs = rf.toObservation(omni_scan, img->timestamp);
 				// Hits only; a laser range beyond the current max range cannot have one.
 				for (const RangePair& p : pairScans(*scan, *obs, 1e9))

@@ -157,8 +157,20 @@ Metrics Experiment::run(const ExperimentConfig& c)
 	const auto gt = groundTruthPath(dataset);
 	const double reach = c.rangefinder.scanner.max_range;
 	std::map<std::string, MapMetrics> gt_maps;
+	using Figures = std::vector<std::pair<std::string, cv::Mat>>;
+	// A built map against the truth: its figure, its check region, its metrics.
+	const auto assess = [&](const std::string& mode, const std::string& label, const mrpt::maps::COccupancyGridMap2D& g,
+							Figures& figs) {
+		figs.push_back({label + (mode == "gt" ? ", ground-truth poses" : ", icp-slam"), paperStyle(g)});
+		if (c.has_check_region)
+		{
+			const auto& r = c.check_region;
+			m[mode + "_" + label + "_check_region_marked"] = occupiedLengthAt(g, r[0], r[1], r[2], r[3], 0.15);
+		}
+		return compareWithTruth(g, truth, c.match_tolerance, gt, reach);
+	};
 	step("maps with ground-truth poses", [&] {
-		std::vector<std::pair<std::string, cv::Mat>> figs{{"true map", paperStyle(truth)}};
+		Figures figs{{"true map", paperStyle(truth)}};
 		for (const auto& [label, ini] :
 			 {std::pair<std::string, std::string>{"LASER", c.map_laser_ini}, {"OMNISCAN", c.map_omni_ini}})
 		{
@@ -166,14 +178,7 @@ Metrics Experiment::run(const ExperimentConfig& c)
 			const std::string lc = label == "LASER" ? "laser" : "omniscan";
 			saveSimplemap(simplemapWithGroundTruth(scanned, label, gt), out + "/gt_" + lc + ".simplemap");
 			runProgram(out, "observations2map '" + ini + "' gt_" + lc + ".simplemap gt_" + lc, "observations2map_" + lc + ".log");
-			const auto g = resampledLike(loadGrid(out + "/gt_" + lc + "_gridmap_no00.gridmap"), truth);
-			gt_maps[label] = compareWithTruth(g, truth, c.match_tolerance, gt, reach);
-			figs.push_back({label + ", ground-truth poses", paperStyle(g)});
-			if (c.has_check_region)
-			{
-				const auto& r = c.check_region;
-				m["gt_" + label + "_check_region_marked"] = occupiedLengthAt(g, r[0], r[1], r[2], r[3], 0.15);
-			}
+			gt_maps[label] = assess("gt", label, resampledLike(loadGrid(out + "/gt_" + lc + "_gridmap_no00.gridmap"), truth), figs);
 		}
 		writeImageAtomically(out + "/maps_gt.png", sideBySide(figs));
 	});
@@ -182,7 +187,7 @@ Metrics Experiment::run(const ExperimentConfig& c)
 	std::map<std::string, PathError> icp_err;
 	std::map<std::string, MapMetrics> icp_maps;
 	step("icp-slam", [&] {
-		std::vector<std::pair<std::string, cv::Mat>> figs{{"true map", paperStyle(truth)}};
+		Figures figs{{"true map", paperStyle(truth)}};
 		for (const auto& [label, ini] : {std::pair<std::string, std::string>{"LASER", c.icp_laser_ini}, {"OMNISCAN", c.icp_omni_ini}})
 		{
 			const std::string lc = label == "LASER" ? "laser" : "omniscan";
@@ -191,14 +196,7 @@ Metrics Experiment::run(const ExperimentConfig& c)
 			runProgram(out, "icp-slam '" + ini + "' only_" + lc + ".rawlog", "icp-slam_" + lc + ".log");
 			const auto sm = loadSimplemap(out + "/icp_slam_" + lc + "/_finalmap_.simplemap");
 			icp_err[label] = comparePaths(simplemapKeyframes(sm), gt);
-			const auto g = mapFromSimplemap(sm, icp_err[label].alignment, truth, invalidIsFreeFor(label));
-			icp_maps[label] = compareWithTruth(g, truth, c.match_tolerance, gt, reach);
-			figs.push_back({label + ", icp-slam", paperStyle(g)});
-			if (c.has_check_region)
-			{
-				const auto& r = c.check_region;
-				m["icp_" + label + "_check_region_marked"] = occupiedLengthAt(g, r[0], r[1], r[2], r[3], 0.15);
-			}
+			icp_maps[label] = assess("icp", label, mapFromSimplemap(sm, icp_err[label].alignment, truth, invalidIsFreeFor(label)), figs);
 		}
 		writeImageAtomically(out + "/maps_icp.png", sideBySide(figs));
 	});

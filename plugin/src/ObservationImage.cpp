@@ -28,4 +28,15 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
 	return img.clone();
 }
 
+cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& cam)
+{
+	cv::Mat img = decodeImage(obs);
+	if (img.cols != cam.image_width || img.rows != cam.image_height)
+		throw std::runtime_error(
+			"image '" + obs.image.getExternalStorageFile() + "' is " + std::to_string(img.cols) + "x" +
+			std::to_string(img.rows) + " but the camera is " + std::to_string(cam.image_width) + "x" +
+			std::to_string(cam.image_height));
+	return img;
+}
+
 }  // namespace omnirange

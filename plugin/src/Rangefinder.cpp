@@ -16,9 +16,9 @@ std::vector<std::string> RangefinderParams::keys()
 	for (const char* s :
 		 {"scanlines", "base_radius", "min_range", "max_range", "N", "K",
 		  "threshold", "outlier_filter", "outlier_max_width", "outlier_abs_tol",
-		  "outlier_rel_tol", "sensor_label", "pose_x", "pose_y", "pose_z",
-		  "pose_yaw", "pose_pitch", "pose_roll", "std_error"})
+		  "outlier_rel_tol", "sensor_label", "std_error"})
 		k.emplace_back(s);
+	for (const auto& p : sensorPoseKeys()) k.push_back(p);
 	return k;
 }
 
@@ -47,15 +47,10 @@ void RangefinderParams::loadFromConfig(
 	outliers.rel_tol = c.read_double(s, "outlier_rel_tol", outliers.rel_tol);
 
 	sensor_label = c.read_string(s, "sensor_label", sensor_label);
-	using mrpt::DEG2RAD;
-	using mrpt::RAD2DEG;
-	sensor_pose = mrpt::poses::CPose3D(
-		c.read_double(s, "pose_x", sensor_pose.x()),
-		c.read_double(s, "pose_y", sensor_pose.y()),
-		c.read_double(s, "pose_z", camera.h),
-		DEG2RAD(c.read_double(s, "pose_yaw", RAD2DEG(sensor_pose.yaw()))),
-		DEG2RAD(c.read_double(s, "pose_pitch", RAD2DEG(sensor_pose.pitch()))),
-		DEG2RAD(c.read_double(s, "pose_roll", RAD2DEG(sensor_pose.roll()))));
+	// pose_z defaults to h: the viewpoint is on the camera's axis at that height.
+	mrpt::poses::CPose3D def = sensor_pose;
+	def.z(camera.h);
+	sensor_pose = readSensorPose(c, s, def);
 	std_error = c.read_double(s, "std_error", std_error);
 	validate();
 }

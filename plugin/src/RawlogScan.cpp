@@ -33,12 +33,7 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only)
 		for (int k = r.start; k < r.end; ++k) try
 			{
 				const auto& img = static_cast<const mrpt::obs::CObservationImage&>(*b.objects[b.images[k]]);
-				const cv::Mat bgr = decodeImage(img);
-				if (bgr.cols != cam.image_width || bgr.rows != cam.image_height)
-					throw std::runtime_error(
-						"image '" + img.image.getExternalStorageFile() + "' is " + std::to_string(bgr.cols) + "x" +
-						std::to_string(bgr.rows) + " but the camera is " + std::to_string(cam.image_width) + "x" +
-						std::to_string(cam.image_height));
+				const cv::Mat bgr = decodeImage(img, cam);
 				if (!decode_only) b.scans[k] = rf.toObservation(rf.process(bgr), img.timestamp);
 			}
 			catch (...)

@@ -55,12 +55,7 @@ RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTr
 		if (k < o.first || (k - o.first) % o.every != 0) continue;
 		if (o.max_frames > 0 && r.used >= o.max_frames) break;
 
-		const cv::Mat bgr = decodeImage(*img);
-		if (bgr.cols != rp.camera.image_width || bgr.rows != rp.camera.image_height)
-			throw std::runtime_error("image '" + img->image.getExternalStorageFile() + "' is " +
-									 std::to_string(bgr.cols) + "x" + std::to_string(bgr.rows) +
-									 " but the camera is " + std::to_string(rp.camera.image_width) + "x" +
-									 std::to_string(rp.camera.image_height));
+		const cv::Mat bgr = decodeImage(*img, rp.camera);
 		const TrainingFrame f = trainer.add(bgr, *scan);
 		r.pixels += f.pixels;
 		if (!o.figures_prefix.empty() && r.used == o.figures_frame)

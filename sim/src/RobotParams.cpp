@@ -3,7 +3,6 @@
 #include <omnirange/Config.h>
 
 #include <mrpt/config/CConfigFileBase.h>
-#include <mrpt/core/bits_math.h>
 
 #include <cmath>
 
@@ -11,20 +10,6 @@ namespace omnirange::sim
 {
 namespace
 {
-const std::vector<std::string> kPoseKeys{"pose_x", "pose_y", "pose_z", "pose_yaw", "pose_pitch", "pose_roll"};
-
-mrpt::poses::CPose3D readPose(
-	const mrpt::config::CConfigFileBase& c, const std::string& s, const mrpt::poses::CPose3D& def)
-{
-	using mrpt::DEG2RAD;
-	using mrpt::RAD2DEG;
-	return {c.read_double(s, "pose_x", def.x()), c.read_double(s, "pose_y", def.y()),
-			c.read_double(s, "pose_z", def.z()),
-			DEG2RAD(c.read_double(s, "pose_yaw", RAD2DEG(def.yaw()))),
-			DEG2RAD(c.read_double(s, "pose_pitch", RAD2DEG(def.pitch()))),
-			DEG2RAD(c.read_double(s, "pose_roll", RAD2DEG(def.roll())))};
-}
-
 std::vector<std::string> plus(std::vector<std::string> a, const std::vector<std::string>& b)
 {
 	a.insert(a.end(), b.begin(), b.end());
@@ -36,12 +21,12 @@ void RobotParams::loadFromConfig(const mrpt::config::CConfigFileBase& c)
 {
 	{
 		const std::string s = "omnicam";
-		requireKnownKeys(c, s, plus(plus(CameraParams::keys(), kPoseKeys),
+		requireKnownKeys(c, s, plus(plus(CameraParams::keys(), sensorPoseKeys()),
 									{"rim_theta", "centre_offset_u", "centre_offset_v", "noise_sigma",
 									 "antialias", "format", "jpeg_quality"}));
 		auto& o = omnicam;
 		o.camera.loadFromConfig(c, s);
-		o.pose = readPose(c, s, o.pose);
+		o.pose = readSensorPose(c, s, o.pose);
 		o.rim_theta = c.read_double(s, "rim_theta", o.rim_theta);
 		o.centre_offset_u = c.read_double(s, "centre_offset_u", o.centre_offset_u);
 		o.centre_offset_v = c.read_double(s, "centre_offset_v", o.centre_offset_v);
@@ -52,8 +37,8 @@ void RobotParams::loadFromConfig(const mrpt::config::CConfigFileBase& c)
 	}
 	{
 		const std::string s = "laser";
-		requireKnownKeys(c, s, plus(kPoseKeys, {"rays", "fov", "max_range", "sigma"}));
-		laser.pose = readPose(c, s, laser.pose);
+		requireKnownKeys(c, s, plus(sensorPoseKeys(), {"rays", "fov", "max_range", "sigma"}));
+		laser.pose = readSensorPose(c, s, laser.pose);
 		laser.rays = c.read_int(s, "rays", laser.rays);
 		laser.fov = c.read_double(s, "fov", laser.fov);
 		laser.max_range = c.read_double(s, "max_range", laser.max_range);

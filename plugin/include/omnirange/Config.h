@@ -1,6 +1,8 @@
 #pragma once
 // Small helpers shared by the options structs that load from ini files.
 
+#include <mrpt/poses/CPose3D.h>
+
 #include <string>
 #include <vector>
 
@@ -16,6 +18,14 @@ namespace omnirange
 void requireKnownKeys(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
 	const std::vector<std::string>& known);
+
+/** A sensor's pose on the robot from MRPT's keys pose_x, pose_y, pose_z [m]
+ * and pose_yaw, pose_pitch, pose_roll [deg]; absent keys keep `def`. */
+mrpt::poses::CPose3D readSensorPose(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const mrpt::poses::CPose3D& def);
+
+/** The keys readSensorPose() reads. */
+std::vector<std::string> sensorPoseKeys();
 
 /** Throws std::invalid_argument("<section>: <what>") unless `ok`. */
 void requireParam(bool ok, const std::string& section, const std::string& what);
