@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(
   build-essential cmake pkg-config
-  libmrpt-dev mrpt-apps
+  libmrpt-dev mrpt-apps mrpt-common
   libopencv-dev libopencv-contrib-dev libeigen3-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool x11-apps imagemagick bc
