@@ -82,6 +82,15 @@ int main(int argc, char** argv)
 					rmsRangeError(OmniCameraModel(para), kept), params.camera.R, rmsRangeError(OmniCameraModel(params.camera), kept));
 		std::printf("first order:  alpha = %.2f px/rad   RMS range error %.3f m\n", first.alpha,
 					rmsRangeError(OmniCameraModel(first), kept));
+		// With the ini's mirror: how far (in image radius) the laser's boundary lies
+		// beyond where the omnicam put it; its median suggests boundary_offset.
+		const OmniCameraModel current(params.camera);
+		std::vector<double> px;
+		for (const auto& p : kept) px.push_back(current.rhoFromDistance(p.range) - p.rho);
+		std::nth_element(px.begin(), px.begin() + px.size() / 2, px.end());
+		std::printf("boundary: the laser's edge lies a median %+.2f px beyond the omnicam's "
+					"(suggested boundary_offset = %.2f with the ini's mirror)\n",
+					px[px.size() / 2], params.scanner.boundary_offset + px[px.size() / 2]);
 		return 0;
 	});
 }

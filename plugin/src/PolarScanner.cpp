@@ -27,6 +27,8 @@ void validate(const PolarScannerParams& p, const OmniCameraModel& cam)
 	need(std::isfinite(p.min_range) && p.min_range >= 0, "min_range must be >= 0 m");
 	need(std::isfinite(p.max_range) && p.max_range > p.min_range,
 		 "max_range must be finite and > min_range");
+	need(std::isfinite(p.boundary_offset) && std::abs(p.boundary_offset) <= 1.0,
+		 "boundary_offset must be within [-1, 1] px");
 	need(p.base_radius < cam.rhoFromDistance(p.max_range),
 		 "base_radius must be smaller than the max-range radius (" +
 			 std::to_string(cam.rhoFromDistance(p.max_range)) + " px)");
@@ -75,7 +77,7 @@ PolarScanner::PolarScanner(const OmniCameraModel& cam, const PolarScannerParams&
 			prev = idx;
 			const double rho =
 				std::hypot(u - cam.params().cx, v - cam.params().cy);
-			const double mid = line.count == 0 ? rho : 0.5 * (prev_rho + rho);
+			const double mid = line.count == 0 ? rho : 0.5 * (prev_rho + rho) + p_.boundary_offset;
 			prev_rho = rho;
 			const double range = cam.distanceFromRho(mid);
 			pixel_.push_back(static_cast<std::int32_t>(idx));

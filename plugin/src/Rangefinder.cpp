@@ -14,7 +14,7 @@ std::vector<std::string> RangefinderParams::keys()
 {
 	std::vector<std::string> k = CameraParams::keys();
 	for (const char* s :
-		 {"scanlines", "base_radius", "min_range", "max_range", "N", "K",
+		 {"scanlines", "base_radius", "min_range", "max_range", "boundary_offset", "N", "K",
 		  "threshold", "outlier_filter", "outlier_max_width", "outlier_abs_tol",
 		  "outlier_rel_tol", "sensor_label", "std_error"})
 		k.emplace_back(s);
@@ -36,6 +36,7 @@ void RangefinderParams::loadFromConfig(
 	scanner.base_radius = c.read_double(s, "base_radius", scanner.base_radius);
 	scanner.min_range = c.read_double(s, "min_range", scanner.min_range);
 	scanner.max_range = c.read_double(s, "max_range", scanner.max_range);
+	scanner.boundary_offset = c.read_double(s, "boundary_offset", scanner.boundary_offset);
 	scanner.filter.N = c.read_int(s, "N", scanner.filter.N);
 	scanner.filter.K = c.read_int(s, "K", scanner.filter.K);
 	threshold = c.read_double(s, "threshold", threshold);
@@ -79,7 +80,8 @@ std::string RangefinderParams::asIni() const
 	  << "\nscanlines = " << scanner.scanlines
 	  << "\nbase_radius = " << scanner.base_radius
 	  << "\nmin_range = " << scanner.min_range
-	  << "\nmax_range = " << scanner.max_range << "\nN = " << scanner.filter.N
+	  << "\nmax_range = " << scanner.max_range
+	  << "\nboundary_offset = " << scanner.boundary_offset << "\nN = " << scanner.filter.N
 	  << "\nK = " << scanner.filter.K << "\nthreshold = " << threshold
 	  << "\noutlier_filter = " << toString(outliers.kind)
 	  << "\noutlier_max_width = " << outliers.max_width

@@ -54,6 +54,24 @@ TEST_P(FloorDisc, EveryRayWithinOnePixelOfTheTrueDistance)
 INSTANTIATE_TEST_SUITE_P(
 	Radii, FloorDisc, testing::Values(43.0, 51.5, 64.2, 90.0, 111.7, 130.3, 149.0));
 
+TEST(PolarScanner, BoundaryOffsetMovesEveryHitOutwards)
+{
+	Fixture f;
+	PolarScannerParams p;
+	p.boundary_offset = 0.5;
+	const PolarScanner shifted(f.cam, p);
+	const cv::Mat img = test::drawFloorDisc(f.cam, 100.0);
+	const auto a = f.scanner.scan(img, f.classifier), b = shifted.scan(img, f.classifier);
+	for (std::size_t i = 0; i < a.size(); ++i)
+	{
+		ASSERT_EQ(b[i].status, RayStatus::Hit);
+		EXPECT_NEAR(b[i].hit_rho, a[i].hit_rho + 0.5, 1e-4);
+		EXPECT_NEAR(b[i].range, f.cam.distanceFromRho(b[i].hit_rho), 1e-4);
+	}
+	p.boundary_offset = 2;
+	EXPECT_THROW(PolarScanner(f.cam, p), std::invalid_argument);
+}
+
 TEST(PolarScanner, NoHitBeforeMaxRangeReportsMaxRange)
 {
 	Fixture f;

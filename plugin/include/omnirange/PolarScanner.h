@@ -48,6 +48,10 @@ struct PolarScannerParams
 	double base_radius{40.0};  ///< [px] the robot base; scanlines start here
 	double min_range{0.40};  ///< [m]
 	double max_range{3.8};  ///< [m]
+	/** [px] where the floor's end is put, outwards from the midpoint between
+	 * the last free and the first non-free pixel (default 0: exact for hard
+	 * edges; blurred edges want about +0.5, see omnirange-calibrate). */
+	double boundary_offset{0.0};
 	HitFilterParams filter{};
 };
 
