@@ -5,6 +5,7 @@
 #include "RangefinderIni.h"
 
 #include <omnirange/Accuracy.h>
+#include <omnirange/ImageScanPairer.h>
 #include <omnirange/ObservationImage.h>
 #include <omnirange/RawlogReader.h>
 
@@ -30,30 +31,17 @@ int main(int argc, char** argv)
 		const RangefinderParams params = app::loadRangefinderIni(ini.getValue(), section.getValue());
 		const Rangefinder rf(params, ColourHistogram::load(hist.getValue()));
 		RawlogReader reader(in.getValue());
-		mrpt::obs::CObservationImage::Ptr img;
-		mrpt::obs::CObservation2DRangeScan::Ptr scan;
+		ImageScanPairer pairer(omni.getValue(), laser.getValue(), 0.1);
 		std::vector<RhoRangePair> pairs;
-		int k = 0;
-		while (auto obj = reader.next())
+		for (int k = 0; auto obj = reader.next();)
 		{
-			if (auto im = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(obj); im && im->sensorLabel == omni.getValue())
-				img = im;
-			else if (auto sc = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obj); sc && sc->sensorLabel == laser.getValue())
-				scan = sc;
-			else
-				continue;
-			if (!img || !scan || std::abs(mrpt::system::timeDifference(img->timestamp, scan->timestamp)) > 0.1) continue;
-			if (k++ % every.getValue() == 0)
-			{
-				const RangeScan omni_scan = rf.process(decodeImage(*img, params.camera));
-				const auto obs = rf.toObservation(omni_scan, img->timestamp);
-				// Hits only; a laser range beyond the current max range cannot have one.
-				for (const RangePair& p : pairScans(*scan, *obs, 1e9))
-					if (p.status != PairStatus::LaserBeyondMaxRange && omni_scan.rays[p.omni_ray].status == RayStatus::Hit)
-						pairs.push_back({omni_scan.rays[p.omni_ray].hit_rho, p.laser});
-			}
-			img.reset();
-			scan.reset();
+			if (!pairer.add(obj) || k++ % every.getValue() != 0) continue;
+			const RangeScan omni_scan = rf.process(decodeImage(*pairer.image(), params.camera));
+			const auto obs = rf.toObservation(omni_scan, pairer.image()->timestamp);
+			// Hits only; a laser range beyond the current max range cannot have one.
+			for (const RangePair& p : pairScans(*pairer.scan(), *obs, 1e9))
+				if (p.status != PairStatus::LaserBeyondMaxRange && omni_scan.rays[p.omni_ray].status == RayStatus::Hit)
+					pairs.push_back({omni_scan.rays[p.omni_ray].hit_rho, p.laser});
 		}
 		if (pairs.size() < 10)
 			throw std::runtime_error("only " + std::to_string(pairs.size()) + " image/laser ray pairs with a hit in '" +

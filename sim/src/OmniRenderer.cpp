@@ -47,7 +47,8 @@ OmniRenderer::OmniRenderer(const World& world, const RobotParams& robot)
 	  robot_(robot),
 	  cam_(misaligned(robot)),
 	  tex_(robot.robot.seed * 7919u + 17u),
-	  rim_rho_(cam_.rhoFromTheta(robot.omnicam.rim_theta))
+	  rim_rho_(cam_.rhoFromTheta(robot.omnicam.rim_theta)),
+	  robot_material_(std::max(0, world.findMaterial("robot")))
 {
 	const auto& p = robot_.omnicam.camera;
 	rays_.resize(static_cast<std::size_t>(p.image_width) * p.image_height);
@@ -143,8 +144,7 @@ OmniRenderer::Sample OmniRenderer::shadeFloor(const Vec2& p) const
 
 OmniRenderer::Sample OmniRenderer::shadeRobot(double theta, double bearing) const
 {
-	const int m = std::max(0, world_.findMaterial("robot"));
-	auto c = shadeMaterial(world_.materials[m], tex_, theta * 3, bearing * 0.2);
+	auto c = shadeMaterial(world_.materials[robot_material_], tex_, theta * 3, bearing * 0.2);
 	const double k = world_.light.ambient + 0.5 * world_.light.diffuse;
 	return {{c[0] * k, c[1] * k, c[2] * k}, kRobot};
 }

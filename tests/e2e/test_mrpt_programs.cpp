@@ -72,6 +72,5 @@ TEST(MrptPrograms, RawlogGrabberRunsTheSensorPlugin)
 	const RunResult info = run("rawlog-edit --info -i " + q(grabbed));
 	const int images = labelCount(info.out, "OMNICAM"), scans = labelCount(info.out, "OMNISCAN");
 	EXPECT_GE(scans, 15) << info.out << g.out.substr(0, 3000);
-	EXPECT_LE(scans, images);
-	EXPECT_GE(images, scans);
+	EXPECT_LE(scans, images);  // every scan comes with its image
 }

@@ -59,6 +59,7 @@ class OmniRenderer
 	OmniCameraModel cam_;
 	NoiseTexture tex_;
 	double rim_rho_;
+	int robot_material_;  // the body's material, looked up once
 	std::vector<PixelRay> rays_;  // per pixel, row-major
 	std::vector<float> noise_;  // standard normal values, a power of two long
 	cv::Mat shadow_;  // 8-bit floor light map: 255 lit, 0 in shadow
