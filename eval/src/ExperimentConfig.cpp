@@ -1,6 +1,5 @@
-#include "omnirange_eval/Experiment.h"
+#include "omnirange_eval/ExperimentConfig.h"
 
-#include <omnirange/Config.h>
 #include <omnirange_sim/Route.h>
 #include <omnirange_sim/RobotParams.h>
 #include <omnirange_sim/World.h>
@@ -14,74 +13,89 @@ namespace fs = std::filesystem;
 
 namespace omnirange::eval
 {
-std::vector<std::string> ExperimentConfig::keys()
+const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 {
-	return {"name",		   "world",			"route",		 "robot",		  "output",
-			"max_frames",  "train_every",	"map_resolution", "match_tolerance", "icp_laser_ini",
-			"icp_omni_ini", "map_laser_ini", "map_omni_ini", "check_region"};
+	using C = ExperimentConfig;
+	static const auto t = OptionsTable<C>()
+		.add("name", "-", "the experiment's name: the dataset's file name and the report's title", [](C& c) -> auto& { return c.name; })
+		.add("world", "file", "world file (docs/worlds.md)", [](C& c) -> auto& { return c.world; })
+		.add("route", "file", "route file: one 'x y' waypoint per line", [](C& c) -> auto& { return c.route; })
+		.add("robot", "file", "robot ini for the simulator", [](C& c) -> auto& { return c.robot; })
+		.add("output", "folder", "report folder", [](C& c) -> auto& { return c.output; })
+		.add("max_frames", "-", "simulate at most this many frames (0: the whole route)", [](C& c) -> auto& { return c.max_frames; })
+		.add("train_every", "-", "train on every N-th image/scan pair", [](C& c) -> auto& { return c.train_every; })
+		.add("match_tolerance", "m", "a map's occupied cell within this of a true wall counts as correct",
+			 [](C& c) -> auto& { return c.match_tolerance; })
+		.add("icp_laser_ini", "file", "icp-slam configuration for the laser", [](C& c) -> auto& { return c.icp_laser_ini; })
+		.add("icp_omni_ini", "file", "icp-slam configuration for the omnicam", [](C& c) -> auto& { return c.icp_omni_ini; })
+		.add("map_laser_ini", "file", "observations2map configuration for the laser", [](C& c) -> auto& { return c.map_laser_ini; })
+		.add("map_omni_ini", "file", "observations2map configuration for the omnicam", [](C& c) -> auto& { return c.map_omni_ini; })
+		.add("check_region", "m", "'x y w d': a box whose marked wall length the report gives", [](C& c) -> auto& { return c.check_region; })
+		.renamed("map_resolution", "remove it: the maps take the resolution of the world's true map");
+	return t;
 }
+
+namespace
+{
+/** Resolves the files the [experiment] section names against the ini's folder. */
+void resolvePaths(ExperimentConfig& c, const fs::path& dir)
+{
+	const auto resolve = [&](std::string& v, const std::string& key, bool must_exist) {
+		if (v.empty()) throw std::invalid_argument("[experiment] " + key + " is missing");
+		v = fs::path(v).is_absolute() ? v : (dir / v).lexically_normal().string();
+		if (must_exist && !fs::is_regular_file(v)) throw std::invalid_argument(key + ": no file '" + v + "'");
+	};
+	resolve(c.world, "world", true), resolve(c.route, "route", true), resolve(c.robot, "robot", true);
+	resolve(c.output, "output", false);
+	resolve(c.icp_laser_ini, "icp_laser_ini", true), resolve(c.icp_omni_ini, "icp_omni_ini", true);
+	resolve(c.map_laser_ini, "map_laser_ini", true), resolve(c.map_omni_ini, "map_omni_ini", true);
+}
+
+void validate(ExperimentConfig& c)
+{
+	require(c.max_frames >= 0, "[experiment] max_frames must be >= 0");
+	require(c.train_every >= 1, "[experiment] train_every must be >= 1");
+	require(c.match_tolerance >= 0, "[experiment] match_tolerance must be >= 0 m");
+	if (!c.hasCheckRegion()) return;
+	std::istringstream in(c.check_region);
+	for (auto& v : c.check_box)
+		if (!(in >> v)) throw std::invalid_argument("[experiment] check_region must be 'x y w d' in metres");
+}
+
+/** The inputs of later stages, checked now: the robot, the world, the route. */
+void checkSimulatorInputs(const ExperimentConfig& c)
+{
+	sim::RobotParams robot;
+	try
+	{
+		robot.loadFromConfig(mrpt::config::CConfigFile(c.robot));
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(c.robot + ": " + e.what());
+	}
+	const auto world = sim::loadWorld(c.world);
+	sim::checkRouteClear(sim::loadRoute(c.route), world, robot.robot.clearance, robot.omnicam.camera.h);
+}
+}  // namespace
 
 ExperimentConfig ExperimentConfig::load(const std::string& ini)
 {
 	if (!fs::is_regular_file(ini)) throw std::runtime_error("cannot open experiment ini '" + ini + "'");
 	ExperimentConfig c;
 	c.ini_file = ini;
-	const fs::path dir = fs::absolute(ini).parent_path();
-	const auto fail = [&](const std::string& what) { return std::runtime_error(ini + ": " + what); };
 	try
 	{
 		const mrpt::config::CConfigFile cfg(ini);
-		const std::string s = "experiment";
-		requireParam(cfg.sectionExists(s), s, "section not found");
-		requireKnownKeys(cfg, s, keys());
-		const auto path = [&](const std::string& key, bool must_exist) {
-			const std::string v = cfg.read_string(s, key, "", true);
-			const std::string p = fs::path(v).is_absolute() ? v : (dir / v).lexically_normal().string();
-			if (must_exist && !fs::is_regular_file(p)) throw std::invalid_argument(key + ": no file '" + p + "'");
-			return p;
-		};
-		c.name = cfg.read_string(s, "name", c.name);
-		c.world = path("world", true);
-		c.route = path("route", true);
-		c.robot = path("robot", true);
-		c.output = path("output", false);
-		c.icp_laser_ini = path("icp_laser_ini", true);
-		c.icp_omni_ini = path("icp_omni_ini", true);
-		c.map_laser_ini = path("map_laser_ini", true);
-		c.map_omni_ini = path("map_omni_ini", true);
-		c.max_frames = cfg.read_int(s, "max_frames", c.max_frames);
-		c.train_every = cfg.read_int(s, "train_every", c.train_every);
-		c.map_resolution = cfg.read_double(s, "map_resolution", c.map_resolution);
-		c.match_tolerance = cfg.read_double(s, "match_tolerance", c.match_tolerance);
-		const std::string region = cfg.read_string(s, "check_region", "");
-		if (!region.empty())
-		{
-			std::istringstream in(region);
-			for (auto& v : c.check_region)
-				if (!(in >> v)) throw std::invalid_argument("check_region must be 'x y w d' in metres");
-			c.has_check_region = true;
-		}
-		requireParam(c.max_frames >= 0, s, "max_frames must be >= 0");
-		requireParam(c.train_every >= 1, s, "train_every must be >= 1");
-		requireParam(c.map_resolution > 0 && c.map_resolution < 1, s, "map_resolution must be in (0, 1) m");
-		requireParam(c.match_tolerance >= 0, s, "match_tolerance must be >= 0 m");
+		table().load(c, cfg, "experiment");
+		resolvePaths(c, fs::absolute(ini).parent_path());
+		validate(c);
 		c.rangefinder.loadFromConfig(cfg, "rangefinder");
-		// The inputs of later stages, checked now.
-		sim::RobotParams robot;
-		try
-		{
-			robot.loadFromConfig(mrpt::config::CConfigFile(c.robot));
-		}
-		catch (const std::invalid_argument& e)
-		{
-			throw std::runtime_error(c.robot + ": " + e.what());
-		}
-		const auto world = sim::loadWorld(c.world);
-		sim::checkRouteClear(sim::loadRoute(c.route), world, robot.robot.clearance, robot.omnicam.camera.h);
+		checkSimulatorInputs(c);
 	}
 	catch (const std::invalid_argument& e)
 	{
-		throw fail(e.what());
+		throw std::runtime_error(ini + ": " + e.what());
 	}
 	return c;
 }

@@ -1,7 +1,7 @@
 #include "omnirange_eval/GridMaps.h"
 
-#include <omnirange/AtomicWrite.h>
-#include <omnirange/RawlogReader.h>
+#include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/RawlogProcessor.h>
 
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/poses/CPose3DPDFGaussian.h>
@@ -61,23 +61,21 @@ Grid emptyLike(const Grid& truth, bool invalid_is_free)
 	return g;
 }
 
-bool invalidIsFreeFor(const std::string& label) { return label != "OMNISCAN"; }
-
 mrpt::maps::CSimpleMap simplemapWithGroundTruth(const std::string& rawlog, const std::string& label,
 												const std::vector<StampedPose>& truth)
 {
+	using mrpt::obs::CObservation2DRangeScan;
 	mrpt::maps::CSimpleMap sm;
-	RawlogReader reader(rawlog);
-	while (auto obj = reader.next())
-		if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obj); scan && scan->sensorLabel == label)
-		{
-			auto sf = mrpt::obs::CSensoryFrame::Create();
-			sf->insert(scan);
-			auto pose = mrpt::poses::CPose3DPDFGaussian::Create();
-			pose->mean = mrpt::poses::CPose3D(poseAt(truth, mrpt::Clock::toDouble(scan->timestamp)));
-			sm.insert(pose, sf);
-		}
-	if (sm.empty()) throw std::runtime_error("no " + label + " scan in '" + rawlog + "'");
+	RawlogProcessor loop(rawlog);
+	loop.on<CObservation2DRangeScan>(label, [&](const CObservation2DRangeScan::Ptr& scan) {
+		auto sf = mrpt::obs::CSensoryFrame::Create();
+		sf->insert(scan);
+		auto pose = mrpt::poses::CPose3DPDFGaussian::Create();
+		pose->mean = mrpt::poses::CPose3D(poseAt(truth, mrpt::Clock::toDouble(scan->timestamp)));
+		sm.insert(pose, sf);
+	});
+	loop.run();
+	if (sm.empty()) throw std::runtime_error("no " + label + " scan in '" + rawlog + "' (" + loop.describeLabels() + ")");
 	return sm;
 }
 

@@ -1,6 +1,6 @@
 #include "omnirange_eval/Trajectory.h"
 
-#include <omnirange/RawlogReader.h>
+#include <omnirange/io/RawlogProcessor.h>
 
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservationRobotPose.h>
@@ -15,12 +15,14 @@ namespace omnirange::eval
 {
 std::vector<StampedPose> groundTruthPath(const std::string& rawlog, const std::string& label)
 {
-	RawlogReader reader(rawlog);
+	using mrpt::obs::CObservationRobotPose;
+	RawlogProcessor loop(rawlog);
 	std::vector<StampedPose> out;
-	while (auto obj = reader.next())
-		if (auto gt = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obj); gt && gt->sensorLabel == label)
-			out.push_back({mrpt::Clock::toDouble(gt->timestamp), mrpt::poses::CPose2D(gt->pose.mean)});
-	if (out.empty()) throw std::runtime_error("no " + label + " pose in '" + rawlog + "'");
+	loop.on<CObservationRobotPose>(label, [&](const CObservationRobotPose::Ptr& gt) {
+		out.push_back({mrpt::Clock::toDouble(gt->timestamp), mrpt::poses::CPose2D(gt->pose.mean)});
+	});
+	loop.run();
+	if (out.empty()) throw std::runtime_error("no " + label + " pose in '" + rawlog + "' (" + loop.describeLabels() + ")");
 	return out;
 }
 

@@ -1,5 +1,7 @@
 #include "omnirange_sim/SensorModels.h"
 
+#include <omnirange/io/SensorLabels.h>
+
 #include <cmath>
 
 namespace omnirange::sim
@@ -8,7 +10,7 @@ mrpt::obs::CObservation2DRangeScan::Ptr simulateLaser(
 	const World& world, const LaserSimParams& L, const Pose2& robot, std::mt19937_64& rng)
 {
 	auto obs = mrpt::obs::CObservation2DRangeScan::Create();
-	obs->sensorLabel = "LASER";
+	obs->sensorLabel = kLaserLabel;
 	obs->sensorPose = L.pose;
 	obs->aperture = static_cast<float>(L.fov);
 	obs->rightToLeft = true;
@@ -61,7 +63,7 @@ mrpt::obs::CObservationOdometry::Ptr OdometrySimulator::step(const Pose2& t)
 	started_ = true;
 	last_truth_ = t;
 	auto obs = mrpt::obs::CObservationOdometry::Create();
-	obs->sensorLabel = "ODOMETRY";
+	obs->sensorLabel = kOdometryLabel;
 	obs->odometry = odo_;
 	return obs;
 }
@@ -69,7 +71,7 @@ mrpt::obs::CObservationOdometry::Ptr OdometrySimulator::step(const Pose2& t)
 mrpt::obs::CObservationRobotPose::Ptr groundTruth(const Pose2& t)
 {
 	auto obs = mrpt::obs::CObservationRobotPose::Create();
-	obs->sensorLabel = "GT";
+	obs->sensorLabel = kGroundTruthLabel;
 	obs->pose.mean = mrpt::poses::CPose3D(t.x, t.y, 0, t.yaw, 0, 0);
 	obs->pose.cov.setZero();
 	return obs;

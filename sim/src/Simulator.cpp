@@ -1,11 +1,13 @@
 #include "omnirange_sim/Simulator.h"
 
+#include <omnirange/io/SensorLabels.h>
+
 #include "omnirange_sim/OmniRenderer.h"
 #include "omnirange_sim/Route.h"
 #include "omnirange_sim/SensorModels.h"
 
-#include <omnirange/AtomicWrite.h>
-#include <omnirange/RawlogWriter.h>
+#include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/RawlogWriter.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -96,7 +98,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		gt->timestamp = stamp;
 		out.write(*gt);
 		auto img = mrpt::obs::CObservationImage::Create();
-		img->sensorLabel = "OMNICAM";
+		img->sensorLabel = kOmnicamLabel;
 		img->timestamp = stamp;
 		img->cameraPose = cam.pose;
 		img->cameraParams.ncols = static_cast<uint32_t>(cam.camera.image_width);

@@ -5,7 +5,7 @@
 // walls between 0.8 m and 3.5 m, and a doorway the rays see past max range.
 #include "SyntheticOmni.h"
 
-#include <omnirange/Rangefinder.h>
+#include <omnirange/core/Rangefinder.h>
 
 #include <benchmark/benchmark.h>
 

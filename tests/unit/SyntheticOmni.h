@@ -3,8 +3,8 @@
 // colour according to where its ray meets the floor, through the camera
 // model (pixels at or above the horizon are wall).
 
-#include <omnirange/CameraModel.h>
-#include <omnirange/ColourHistogram.h>
+#include <omnirange/core/CameraModel.h>
+#include <omnirange/core/ColourHistogram.h>
 
 #include <opencv2/core.hpp>
 

@@ -1,7 +1,7 @@
 // The bird's-eye view (eqs. (1)-(3)) puts a floor mark where it lies.
 #include "SyntheticOmni.h"
 
-#include <omnirange/BirdsEyeView.h>
+#include <omnirange/train/BirdsEyeView.h>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>

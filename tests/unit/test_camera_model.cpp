@@ -1,6 +1,6 @@
 // Camera model: the paraboloid's known angles, round trips both ways, the
-// image orientation convention, and the alpha fit.
-#include <omnirange/CameraModel.h>
+// image orientation convention, bad parameters.
+#include <omnirange/core/CameraModel.h>
 
 #include <gtest/gtest.h>
 
@@ -91,39 +91,6 @@ TEST(CameraModel, AboveTheHorizonSeesNoFloor)
 	EXPECT_TRUE(cam.floorFromPixel({512.0 + 150.0, 384.0}).has_value());
 }
 
-TEST(CameraModel, FitAlphaRecoversTheFirstOrderConstant)
-{
-	const OmniCameraModel truth{firstOrder(123.4)};
-	std::vector<RhoRangePair> pairs;
-	for (double rho = 20; rho < 150; rho += 10)
-		pairs.push_back({rho, truth.distanceFromRho(rho)});
-	EXPECT_NEAR(fitAlpha(pairs, 0.931), 123.4, 1e-9);
-}
-
-TEST(CameraModel, FitAlphaOnParaboloidDataIsNearHalfR)
-{
-	// Small angles: 2 atan(rho/R) ~ 2 rho / R, so alpha ~ R/2 = 96.
-	const OmniCameraModel para{CameraParams{}};
-	std::vector<RhoRangePair> pairs;
-	for (double rho = 2; rho < 20; rho += 2)
-		pairs.push_back({rho, para.distanceFromRho(rho)});
-	EXPECT_NEAR(fitAlpha(pairs, 0.931), 96.0, 0.5);
-}
-
-TEST(CameraModel, FitRRecoversTheParaboloid)
-{
-	CameraParams truth_params;
-	truth_params.R = 210.0;
-	const OmniCameraModel truth{truth_params};
-	std::vector<RhoRangePair> pairs;
-	for (double rho = 30; rho < 170; rho += 7) pairs.push_back({rho, truth.distanceFromRho(rho)});
-	EXPECT_NEAR(fitR(pairs, 0.931), 210.0, 1e-3);
-	EXPECT_NEAR(rmsRangeError(truth, pairs), 0.0, 1e-9);
-	// A wrong R shows in the range error.
-	EXPECT_GT(rmsRangeError(OmniCameraModel{CameraParams{}}, pairs), 0.05);
-	EXPECT_THROW(fitR({}, 0.931), std::invalid_argument);
-}
-
 TEST(CameraModel, BadParametersAreRejected)
 {
 	CameraParams p;
@@ -135,6 +102,5 @@ TEST(CameraModel, BadParametersAreRejected)
 	p = {};
 	p.cx = 2000;
 	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);
-	EXPECT_THROW(fitAlpha({}, 0.931), std::invalid_argument);
 	EXPECT_THROW(mirrorModelFromString("hyperbolic"), std::invalid_argument);
 }

@@ -1,6 +1,6 @@
 // Colour histogram: counting, eq. (4)/(5), the colour spaces, and the file.
-#include <omnirange/ColourHistogram.h>
-#include <omnirange/FreeSpaceClassifier.h>
+#include <omnirange/core/ColourHistogram.h>
+#include <omnirange/core/FreeSpaceClassifier.h>
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>

@@ -1,6 +1,6 @@
 // The N/K filters on scanlines written as strings: 'F' free, 'X' not free.
 // The first character is the pixel at the robot base, the last the outermost.
-#include <omnirange/HitFilter.h>
+#include <omnirange/core/HitFilter.h>
 
 #include <gtest/gtest.h>
 

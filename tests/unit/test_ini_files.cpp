@@ -2,7 +2,7 @@
 // with a unit; docs/parameters.md lists every key with the code's default.
 #include "SyntheticOmni.h"
 
-#include <omnirange/Rangefinder.h>
+#include <omnirange/core/Rangefinder.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -80,28 +80,29 @@ TEST(IniFiles, EveryKeyHasAUnitComment)
 	}
 }
 
-TEST(IniFiles, DocsListEveryKeyWithTheCodesDefault)
+TEST(IniFiles, DocsListEveryKeyWithTheCodesUnitAndDefault)
 {
-	// The code's defaults, as "key = value" lines.
-	mrpt::config::CConfigFileMemory defaults("[d]\n" + RangefinderParams{}.asIni());
-	const std::regex row(R"(^\|\s*`([A-Za-z_]+)`\s*\|[^|]*\|\s*([^|]*?)\s*\|)");
-	std::map<std::string, std::string> documented;
+	const std::regex row(R"(^\|\s*`([A-Za-z_]+)`\s*\|\s*([^|]*?)\s*\|\s*([^|]*?)\s*\|)");
+	std::map<std::string, std::pair<std::string, std::string>> documented;  // key -> unit, default
 	for (const auto& l : lines(kSource + "/docs/parameters.md"))
 	{
 		std::smatch m;
-		if (std::regex_search(l, m, row)) documented[m[1]] = m[2];
+		if (std::regex_search(l, m, row)) documented[m[1]] = {m[2], m[3]};
 	}
-	for (const auto& key : RangefinderParams::keys())
+	const RangefinderParams defaults;
+	const auto& fields = RangefinderParams::table().fields();
+	for (const auto& f : fields)
 	{
-		ASSERT_TRUE(documented.count(key)) << "docs/parameters.md lacks '" << key << "'";
-		const std::string code = defaults.read_string("d", key, "");
-		const std::string doc = documented[key];
+		ASSERT_TRUE(documented.count(f.info.key)) << "docs/parameters.md lacks '" << f.info.key << "'";
+		const auto& [unit, doc] = documented[f.info.key];
+		EXPECT_EQ(unit, f.info.unit) << f.info.key;
+		const std::string code = f.print(defaults);
 		char* end = nullptr;
 		const double dv = std::strtod(doc.c_str(), &end);
 		if (end != doc.c_str())
-			EXPECT_NEAR(dv, std::stod(code), 1e-5 * std::max(1.0, std::abs(dv))) << key;
+			EXPECT_NEAR(dv, std::stod(code), 1e-5 * std::max(1.0, std::abs(dv))) << f.info.key;
 		else
-			EXPECT_EQ(doc, code) << key;
+			EXPECT_EQ(doc, code) << f.info.key;
 	}
-	EXPECT_EQ(documented.size(), RangefinderParams::keys().size());
+	EXPECT_EQ(documented.size(), fields.size());
 }

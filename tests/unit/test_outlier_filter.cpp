@@ -1,5 +1,5 @@
 // The spike filter: lone disagreeing rays go, real depth steps stay.
-#include <omnirange/OutlierFilter.h>
+#include <omnirange/core/OutlierFilter.h>
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ std::vector<Ray> wall(int n, float range)
 OutlierFilterParams spike(int width)
 {
 	OutlierFilterParams p;
-	p.max_width = width;
+	p.outlier_max_width = width;
 	return p;
 }
 }  // namespace
@@ -68,7 +68,7 @@ TEST(OutlierFilter, OnlyHitsAreRejectedAndNoneDisablesIt)
 	EXPECT_EQ(rejectOutliers(rays, spike(1)), 0);
 	rays[7].status = RayStatus::Hit;
 	OutlierFilterParams off;
-	off.kind = OutlierFilterKind::None;
+	off.outlier_filter = OutlierFilterKind::None;
 	EXPECT_EQ(rejectOutliers(rays, off), 0);
 	EXPECT_EQ(rejectOutliers(rays, spike(1)), 1);
 }
@@ -76,10 +76,10 @@ TEST(OutlierFilter, OnlyHitsAreRejectedAndNoneDisablesIt)
 TEST(OutlierFilter, ImpossibleParameters)
 {
 	OutlierFilterParams p;
-	p.max_width = 0;
+	p.outlier_max_width = 0;
 	EXPECT_THROW(p.validate(), std::invalid_argument);
 	p = {};
-	p.abs_tol = -1;
+	p.outlier_abs_tol = -1;
 	EXPECT_THROW(p.validate(), std::invalid_argument);
 	EXPECT_THROW(outlierFilterKindFromString("median"), std::invalid_argument);
 }

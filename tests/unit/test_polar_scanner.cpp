@@ -2,7 +2,8 @@
 // bound, the max/min range cases, scanline geometry and bad input.
 #include "SyntheticOmni.h"
 
-#include <omnirange/PolarScanner.h>
+#include <omnirange/core/FreeSpaceClassifier.h>
+#include <omnirange/core/PolarScanner.h>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // geometry, validity, the observation's fields, parameters from an ini.
 #include "SyntheticOmni.h"
 
-#include <omnirange/Rangefinder.h>
+#include <omnirange/core/Rangefinder.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -42,7 +42,7 @@ mrpt::math::TPoint3D mean(const std::vector<mrpt::math::TPoint3D>& pts)
 RangefinderParams noOutlierFilter()
 {
 	RangefinderParams p;
-	p.outliers.kind = OutlierFilterKind::None;
+	p.outliers.outlier_filter = OutlierFilterKind::None;
 	p.sensor_pose = {};
 	return p;
 }
@@ -139,7 +139,7 @@ TEST(Rangefinder, ObservationFieldsAndValidity)
 TEST(Rangefinder, OutlierFilterMarksARayInvalid)
 {
 	RangefinderParams p = noOutlierFilter();
-	p.outliers.kind = OutlierFilterKind::Spike;
+	p.outliers.outlier_filter = OutlierFilterKind::Spike;
 	const Rangefinder rf(p, test::floorHistogram());
 	cv::Mat img = test::drawFloorDisc(rf.camera(), 130.0);
 	// A wall-coloured blotch, 3 px wide and 25 px long, on the forward ray.
@@ -168,7 +168,7 @@ TEST(Rangefinder, LoadsEveryKeyFromAnIniSection)
 	EXPECT_EQ(p.sensor_label, "OMNI2");
 	EXPECT_NEAR(p.sensor_pose.yaw(), kPi / 2, 1e-12);  // degrees in the ini
 	EXPECT_NEAR(p.sensor_pose.z(), 1.1, 1e-12);  // pose_z defaults to h
-	EXPECT_EQ(p.outliers.kind, OutlierFilterKind::None);
+	EXPECT_EQ(p.outliers.outlier_filter, OutlierFilterKind::None);
 }
 
 TEST(Rangefinder, ImpossibleIniValuesAreRejectedNamingTheKey)

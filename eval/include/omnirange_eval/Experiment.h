@@ -2,49 +2,83 @@
 // omnirange-experiment as a class: one ini describes a whole experiment;
 // run() simulates, trains, scans, measures the accuracy, builds maps with
 // ground-truth poses and with MRPT's icp-slam, and writes a report folder.
+// One method per stage; the report is written from ExperimentResults.
 
-#include <omnirange/Rangefinder.h>
+#include <omnirange_eval/Accuracy.h>
+#include <omnirange_eval/ExperimentConfig.h>
+#include <omnirange_eval/GridMaps.h>
+#include <omnirange_eval/Trajectory.h>
+#include <omnirange_sim/Simulator.h>
+
+#include <omnirange/train/RawlogTraining.h>
 
 #include <mrpt/system/COutputLogger.h>
 
-#include <array>
+#include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace omnirange::eval
 {
-struct ExperimentConfig
-{
-	std::string ini_file;  ///< the experiment's own ini
-	std::string name{"experiment"};
-	std::string world, route, robot;  ///< files, relative to the ini's folder
-	std::string output;  ///< the report folder
-	std::string icp_laser_ini, icp_omni_ini;  ///< icp-slam configurations
-	std::string map_laser_ini, map_omni_ini;  ///< observations2map configurations
-	int max_frames{0};  ///< 0: the whole route
-	int train_every{3};
-	double map_resolution{0.05};  ///< [m]
-	double match_tolerance{0.10};  ///< [m]
-	bool has_check_region{false};
-	std::array<double, 4> check_region{};  ///< x y w d [m]
-	RangefinderParams rangefinder;
-
-	/** Reads [experiment] and [rangefinder] of `ini` and checks everything
-	 * (keys, files, values, the world, the route) before any stage runs.
-	 * Throws std::runtime_error with one clear message. */
-	static ExperimentConfig load(const std::string& ini);
-	static std::vector<std::string> keys();
-};
-
 /** The numbers of a run, also written to the report folder's metrics.ini. */
 using Metrics = std::map<std::string, double>;
+
+/** One range sensor's maps: the laser's or the omnicam's. */
+struct SensorMaps
+{
+	std::string label;  ///< its scans' sensor label
+	std::string tag;  ///< lower-case name in file names ("laser", "omniscan")
+	std::string map_ini, icp_ini;  ///< observations2map and icp-slam configurations
+	bool invalid_is_free{true};  ///< see emptyLike()
+	MapMetrics gt, icp;
+	PathError icp_path;
+	double gt_check_marked{0}, icp_check_marked{0};  ///< [m] in the check region
+};
+
+/** Everything a run measured: what the report and metrics.ini are made of. */
+struct ExperimentResults
+{
+	sim::SimSummary simulated;
+	int training_pairs{0};
+	double omni_hit_fraction{0};
+	AccuracyResult accuracy;
+	std::vector<SensorMaps> sensors;  ///< the laser, then the omnicam
+	double seconds{0};
+};
+
+/** The metrics.ini keys and values of a run. */
+Metrics metricsOf(const ExperimentResults& r);
+/** The report (Markdown; its figures are files beside it). */
+std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r);
 
 class Experiment : public mrpt::system::COutputLogger
 {
    public:
-	Experiment();
+	explicit Experiment(ExperimentConfig config);
 	/** Runs every stage; a failed stage throws std::runtime_error naming it. */
-	Metrics run(const ExperimentConfig& config);
+	Metrics run();
+
+   private:
+	void stage(const std::string& name, const std::function<void()>& body);
+	void simulate();
+	void train();
+	void scan();
+	void measureAccuracy();
+	void mapWithGroundTruth();
+	void runIcpSlam();
+	void writeReport();
+	/** A built map against the true map: its figure, check region and metrics. */
+	MapMetrics assess(const mrpt::maps::COccupancyGridMap2D& map, const std::string& title, double& check_marked,
+					  std::vector<std::pair<std::string, cv::Mat>>& figures) const;
+
+	ExperimentConfig c_;
+	std::string out_, dataset_, histogram_, scanned_;  // absolute paths
+	ColourHistogram histogram_data_;
+	mrpt::maps::COccupancyGridMap2D truth_;
+	std::vector<StampedPose> gt_path_;
+	ExperimentResults r_;
+	int stage_{0};
 };
 
 }  // namespace omnirange::eval

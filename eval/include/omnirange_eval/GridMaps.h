@@ -17,9 +17,6 @@ namespace omnirange::eval
  * long range, and clearing would erase what nearer scans saw). */
 mrpt::maps::COccupancyGridMap2D emptyLike(const mrpt::maps::COccupancyGridMap2D& truth, bool invalid_is_free);
 
-/** MRPT's default for the laser, not for the omnicam scans (see emptyLike). */
-bool invalidIsFreeFor(const std::string& label);
-
 /** The `label` scans of a rawlog, each at the ground-truth pose of its time,
  * as a simplemap (what MRPT's observations2map turns into a map). */
 mrpt::maps::CSimpleMap simplemapWithGroundTruth(const std::string& rawlog, const std::string& label,

@@ -17,7 +17,7 @@ struct StampedPose
 };
 
 /** Every GT (CObservationRobotPose) pose of a rawlog, in time order. */
-std::vector<StampedPose> groundTruthPath(const std::string& rawlog, const std::string& label = "GT");
+std::vector<StampedPose> groundTruthPath(const std::string& rawlog, const std::string& label);
 
 /** The pose of `path` at time t (the nearest sample). */
 mrpt::poses::CPose2D poseAt(const std::vector<StampedPose>& path, double t);

@@ -9,7 +9,7 @@
 #include <omnirange_sim/Route.h>
 #include <omnirange_sim/World.h>
 
-#include <omnirange/CameraModel.h>
+#include <omnirange/core/CameraModel.h>
 
 #include <opencv2/core.hpp>
 

@@ -2,7 +2,8 @@
 // The simulated robot (DESIGN.md §5): an omnicam, a laser, odometry, its
 // motion. Read from a robot ini (ini/robot-omnip2dx.ini documents every key).
 
-#include <omnirange/CameraModel.h>
+#include <omnirange/core/CameraModel.h>
+#include <omnirange/io/OptionsTable.h>
 
 #include <mrpt/poses/CPose3D.h>
 
@@ -28,6 +29,8 @@ struct OmnicamSimParams
 	bool antialias{true};  ///< supersample pixels on edges (default true)
 	std::string format{"png"};  ///< png | jpg (default png: lossless)
 	int jpeg_quality{90};  ///< [1..100] (default 90)
+
+	static const OptionsTable<OmnicamSimParams>& table();
 };
 
 struct LaserSimParams
@@ -37,6 +40,8 @@ struct LaserSimParams
 	double fov{3.14159265358979323846};  ///< [rad] (default pi)
 	double max_range{19.8};  ///< [m] (default 19.8)
 	double sigma{0.005};  ///< [m] range noise (default 0.005)
+
+	static const OptionsTable<LaserSimParams>& table();
 };
 
 struct OdometrySimParams
@@ -44,6 +49,8 @@ struct OdometrySimParams
 	double sigma_dist{0.02};  ///< [-] noise per metre driven (default 0.02)
 	double sigma_turn{0.02};  ///< [-] noise per radian turned (default 0.02)
 	double yaw_drift{0.01};  ///< [rad/m] systematic yaw drift (default 0.01)
+
+	static const OptionsTable<OdometrySimParams>& table();
 };
 
 struct RobotBodyParams
@@ -56,6 +63,8 @@ struct RobotBodyParams
 	double height{0.25};  ///< [m] top of the body (default 0.25)
 	double clearance{0.30};  ///< [m] nearest a route may pass a solid (default 0.30)
 	std::uint32_t seed{1};  ///< all randomness derives from it (default 1)
+
+	static const OptionsTable<RobotBodyParams>& table();
 };
 
 struct RobotParams
@@ -66,7 +75,8 @@ struct RobotParams
 	RobotBodyParams robot;
 
 	/** Sections [omnicam], [laser], [odometry], [robot]; all optional, every
-	 * key checked. Throws std::invalid_argument naming the key. */
+	 * key checked (angles in degrees: keys NAME_deg). Throws
+	 * std::invalid_argument naming the section and key. */
 	void loadFromConfig(const mrpt::config::CConfigFileBase& cfg);
 	void validate() const;
 };

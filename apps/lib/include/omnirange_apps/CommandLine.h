@@ -1,0 +1,47 @@
+#pragma once
+// What every app's command line shares: parsing with TCLAP into an options
+// struct, the verbosity flags, and the one place where an app's errors are
+// caught: a one-line message on stderr and exit code 1 (2 for command-line
+// mistakes, 0 after --help).
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/system/COutputLogger.h>
+
+#include <functional>
+#include <string>
+
+namespace omnirange
+{
+struct RangefinderParams;
+}
+
+namespace omnirange::app
+{
+/** Thrown by parseArgs() to end the program with a code (after --help: 0). */
+struct ExitRequest
+{
+	int code;
+};
+
+/** -q/--quiet and -v/--verbose, added to a command line. */
+struct VerbosityArgs
+{
+	explicit VerbosityArgs(TCLAP::CmdLine& cmd);
+	/** LVL_ERROR when quiet, LVL_DEBUG when verbose, else LVL_INFO. */
+	mrpt::system::VerbosityLevel level();
+
+	TCLAP::SwitchArg quiet, verbose;
+};
+
+/** Parses the command line; on --help/--version or an error (reported on
+ * one line of stderr), throws ExitRequest with code 0 or 2. */
+void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv);
+
+/** Runs `body`; returns 0, ExitRequest's code, or 1 after printing
+ * "NAME: error: MESSAGE" on one line for any exception. */
+int runApp(const std::string& name, const std::function<void()>& body);
+
+/** The rangefinder's section of an ini file, with the file named in errors. */
+RangefinderParams loadRangefinderIni(const std::string& file, const std::string& section);
+
+}  // namespace omnirange::app

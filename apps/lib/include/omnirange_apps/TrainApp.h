@@ -1,0 +1,32 @@
+#pragma once
+// omnirange-train: rawlog with omnicam images and laser scans -> colour
+// histogram of the free floor (paper §III-A1), and the images of Fig. 1.
+
+#include <omnirange/train/RawlogTraining.h>
+
+#include <mrpt/system/COutputLogger.h>
+
+namespace omnirange::app
+{
+class TrainApp : public mrpt::system::COutputLogger
+{
+   public:
+	struct Options
+	{
+		std::string output;  ///< histogram file to write
+		std::string ini, section{"rangefinder"};
+		RawlogTrainingOptions training;
+		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
+	};
+	/** Throws ExitRequest on --help or a command-line mistake. */
+	static Options parse(int argc, const char* const* argv);
+
+	explicit TrainApp(Options o);
+	/** Trains and saves the histogram; throws on any bad input. */
+	RawlogTrainingResult run();
+
+   private:
+	Options o_;
+};
+
+}  // namespace omnirange::app

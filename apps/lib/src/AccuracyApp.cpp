@@ -1,0 +1,51 @@
+#include "omnirange_apps/AccuracyApp.h"
+
+#include "omnirange_apps/CommandLine.h"
+
+#include <omnirange_eval/Figures.h>
+
+#include <omnirange/io/AtomicWrite.h>
+
+namespace omnirange::app
+{
+AccuracyApp::Options AccuracyApp::parse(int argc, const char* const* argv)
+{
+	Options o;
+	auto& a = o.accuracy;
+	TCLAP::CmdLine cmd("omnirange-accuracy: compare omnicam scans against the laser (paper Table II, Fig. 9)", ' ', "0.1");
+	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with both scans (omnirange-scan's output)", true, "", "RAWLOG", cmd);
+	TCLAP::ValueArg<std::string> out("o", "output", "prefix of the outputs: PREFIX_pairs.csv, PREFIX_histogram.png, PREFIX_table.md", true, "", "PREFIX", cmd);
+	TCLAP::ValueArg<std::string> laser("", "laser-label", "label of the laser scans", false, a.laser_label, "LABEL", cmd);
+	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the omnicam scans", false, a.omni_label, "LABEL", cmd);
+	TCLAP::ValueArg<double> max_diff("", "max-difference", "pairs differing by more are excluded [m]", false, a.max_difference, "M", cmd);
+	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between paired scans [s]", false, a.max_dt, "S", cmd);
+	TCLAP::ValueArg<std::string> title("", "title", "title of the histogram", false, "", "TEXT", cmd);
+	VerbosityArgs verbosity(cmd);
+	parseArgs(cmd, argc, argv);
+	o.input = in.getValue(), o.output = out.getValue(), o.title = title.getValue();
+	a.laser_label = laser.getValue(), a.omni_label = omni.getValue();
+	a.max_difference = max_diff.getValue(), a.max_dt = max_dt.getValue();
+	o.verbosity = verbosity.level();
+	return o;
+}
+
+AccuracyApp::AccuracyApp(Options o) : mrpt::system::COutputLogger("omnirange-accuracy"), o_(std::move(o))
+{
+	setMinLoggingLevel(o_.verbosity);
+}
+
+eval::AccuracyResult AccuracyApp::run()
+{
+	const auto& a = o_.accuracy;
+	const eval::AccuracyResult r = eval::evaluateAccuracy(o_.input, a);
+	const std::string table = r.table(a.max_difference);
+	writeFileAtomically(o_.output + "_pairs.csv", r.csv);
+	writeImageAtomically(o_.output + "_histogram.png",
+						 eval::differenceHistogram(r.stats.differences, o_.title.empty() ? o_.input : o_.title,
+												   a.max_difference));
+	writeFileAtomically(o_.output + "_table.md", table);
+	MRPT_LOG_INFO_STREAM("\n" << table);
+	return r;
+}
+
+}  // namespace omnirange::app

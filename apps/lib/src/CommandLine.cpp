@@ -1,0 +1,91 @@
+#include "omnirange_apps/CommandLine.h"
+
+#include <omnirange/core/Rangefinder.h>
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+namespace omnirange::app
+{
+namespace
+{
+std::string oneLine(std::string s)
+{
+	for (auto& c : s)
+		if (c == '\n' || c == '\r') c = ' ';
+	return s;
+}
+
+/** TCLAP output whose failure message is one line instead of the usage. */
+class OneLineOutput : public TCLAP::StdOutput
+{
+   public:
+	void failure(TCLAP::CmdLineInterface& c, TCLAP::ArgException& e) override
+	{
+		std::cerr << c.getProgramName() << ": error: " << oneLine(e.error())
+				  << (e.argId().empty() || e.argId() == " " ? "" : " (" + oneLine(e.argId()) + ")")
+				  << "; see --help\n";
+		failed = true;
+	}
+	bool failed{false};
+};
+}  // namespace
+
+VerbosityArgs::VerbosityArgs(TCLAP::CmdLine& cmd)
+	: quiet("q", "quiet", "errors only: no progress, options or summary", cmd),
+	  verbose("v", "verbose", "debug output", cmd)
+{
+}
+
+mrpt::system::VerbosityLevel VerbosityArgs::level()
+{
+	if (quiet.getValue()) return mrpt::system::LVL_ERROR;
+	return verbose.getValue() ? mrpt::system::LVL_DEBUG : mrpt::system::LVL_INFO;
+}
+
+void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv)
+{
+	OneLineOutput out;
+	cmd.setOutput(&out);
+	const bool ok = cmd.parse(argc, const_cast<const char**>(argv));
+	cmd.setOutput(nullptr);
+	if (!ok) throw ExitRequest{out.failed ? 2 : 0};
+}
+
+int runApp(const std::string& name, const std::function<void()>& body)
+{
+	try
+	{
+		body();
+		return 0;
+	}
+	catch (const ExitRequest& e)
+	{
+		return e.code;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << name << ": error: " << oneLine(e.what()) << "\n";
+		return 1;
+	}
+}
+
+RangefinderParams loadRangefinderIni(const std::string& file, const std::string& section)
+{
+	if (!std::filesystem::is_regular_file(file)) throw std::runtime_error("cannot open ini file '" + file + "'");
+	RangefinderParams p;
+	try
+	{
+		p.loadFromConfig(mrpt::config::CConfigFile(file), section);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(file + ": " + e.what());
+	}
+	return p;
+}
+
+}  // namespace omnirange::app

@@ -1,0 +1,34 @@
+#include "omnirange_apps/ExperimentApp.h"
+
+#include "omnirange_apps/CommandLine.h"
+
+namespace omnirange::app
+{
+ExperimentApp::Options ExperimentApp::parse(int argc, const char* const* argv)
+{
+	Options o;
+	TCLAP::CmdLine cmd("omnirange-experiment: run a whole experiment described by an ini (ini/maze.ini, ini/factory.ini)", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> ini("ini", "the experiment's ini", true, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> output("o", "output", "report folder, overriding the ini's", false, "", "DIR", cmd);
+	TCLAP::ValueArg<int> frames("n", "max-frames", "simulate at most this many frames, overriding the ini", false, o.max_frames, "N", cmd);
+	VerbosityArgs verbosity(cmd);
+	parseArgs(cmd, argc, argv);
+	o.ini = ini.getValue(), o.output = output.getValue(), o.max_frames = frames.getValue();
+	o.verbosity = verbosity.level();
+	return o;
+}
+
+eval::Metrics ExperimentApp::run()
+{
+	auto config = eval::ExperimentConfig::load(o_.ini);
+	if (!o_.output.empty()) config.output = o_.output;
+	if (o_.max_frames >= 0) config.max_frames = o_.max_frames;
+	eval::Experiment e(config);
+	e.setMinLoggingLevel(o_.verbosity);
+	const auto m = e.run();
+	e.logFmt(mrpt::system::LVL_INFO, "report: %s/report.md (accuracy: mean absolute difference %.4f m over %.0f pairs)",
+			 config.output.c_str(), m.at("accuracy_mean_abs"), m.at("accuracy_compared"));
+	return m;
+}
+
+}  // namespace omnirange::app

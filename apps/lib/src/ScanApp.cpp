@@ -1,0 +1,48 @@
+#include "omnirange_apps/ScanApp.h"
+
+#include "omnirange_apps/CommandLine.h"
+
+#include <omnirange/io/Progress.h>
+
+namespace omnirange::app
+{
+ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
+{
+	Options o;
+	auto& s = o.scan;
+	TCLAP::CmdLine cmd("omnirange-scan: add an omnicam range scan after every omnicam image of a rawlog", ' ', "0.1");
+	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with omnicam images", true, "", "RAWLOG", cmd);
+	TCLAP::ValueArg<std::string> out("o", "output", "rawlog to write (all input observations plus the scans)", true, "", "RAWLOG", cmd);
+	TCLAP::ValueArg<std::string> ini("c", "config", "ini with the rangefinder's parameters (docs/parameters.md)", true, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
+	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", true, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images to scan", false, s.omni_label, "LABEL", cmd);
+	TCLAP::ValueArg<int> threads("j", "threads", "threads decoding and scanning images", false, s.threads, "N", cmd);
+	TCLAP::SwitchArg decode_only("", "decode-only", "only read and decode the images, write nothing (to time decoding alone)", cmd);
+	VerbosityArgs verbosity(cmd);
+	parseArgs(cmd, argc, argv);
+	o.ini = ini.getValue(), o.section = section.getValue(), o.histogram = hist.getValue();
+	s.input = in.getValue(), s.output = out.getValue(), s.omni_label = omni.getValue();
+	s.threads = threads.getValue(), s.decode_only = decode_only.getValue();
+	o.verbosity = verbosity.level();
+	return o;
+}
+
+ScanApp::ScanApp(Options o) : mrpt::system::COutputLogger("omnirange-scan"), o_(std::move(o))
+{
+	setMinLoggingLevel(o_.verbosity);
+}
+
+RawlogScanSummary ScanApp::run()
+{
+	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section);
+	MRPT_LOG_INFO_STREAM("options from " << o_.ini << " [" << o_.section << "]:\n" << params.asIni());
+	const Rangefinder rf(params, ColourHistogram::load(o_.histogram));
+	Progress progress("objects read");
+	const auto s = scanRawlog(rf, o_.scan, o_.verbosity <= mrpt::system::LVL_INFO ? &progress : nullptr);
+	MRPT_LOG_INFO_FMT("%zu images scanned, %.1f %% of rays hit, %zu objects -> %s", s.images,
+					  100.0 * s.hits / std::max<std::size_t>(1, s.rays), s.objects, o_.scan.output.c_str());
+	return s;
+}
+
+}  // namespace omnirange::app

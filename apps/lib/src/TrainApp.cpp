@@ -1,0 +1,60 @@
+#include "omnirange_apps/TrainApp.h"
+
+#include "omnirange_apps/CommandLine.h"
+
+#include <omnirange/io/Progress.h>
+
+namespace omnirange::app
+{
+TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
+{
+	Options o;
+	auto& t = o.training;
+	TCLAP::CmdLine cmd("omnirange-train: learn the floor's colours from a rawlog with an omnicam and a laser", ' ', "0.1");
+	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with omnicam images and laser scans", true, "", "RAWLOG", cmd);
+	TCLAP::ValueArg<std::string> out("o", "output", "histogram file to write", true, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> ini("c", "config", "ini with the camera (docs/parameters.md)", true, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
+	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images", false, t.omni_label, "LABEL", cmd);
+	TCLAP::ValueArg<std::string> laser("", "laser-label", "label of the laser scans", false, t.laser_label, "LABEL", cmd);
+	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between an image and its scan [s]", false, t.max_dt, "S", cmd);
+	TCLAP::ValueArg<int> every("", "every", "use every N-th image/scan pair", false, t.every, "N", cmd);
+	TCLAP::ValueArg<int> first("", "first", "skip the pairs before this one (0-based)", false, t.first, "N", cmd);
+	TCLAP::ValueArg<int> max_frames("n", "max-frames", "use at most this many pairs (0: all)", false, t.max_frames, "N", cmd);
+	TCLAP::ValueArg<int> bins("", "bins", "bins per colour channel", false, t.training.bins, "N", cmd);
+	TCLAP::ValueArg<std::string> space("", "colour-space", "RGB or HSV", false, toString(t.training.space), "SPACE", cmd);
+	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
+	TCLAP::ValueArg<std::string> figures("", "figures", "write PREFIX_birdseye.png, PREFIX_laser.png, PREFIX_fused.png (paper Fig. 1)", false, "", "PREFIX", cmd);
+	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
+	VerbosityArgs verbosity(cmd);
+	parseArgs(cmd, argc, argv);
+	o.output = out.getValue(), o.ini = ini.getValue(), o.section = section.getValue();
+	t.input = in.getValue(), t.omni_label = omni.getValue(), t.laser_label = laser.getValue();
+	t.max_dt = max_dt.getValue(), t.every = every.getValue(), t.first = first.getValue();
+	t.max_frames = max_frames.getValue();
+	t.training.bins = bins.getValue(), t.training.space = colourSpaceFromString(space.getValue());
+	t.training.laser_margin = margin.getValue();
+	t.figures_prefix = figures.getValue(), t.figures_frame = figures_frame.getValue();
+	o.verbosity = verbosity.level();
+	return o;
+}
+
+TrainApp::TrainApp(Options o) : mrpt::system::COutputLogger("omnirange-train"), o_(std::move(o))
+{
+	setMinLoggingLevel(o_.verbosity);
+}
+
+RawlogTrainingResult TrainApp::run()
+{
+	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section);
+	MRPT_LOG_INFO_STREAM("options from " << o_.ini << " [" << o_.section << "]:\n" << params.asIni());
+	Progress progress("objects read");
+	const RawlogTrainingResult r =
+		trainFromRawlog(params, o_.training, o_.verbosity <= mrpt::system::LVL_INFO ? &progress : nullptr);
+	r.histogram.save(o_.output);
+	MRPT_LOG_INFO_FMT("trained on %d image/scan pairs (of %d), %zu floor pixels -> %s", r.used, r.pairs, r.pixels,
+					  o_.output.c_str());
+	return r;
+}
+
+}  // namespace omnirange::app

@@ -1,0 +1,59 @@
+#pragma once
+// The accuracy test (paper §IV-B, §V-A): every laser ray against the omnicam
+// ray at the same bearing (pairScans), the Table II figures with the
+// exclusions counted, and every pair for a CSV.
+
+#include <omnirange/io/ObservationPairer.h>
+#include <omnirange/io/SensorLabels.h>
+#include <omnirange/train/LaserComparison.h>
+
+#include <string>
+#include <vector>
+
+namespace omnirange
+{
+class Progress;
+}
+
+namespace omnirange::eval
+{
+/** The Table II figures and the exclusions. */
+struct AccuracyStats
+{
+	std::size_t compared{0}, laser_beyond{0}, too_different{0}, omni_rejected{0};
+	double sum_abs{0}, sum_pct{0}, sum_signed{0};
+	std::vector<double> differences;  ///< of the compared pairs
+
+	void add(const RangePair& p);
+	std::size_t total() const { return compared + laser_beyond + too_different + omni_rejected; }
+	double meanAbs() const { return compared ? sum_abs / compared : 0; }
+	double meanPercent() const { return compared ? sum_pct / compared : 0; }
+	double meanSigned() const { return compared ? sum_signed / compared : 0; }
+	/** Fraction of all pairs excluded (laser beyond max range or too different). */
+	double excludedFraction() const;
+};
+
+struct AccuracyOptions
+{
+	std::string laser_label{kLaserLabel};
+	std::string omni_label{kOmniscanLabel};
+	double max_difference{kDefaultMaxDifference};  ///< [m] pairs differing by more are excluded
+	double max_dt{kDefaultMaxPairingDt};  ///< [s] largest time between paired scans
+};
+
+struct AccuracyResult
+{
+	AccuracyStats stats;
+	int frames{0};  ///< scan pairs compared
+	std::string csv;  ///< every ray pair, with a header line
+	/** The Table II-style table, in Markdown. */
+	std::string table(double max_difference) const;
+};
+
+/** Streams a rawlog with both scans and pairs every laser scan with the
+ * omnicam scan taken with it. Throws std::runtime_error on a bad rawlog or
+ * when no pair is found. */
+AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions& options,
+								Progress* progress = nullptr);
+
+}  // namespace omnirange::eval

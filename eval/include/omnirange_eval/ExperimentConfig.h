@@ -1,0 +1,38 @@
+#pragma once
+// An experiment's ini: [experiment] names the world, route, robot, MRPT
+// configurations and the report folder; [rangefinder] the method's keys.
+
+#include <omnirange/core/Rangefinder.h>
+#include <omnirange/io/OptionsTable.h>
+
+#include <array>
+#include <string>
+
+namespace omnirange::eval
+{
+struct ExperimentConfig
+{
+	std::string ini_file;  ///< the experiment's own ini (not a key)
+	std::string name{"experiment"};
+	std::string world, route, robot;  ///< files, relative to the ini's folder
+	std::string output;  ///< the report folder
+	std::string icp_laser_ini, icp_omni_ini;  ///< icp-slam configurations
+	std::string map_laser_ini, map_omni_ini;  ///< observations2map configurations
+	int max_frames{0};  ///< 0: the whole route
+	int train_every{3};  ///< train on every N-th image/scan pair
+	double match_tolerance{0.10};  ///< [m] a built map's cell within this of a true wall is correct
+	/** "x y w d" [m]: a box whose occupied cells the report measures (empty: none). */
+	std::string check_region;
+	std::array<double, 4> check_box{};  ///< check_region parsed (not a key)
+	RangefinderParams rangefinder;
+
+	bool hasCheckRegion() const { return !check_region.empty(); }
+
+	static const OptionsTable<ExperimentConfig>& table();
+	/** Reads [experiment] and [rangefinder] of `ini` and checks everything
+	 * (keys, files, values, the world, the route) before any stage runs.
+	 * Throws std::runtime_error with one clear message. */
+	static ExperimentConfig load(const std::string& ini);
+};
+
+}  // namespace omnirange::eval

@@ -1,0 +1,76 @@
+#include "omnirange_eval/Accuracy.h"
+
+#include <omnirange/io/RawlogProcessor.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace omnirange::eval
+{
+void AccuracyStats::add(const RangePair& p)
+{
+	switch (p.status)
+	{
+		case PairStatus::LaserBeyondMaxRange: ++laser_beyond; return;
+		case PairStatus::TooDifferent: ++too_different; return;
+		case PairStatus::OmniRejected: ++omni_rejected; return;
+		case PairStatus::Compared: break;
+	}
+	++compared;
+	const double d = p.difference();
+	sum_abs += std::abs(d);
+	sum_signed += d;
+	sum_pct += 100.0 * std::abs(d) / p.laser;
+	differences.push_back(d);
+}
+
+double AccuracyStats::excludedFraction() const
+{
+	const auto n = total();
+	return n ? static_cast<double>(laser_beyond + too_different) / n : 0.0;
+}
+
+AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions& o, Progress* progress)
+{
+	using mrpt::obs::CObservation2DRangeScan;
+	if (!(o.max_difference > 0) || !(o.max_dt >= 0))
+		throw std::invalid_argument("accuracy: max_difference must be > 0 and max_dt >= 0");
+	RawlogProcessor loop(rawlog);
+	AccuracyResult r;
+	r.csv = "frame,laser_ray,omni_ray,bearing_rad,laser_m,omni_m,difference_m,status\n";
+	loop.onPair<CObservation2DRangeScan, CObservation2DRangeScan>(
+		o.laser_label, o.omni_label, o.max_dt,
+		[&](const CObservation2DRangeScan::Ptr& laser, const CObservation2DRangeScan::Ptr& omni) {
+			for (const RangePair& p : pairScans(*laser, *omni, o.max_difference))
+			{
+				r.stats.add(p);
+				char line[200];
+				std::snprintf(line, sizeof line, "%d,%d,%d,%.5f,%.4f,%.4f,%.4f,%s\n", r.frames, p.laser_ray,
+							  p.omni_ray, p.bearing, p.laser, p.omni, p.difference(), toString(p.status).c_str());
+				r.csv += line;
+			}
+			++r.frames;
+		});
+	loop.run(progress);
+	if (r.frames == 0) throw std::runtime_error(loop.describeNoPair());
+	return r;
+}
+
+std::string AccuracyResult::table(double max_difference) const
+{
+	const auto& s = stats;
+	const double n = static_cast<double>(std::max<std::size_t>(1, s.total()));
+	char row[512];
+	std::snprintf(row, sizeof row,
+				  "| frames | pairs | compared | excluded: laser beyond omni max range | excluded: difference > %.2f m "
+				  "| omni ray rejected | mean absolute difference | mean percentage difference | signed mean |\n"
+				  "|---|---|---|---|---|---|---|---|---|\n"
+				  "| %d | %zu | %zu | %zu (%.1f %%) | %zu (%.1f %%) | %zu | %.4f m | %.3f %% | %+.4f m |\n",
+				  max_difference, frames, s.total(), s.compared, s.laser_beyond, 100.0 * s.laser_beyond / n,
+				  s.too_different, 100.0 * s.too_different / n, s.omni_rejected, s.meanAbs(), s.meanPercent(),
+				  s.meanSigned());
+	return row;
+}
+
+}  // namespace omnirange::eval

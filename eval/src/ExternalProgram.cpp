@@ -1,0 +1,59 @@
+#include "omnirange_eval/ExternalProgram.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+namespace omnirange::eval
+{
+namespace
+{
+std::string lastLine(const std::string& file)
+{
+	std::ifstream f(file);
+	std::string line, last;
+	while (std::getline(f, line))
+		if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+	return last;
+}
+
+/** In the child: redirect, change folder, exec; never returns. */
+[[noreturn]] void execIn(const std::vector<char*>& args, const std::string& dir, const std::string& log_path)
+{
+	const int in = ::open("/dev/null", O_RDONLY);
+	const int out = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+	if (in < 0 || out < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(out, 2) < 0 ||
+		::chdir(dir.c_str()) != 0)
+		::_exit(126);
+	::execvp(args[0], args.data());
+	const std::string why = std::string("cannot start ") + args[0] + ": " + std::strerror(errno) + "\n";
+	(void)!::write(2, why.data(), why.size());
+	::_exit(127);
+}
+}  // namespace
+
+void runProgram(const std::vector<std::string>& argv, const std::string& dir, const std::string& log)
+{
+	if (argv.empty()) throw std::invalid_argument("runProgram: no program");
+	std::vector<char*> args;
+	for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+	args.push_back(nullptr);
+	const std::string log_path = dir + "/" + log;
+	const pid_t pid = ::fork();
+	if (pid < 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(errno));
+	if (pid == 0) execIn(args, dir, log_path);
+	int status = 0;
+	while (::waitpid(pid, &status, 0) < 0)
+		if (errno != EINTR) throw std::runtime_error("lost " + argv[0] + ": " + std::strerror(errno));
+	if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+	const std::string how = WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
+											  : "signal " + std::to_string(WTERMSIG(status));
+	throw std::runtime_error(argv[0] + " failed (" + how + ", log " + log_path + "): " + lastLine(log_path));
+}
+
+}  // namespace omnirange::eval

@@ -1,0 +1,102 @@
+// The experiment's report (Markdown) and metrics, from what a run measured.
+#include "omnirange_eval/Experiment.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace omnirange::eval
+{
+namespace
+{
+std::string fmt(const char* f, double v)
+{
+	char b[64];
+	std::snprintf(b, sizeof b, f, v);
+	return b;
+}
+
+void writeMapsTable(std::ostream& o, const ExperimentResults& r)
+{
+	o << "| localisation | sensor | occupied cells | precision | recall | wall thickness | ATE RMSE | final pose error |\n"
+	  << "|---|---|---|---|---|---|---|---|\n";
+	for (const auto& s : r.sensors)
+		o << "| ground truth | " << s.label << " | " << s.gt.occupied << " | " << fmt("%.3f", s.gt.precision) << " | "
+		  << fmt("%.3f", s.gt.recall) << " | " << fmt("%.3f m", s.gt.thickness) << " | - | - |\n";
+	for (const auto& s : r.sensors)
+		o << "| icp-slam + odometry | " << s.label << " | " << s.icp.occupied << " | " << fmt("%.3f", s.icp.precision)
+		  << " | " << fmt("%.3f", s.icp.recall) << " | " << fmt("%.3f m", s.icp.thickness) << " | "
+		  << fmt("%.3f m", s.icp_path.ate_rmse) << " | " << fmt("%.3f m", s.icp_path.final_xy) << ", "
+		  << fmt("%.1f deg", s.icp_path.final_yaw * 180 / M_PI) << " |\n";
+}
+
+void writeCheckRegion(std::ostream& o, const ExperimentConfig& c, const ExperimentResults& r)
+{
+	const auto& b = c.check_box;
+	o << "## Check region (" << b[0] << ", " << b[1] << "), " << b[2] << " x " << b[3]
+	  << " m\n\nOccupied cells within 0.15 m of the box, as a length (cells x resolution): a wall along its " << b[2]
+	  << " m side gives about that.\n\n| map |";
+	for (const auto& s : r.sensors) o << " " << s.label << " |";
+	o << "\n|---|---|---|\n| ground-truth poses |";
+	for (const auto& s : r.sensors) o << " " << fmt("%.2f m", s.gt_check_marked) << " |";
+	o << "\n| icp-slam |";
+	for (const auto& s : r.sensors) o << " " << fmt("%.2f m", s.icp_check_marked) << " |";
+	o << "\n\n";
+}
+}  // namespace
+
+Metrics metricsOf(const ExperimentResults& r)
+{
+	Metrics m;
+	const auto& a = r.accuracy.stats;
+	m["frames"] = r.simulated.frames;
+	m["training_pairs"] = r.training_pairs;
+	m["omni_hit_fraction"] = r.omni_hit_fraction;
+	m["accuracy_mean_abs"] = a.meanAbs();
+	m["accuracy_mean_percent"] = a.meanPercent();
+	m["accuracy_signed_mean"] = a.meanSigned();
+	m["accuracy_compared"] = double(a.compared);
+	m["accuracy_excluded_fraction"] = a.excludedFraction();
+	for (const auto& s : r.sensors)
+	{
+		for (const auto& [mode, g] : {std::pair{"gt_", &s.gt}, std::pair{"icp_", &s.icp}})
+		{
+			m[mode + s.label + "_precision"] = g->precision;
+			m[mode + s.label + "_recall"] = g->recall;
+			m[mode + s.label + "_thickness"] = g->thickness;
+		}
+		m["gt_" + s.label + "_check_region_marked"] = s.gt_check_marked;
+		m["icp_" + s.label + "_check_region_marked"] = s.icp_check_marked;
+		m["icp_" + s.label + "_ate_rmse"] = s.icp_path.ate_rmse;
+		m["icp_" + s.label + "_final_xy"] = s.icp_path.final_xy;
+		m["icp_" + s.label + "_final_yaw"] = s.icp_path.final_yaw;
+		m["icp_" + s.label + "_keyframes"] = s.icp_path.poses;
+	}
+	m["seconds"] = r.seconds;
+	return m;
+}
+
+std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r)
+{
+	const double max_difference = AccuracyOptions{}.max_difference;
+	std::ostringstream o;
+	o << "# omnirange experiment: " << c.name << "\n\n"
+	  << "From `" << c.ini_file << "`: " << r.simulated.frames << " simulated frames ("
+	  << fmt("%.0f", r.simulated.route_seconds) << " s of route), histogram trained on " << r.training_pairs
+	  << " image/laser pairs. The whole run took " << fmt("%.0f", r.seconds) << " s.\n\n"
+	  << "## Accuracy: laser against omnicam (paper Table II, Fig. 9)\n\n"
+	  << r.accuracy.table(max_difference) << "\n![differences](accuracy_histogram.png)\n\n"
+	  << "All pairs: `accuracy_pairs.csv`. What the histogram learned from (paper Fig. 1): "
+	  << "![bird's-eye view](fig1_birdseye.png) ![laser free region](fig1_laser.png) ![fused](fig1_fused.png)\n\n"
+	  << "## Maps against the world's true map\n\n"
+	  << "Occupied cells count as correct within " << c.match_tolerance << " m of a true wall (precision); "
+	  << "true wall surface within " << c.rangefinder.scanner.max_range
+	  << " m of the path counts as found within the same tolerance (recall). "
+	  << "Wall thickness: occupied area over the length of its centre line.\n\n";
+	writeMapsTable(o, r);
+	o << "\n![maps with ground-truth poses](maps_gt.png)\n\n![maps from icp-slam](maps_icp.png)\n\n";
+	if (c.hasCheckRegion()) writeCheckRegion(o, c, r);
+	return o.str();
+}
+
+}  // namespace omnirange::eval

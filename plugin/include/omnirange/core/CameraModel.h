@@ -1,0 +1,110 @@
+#pragma once
+// Camera/mirror model of a catadioptric (paraboloidal-mirror) omnicam looking
+// down on a flat floor (paper §III-B, eq. (6); DESIGN.md §2).
+
+#include <omnirange/io/OptionsTable.h>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace omnirange
+{
+/** How a pixel's distance rho from the image centre maps to the incidence
+ * angle theta (measured from the downward axis). */
+enum class MirrorModel
+{
+	Paraboloid,  ///< exact paraboloid: theta = 2 atan(rho / R)
+	FirstOrder  ///< first-order Taylor model: theta ~= rho / alpha
+};
+
+std::string toString(MirrorModel m);
+/** "paraboloid" or "first_order"; throws std::invalid_argument otherwise. */
+MirrorModel mirrorModelFromString(const std::string& name);
+
+/** Parameters of the omnicam. The ini keys equal the member names (angles:
+ * the name plus "_deg", in degrees; see OptionsTable). */
+struct CameraParams
+{
+	int image_width{1024};  ///< [px] width of the omnicam image
+	int image_height{768};  ///< [px] height of the omnicam image
+	double cx{512.0};  ///< [px] column of the image centre
+	double cy{384.0};  ///< [px] row of the image centre
+	double R{192.0};  ///< [px] radius of the 90-degree incidence circle
+	double h{0.931};  ///< [m] height of the effective viewpoint above the floor
+	MirrorModel mirror_model{MirrorModel::Paraboloid};
+	/** [px/rad] first-order constant, theta ~= rho/alpha; used only when
+	 * mirror_model = first_order (96 = R/2: the paraboloid's slope at the
+	 * image centre). Fit it with omnirange-calibrate. */
+	double alpha{96.0};
+	/** [rad] on-screen angle (counter-clockwise from the image's +u axis, as
+	 * the picture is viewed) where the sensor's forward axis appears (pi:
+	 * forward is at the image's left). */
+	double forward_azimuth{3.14159265358979323846};
+	/** true when bearings increase clockwise on screen, as in a real
+	 * catadioptric image taken from below the mirror. */
+	bool mirrored{true};
+
+	/** The ini keys, units, meanings; defaults are the initialisers above. */
+	static const OptionsTable<CameraParams>& table();
+	/** Throws std::invalid_argument naming the offending key. */
+	void validate() const;
+};
+
+/** A point on the floor in the sensor frame: x forward, y left [m]. */
+struct FloorPoint
+{
+	double x{0}, y{0};
+};
+
+/** A pixel position in the image [px]: u column, v row. */
+struct Pixel
+{
+	double u{0}, v{0};
+};
+
+/** Pixel <-> bearing/theta <-> metric distance, both ways. */
+class OmniCameraModel
+{
+   public:
+	explicit OmniCameraModel(const CameraParams& p);
+
+	const CameraParams& params() const { return p_; }
+
+	/** Incidence angle [rad] seen by a pixel at distance rho [px]. */
+	double thetaFromRho(double rho) const;
+	/** Inverse of thetaFromRho(). */
+	double rhoFromTheta(double theta) const;
+	/** Floor distance d = h tan(theta) [m] (eq. (6)); +inf at or above the
+	 * horizon. */
+	double distanceFromRho(double rho) const;
+	/** Image radius [px] at which a floor point at distance d [m] appears. */
+	double rhoFromDistance(double d) const;
+	/** Radius of the horizon (theta = 90 degrees) [px]. */
+	double horizonRho() const { return rhoFromTheta(kHalfPi); }
+
+	/** On-screen azimuth [rad] of a sensor-frame bearing [rad]. */
+	double screenAzimuthFromBearing(double bearing) const;
+	/** Sensor-frame bearing in (-pi, pi] of an on-screen azimuth. */
+	double bearingFromScreenAzimuth(double azimuth) const;
+
+	/** Pixel at polar position (bearing [rad], rho [px]). */
+	Pixel pixelFromPolar(double bearing, double rho) const;
+	/** Image radius rho [px] of a pixel (u, v). */
+	double rhoOfPixel(const Pixel& px) const;
+	/** (bearing [rad], rho [px]) of a pixel. */
+	std::pair<double, double> polarFromPixel(const Pixel& px) const;
+
+	/** Where a floor point appears in the image. */
+	Pixel pixelFromFloor(const FloorPoint& f) const;
+	/** The floor point a pixel sees, or nothing at/above the horizon. */
+	std::optional<FloorPoint> floorFromPixel(const Pixel& px) const;
+
+	static constexpr double kHalfPi = 1.57079632679489661923;
+
+   private:
+	CameraParams p_;
+};
+
+}  // namespace omnirange

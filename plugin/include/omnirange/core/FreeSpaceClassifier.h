@@ -1,0 +1,47 @@
+#pragma once
+// Free-space classification (paper eq. (5)): a pixel is free floor when the
+// histogram's P(colour) >= Theta. The decision is precomputed per bin, so
+// classifying a pixel is three table look-ups and one more.
+
+#include <omnirange/core/ColourHistogram.h>
+#include <omnirange/core/PixelClassifier.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace cv
+{
+class Mat;
+}
+
+namespace omnirange
+{
+class FreeSpaceClassifier final : public PixelClassifier
+{
+   public:
+	/** Throws std::invalid_argument if the histogram is empty or the
+	 * threshold is outside [0, 1]. */
+	FreeSpaceClassifier(const ColourHistogram& hist, double threshold);
+
+	const ColourBinner& binner() const { return binner_; }
+
+	/** true when the B, G, R pixel is free floor. */
+	bool isFree(const std::uint8_t* bgr) const
+	{
+		return free_[binner_.binOf(bgr)] != 0;
+	}
+
+	void classify(const std::uint8_t* bgr, const std::int32_t* pixels, int count, std::uint8_t* out) const override
+	{
+		for (int k = 0; k < count; ++k) out[k] = free_[binner_.binOf(bgr + 3 * static_cast<std::size_t>(pixels[k]))];
+	}
+
+	/** Number of bins classified free. */
+	std::size_t freeBinCount() const;
+
+   private:
+	ColourBinner binner_;
+	std::vector<std::uint8_t> free_;  // per bin: 1 free, 0 not
+};
+
+}  // namespace omnirange

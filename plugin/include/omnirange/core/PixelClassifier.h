@@ -1,0 +1,22 @@
+#pragma once
+// The seam between the polar scanner and a free-space model (paper §III-A):
+// the scanner asks for the pixels of one scanline in short runs, so a model
+// is called once per run rather than once per pixel, and pixels beyond the
+// hit search's decision are never classified. Another model (two-class,
+// other features) plugs in by implementing classify().
+
+#include <cstdint>
+
+namespace omnirange
+{
+class PixelClassifier
+{
+   public:
+	virtual ~PixelClassifier() = default;
+
+	/** For k in [0, count): out[k] = 1 when pixel `pixels[k]` (row * width +
+	 * col) of the 8-bit BGR image starting at `bgr` is free floor, else 0. */
+	virtual void classify(const std::uint8_t* bgr, const std::int32_t* pixels, int count, std::uint8_t* out) const = 0;
+};
+
+}  // namespace omnirange

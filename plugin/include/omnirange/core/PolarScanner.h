@@ -1,0 +1,108 @@
+#pragma once
+// Polar scanning (paper §III-B1, Fig. 2): S scanlines from the image centre
+// outwards, each searched for the floor's end with the N/K filters, and the
+// hit pixel turned into metres with the camera model (eq. (6)).
+
+#include <omnirange/core/CameraModel.h>
+#include <omnirange/core/HitFilter.h>
+#include <omnirange/core/PixelClassifier.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cv
+{
+class Mat;
+}
+
+namespace omnirange
+{
+/** Why a ray has the range it has. */
+enum class RayStatus : std::uint8_t
+{
+	Hit,  ///< the floor ends here: a measured range
+	NoHit,  ///< free up to the max-range radius: reports max range
+	TooClose,  ///< the floor ends inside min range: reports min range
+	Outlier  ///< rejected by the outlier filter (range kept, not valid)
+};
+std::string toString(RayStatus s);
+
+/** One ray of a scan. */
+struct Ray
+{
+	double bearing{0};  ///< [rad] in the sensor frame
+	float range{0};  ///< [m] measured, or min/max range by status
+	RayStatus status{RayStatus::NoHit};
+	float hit_rho{-1};  ///< [px] image radius of the boundary, -1 if none
+	/** What the N/K search found on this ray's scanline, and why (its pixel
+	 * indices count from the scanline's first pixel, at base_radius). */
+	HitSearch search{};
+};
+
+/** Bearing [rad] of scanline i of S: MRPT's angle of ray i in a scan of S
+ * rays over the aperture 2 pi (S-1)/S, i.e. -pi (S-1)/S + 2 pi i / S. */
+double scanlineBearing(int i, int S);
+
+/** The aperture [rad] of a scan of S rays spaced 2 pi / S. */
+double scanAperture(int S);
+
+struct PolarScannerParams
+{
+	int scanlines{360};  ///< S
+	double base_radius{40.0};  ///< [px] the robot base; scanlines start here
+	double min_range{0.40};  ///< [m]
+	double max_range{3.8};  ///< [m]
+	/** [px] where the floor's end is put, outwards from the midpoint between
+	 * the last free and the first non-free pixel (default 0: exact for hard
+	 * edges; blurred edges want about +0.5, see omnirange-calibrate). */
+	double boundary_offset{0.0};
+	HitFilterParams filter{};
+
+	static const OptionsTable<PolarScannerParams>& table();
+	/** Throws std::invalid_argument naming the key; the camera bounds the radii. */
+	void validate(const OmniCameraModel& camera) const;
+};
+
+class PolarScanner
+{
+   public:
+	/** Precomputes each scanline's pixels. Throws std::invalid_argument if a
+	 * parameter is impossible or the scan circle (max range plus the N+K
+	 * window) does not fit in the camera's image. */
+	PolarScanner(const OmniCameraModel& camera, const PolarScannerParams& p);
+
+	const PolarScannerParams& params() const { return p_; }
+	/** Image radius [px] of the max range. */
+	double maxRangeRho() const { return max_rho_; }
+	/** Largest image radius [px] any scanline reads. */
+	double scanRadius() const { return scan_radius_; }
+
+	/** Scans one BGR image of the camera's size. */
+	std::vector<Ray> scan(const cv::Mat& bgr, const PixelClassifier& classifier) const;
+
+	/** Pixel indices (row * width + col) of scanline s, innermost first. */
+	std::vector<std::int32_t> scanlinePixels(int s) const;
+
+   private:
+	struct Scanline
+	{
+		double bearing;
+		std::size_t first;  // into pixel_/mid_range_
+		int count;  // pixels on this scanline
+		int last_candidate;  // last pixel whose range is within max range
+	};
+
+	PolarScannerParams p_;
+	int width_, height_;
+	double max_rho_{0}, scan_radius_{0};
+	int longest_line_{0};  // pixels on the longest scanline
+	std::vector<Scanline> lines_;
+	std::vector<std::int32_t> pixel_;  // row * width + col
+	// Range [m] reported for a hit at this pixel: the floor distance of the
+	// midpoint between it and the pixel before it (the boundary lies there).
+	std::vector<float> mid_range_;
+	std::vector<float> mid_rho_;  // [px] that midpoint's image radius
+};
+
+}  // namespace omnirange

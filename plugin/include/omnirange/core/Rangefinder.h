@@ -1,0 +1,89 @@
+#pragma once
+// The omnicam rangefinder: colour image in, 2D range scan out. It owns the
+// camera model, the free-space classifier and the polar scanner, and runs
+// the paper's steps in order (see process()).
+
+#include <omnirange/core/CameraModel.h>
+#include <omnirange/core/ColourHistogram.h>
+#include <omnirange/core/FreeSpaceClassifier.h>
+#include <omnirange/core/OutlierFilter.h>
+#include <omnirange/core/PolarScanner.h>
+#include <omnirange/io/SensorLabels.h>
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <string>
+#include <vector>
+
+namespace cv
+{
+class Mat;
+}
+
+namespace omnirange
+{
+/** Every parameter of the rangefinder, read from one ini section whose keys
+ * equal the member names (docs/parameters.md lists them; ini/maze.ini is a
+ * commented example). */
+struct RangefinderParams
+{
+	CameraParams camera;
+	PolarScannerParams scanner;
+	OutlierFilterParams outliers;
+	double threshold{0.05};  ///< Theta of eq. (5) [-] (the maze's, paper Table I)
+	std::string sensor_label{kOmniscanLabel};  ///< label of the produced scans
+	/** The omnicam's pose on the robot, which becomes the scan's sensorPose
+	 * (MRPT's pose_* keys). pose_z defaults to camera h. */
+	mrpt::poses::CPose3D sensor_pose{0, 0, 0.931, 0, 0, 0};
+	/** [m] stdError written into each scan (about the paper's measured mean
+	 * absolute difference). */
+	double std_error{0.10};
+
+	static const OptionsTable<RangefinderParams>& table();
+	/** Reads every key of `section`; throws std::invalid_argument naming the
+	 * section and key on an unknown key (one not ours nor in `also_allowed`),
+	 * an unparsable or an impossible value. */
+	void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+						const std::vector<std::string>& also_allowed = {});
+	void validate() const;
+	/** One "key = value" line per parameter, in ini syntax. */
+	std::string asIni() const;
+};
+
+/** What one image produced. */
+struct RangeScan
+{
+	std::vector<Ray> rays;  ///< S rays, in scanline order
+	int outliers{0};  ///< rays the outlier filter rejected
+	int count(RayStatus s) const;
+};
+
+class Rangefinder
+{
+   public:
+	/** Throws std::invalid_argument on bad parameters or an empty histogram. */
+	Rangefinder(const RangefinderParams& params, const ColourHistogram& histogram);
+
+	const RangefinderParams& params() const { return p_; }
+	const OmniCameraModel& camera() const { return camera_; }
+	const FreeSpaceClassifier& classifier() const { return classifier_; }
+	const PolarScanner& scanner() const { return scanner_; }
+
+	/** One decoded BGR image of the camera's size -> one scan. */
+	RangeScan process(const cv::Mat& bgr) const;
+
+	/** The scan as an MRPT observation: S rays over 2 pi (S-1)/S, ray i at
+	 * scanline i's bearing, valid only where status is Hit. */
+	mrpt::obs::CObservation2DRangeScan::Ptr toObservation(
+		const RangeScan& scan, mrpt::Clock::time_point stamp) const;
+
+   private:
+	RangefinderParams p_;
+	OmniCameraModel camera_;
+	FreeSpaceClassifier classifier_;
+	PolarScanner scanner_;
+};
+
+}  // namespace omnirange

@@ -1,0 +1,231 @@
+#pragma once
+// One table per options struct: for every field its ini key, unit, meaning
+// and a way to parse and print it; the default is the struct's in-class
+// initialiser, so it exists in one place. The table loads a section strictly
+// (an unknown, renamed or unparsable key is an error that names the section
+// and the key), prints the options at start-up, and gives the docs check its
+// keys and defaults.
+//
+// Keys equal member names. An angle is in degrees in the ini and in radians
+// in memory; its key is the member's name plus "_deg". A sensor's pose on
+// the robot uses MRPT's own keys (pose_x, pose_y, pose_z [m]; pose_yaw,
+// pose_pitch, pose_roll [deg]).
+
+#include <mrpt/poses/CPose3D.h>
+
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace mrpt::config
+{
+class CConfigFileBase;
+}
+
+namespace omnirange
+{
+/** Throws std::invalid_argument(what) unless ok: the way validate() methods fail. */
+inline void require(bool ok, const std::string& what)
+{
+	if (!ok) throw std::invalid_argument(what);
+}
+
+/** Strict parsing of one ini value; each throws std::invalid_argument saying what was expected. */
+double parseDouble(const std::string& text);  ///< finite; no unit suffix, no comma
+int parseInt(const std::string& text);  ///< a whole number that fits an int
+std::uint32_t parseUint32(const std::string& text);  ///< a whole number in [0, 2^32)
+bool parseBool(const std::string& text);  ///< true/false, yes/no, 1/0
+std::string formatDouble(double v);
+
+struct FieldInfo
+{
+	std::string key, unit, doc;
+};
+
+template <class S>
+class OptionsTable
+{
+   public:
+	struct Field
+	{
+		FieldInfo info;
+		std::function<void(S&, const std::string&)> parse;
+		std::function<std::string(const S&)> print;
+	};
+
+	/** A field of type double, int, bool or std::string, or an enum with
+	 * toString() and `from_string`. `get` maps the struct to the member. */
+	template <class Get>
+	OptionsTable& add(const std::string& key, const std::string& unit, const std::string& doc, Get get)
+	{
+		using T = std::remove_reference_t<decltype(get(std::declval<S&>()))>;
+		Field f{{key, unit, doc}, {}, {}};
+		f.parse = [get](S& s, const std::string& t) { get(s) = parseAs<T>(t); };
+		f.print = [get](const S& s) { return printAs(get(const_cast<S&>(s))); };
+		fields_.push_back(std::move(f));
+		return *this;
+	}
+	template <class Get, class FromString>
+	OptionsTable& addEnum(const std::string& key, const std::string& doc, Get get, FromString from_string)
+	{
+		Field f{{key, "-", doc}, {}, {}};
+		f.parse = [get, from_string](S& s, const std::string& t) { get(s) = from_string(t); };
+		f.print = [get](const S& s) { return toString(get(const_cast<S&>(s))); };
+		fields_.push_back(std::move(f));
+		return *this;
+	}
+	/** An angle: key `member`_deg in degrees, the member in radians. */
+	template <class Get>
+	OptionsTable& addAngle(const std::string& member, const std::string& doc, Get get)
+	{
+		Field f{{member + "_deg", "deg", doc}, {}, {}};
+		f.parse = [get](S& s, const std::string& t) { get(s) = parseDouble(t) * kDegToRad; };
+		f.print = [get](const S& s) { return formatDouble(get(const_cast<S&>(s)) / kDegToRad); };
+		fields_.push_back(std::move(f));
+		return *this;
+	}
+	/** A sensor pose: MRPT's pose_x ... pose_roll keys. */
+	template <class Get>
+	OptionsTable& addPose(const std::string& doc, Get get);
+	/** Every field of `sub`, reached through `get`. */
+	template <class Sub, class Get>
+	OptionsTable& include(const OptionsTable<Sub>& sub, Get get)
+	{
+		for (const auto& sf : sub.fields())
+			fields_.push_back({sf.info, [get, p = sf.parse](S& s, const std::string& t) { p(get(s), t); },
+							   [get, p = sf.print](const S& s) { return p(get(const_cast<S&>(s))); }});
+		for (const auto& r : sub.renamed_) renamed_.push_back(r);
+		return *this;
+	}
+	/** A key that older inis used: loading it fails and says what replaced it. */
+	OptionsTable& renamed(const std::string& old_key, const std::string& instead)
+	{
+		renamed_.push_back({old_key, instead});
+		return *this;
+	}
+
+	/** Reads every key of `section` present in `cfg` into `s` (absent keys
+	 * keep their value). Keys in `also_allowed` are skipped. Throws
+	 * std::invalid_argument("[section] key: why"). */
+	void load(S& s, const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+			  const std::vector<std::string>& also_allowed = {}) const;
+	/** One "key = value" line per field, in ini syntax. */
+	std::string print(const S& s) const;
+	std::vector<std::string> keys() const;
+	const std::vector<Field>& fields() const { return fields_; }
+
+   private:
+	template <class>
+	friend class OptionsTable;
+	static constexpr double kDegToRad = 0.017453292519943295;
+
+	template <class T>
+	static T parseAs(const std::string& t)
+	{
+		if constexpr (std::is_same_v<T, double>) return parseDouble(t);
+		else if constexpr (std::is_same_v<T, int>) return parseInt(t);
+		else if constexpr (std::is_same_v<T, bool>) return parseBool(t);
+		else if constexpr (std::is_same_v<T, std::uint32_t>) return parseUint32(t);
+		else return T(t);
+	}
+	template <class T>
+	static std::string printAs(const T& v)
+	{
+		if constexpr (std::is_same_v<T, double>) return formatDouble(v);
+		else if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+		else if constexpr (std::is_integral_v<T>) return std::to_string(v);
+		else return std::string(v);
+	}
+
+	std::vector<Field> fields_;
+	std::vector<std::pair<std::string, std::string>> renamed_;
+};
+
+/** The parts of load() that do not depend on the struct: the section's
+ * keys, each checked against `known` and `renamed`. Returns the keys present. */
+std::vector<std::string> checkSectionKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+										  const std::vector<std::string>& known,
+										  const std::vector<std::pair<std::string, std::string>>& renamed);
+std::string readRawValue(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+						 const std::string& key);
+
+template <class S>
+template <class Get>
+OptionsTable<S>& OptionsTable<S>::addPose(const std::string& doc, Get get)
+{
+	using mrpt::poses::CPose3D;
+	const auto linear = [&](const std::string& key, int axis) {
+		Field f{{key, "m", doc}, {}, {}};
+		f.parse = [get, axis](S& s, const std::string& t) {
+			const double v = parseDouble(t);
+			CPose3D& p = get(s);
+			axis == 0 ? p.x(v) : axis == 1 ? p.y(v) : p.z(v);
+		};
+		f.print = [get, axis](const S& s) { return formatDouble(get(const_cast<S&>(s))[axis]); };
+		fields_.push_back(std::move(f));
+	};
+	linear("pose_x", 0), linear("pose_y", 1), linear("pose_z", 2);
+	// Yaw, pitch, roll: set one, keep the other two.
+	const auto angular = [&](const std::string& key, int which) {
+		Field f{{key, "deg", doc}, {}, {}};
+		f.parse = [get, which](S& s, const std::string& t) {
+			CPose3D& p = get(s);
+			double ypr[3] = {p.yaw(), p.pitch(), p.roll()};
+			ypr[which] = parseDouble(t) * kDegToRad;
+			p.setYawPitchRoll(ypr[0], ypr[1], ypr[2]);
+		};
+		f.print = [get, which](const S& s) {
+			const CPose3D& p = get(const_cast<S&>(s));
+			const double ypr[3] = {p.yaw(), p.pitch(), p.roll()};
+			return formatDouble(ypr[which] / kDegToRad);
+		};
+		fields_.push_back(std::move(f));
+	};
+	angular("pose_yaw", 0), angular("pose_pitch", 1), angular("pose_roll", 2);
+	return *this;
+}
+
+template <class S>
+void OptionsTable<S>::load(S& s, const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+						   const std::vector<std::string>& also_allowed) const
+{
+	std::vector<std::string> known = keys();
+	known.insert(known.end(), also_allowed.begin(), also_allowed.end());
+	const auto present = checkSectionKeys(cfg, section, known, renamed_);
+	for (const auto& f : fields_)
+	{
+		bool found = false;
+		for (const auto& k : present) found = found || k == f.info.key;
+		if (!found) continue;
+		const std::string text = readRawValue(cfg, section, f.info.key);
+		try
+		{
+			f.parse(s, text);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw std::invalid_argument("[" + section + "] " + f.info.key + " = '" + text + "': " + e.what());
+		}
+	}
+}
+
+template <class S>
+std::string OptionsTable<S>::print(const S& s) const
+{
+	std::string out;
+	for (const auto& f : fields_) out += f.info.key + " = " + f.print(s) + "\n";
+	return out;
+}
+
+template <class S>
+std::vector<std::string> OptionsTable<S>::keys() const
+{
+	std::vector<std::string> k;
+	for (const auto& f : fields_) k.push_back(f.info.key);
+	return k;
+}
+
+}  // namespace omnirange

@@ -1,0 +1,39 @@
+#pragma once
+// omnirange-scan's job as a library function: stream a rawlog, add a range
+// scan right after every omnicam image, write the result atomically. Images
+// are decoded and scanned on several threads in batches, so memory does not
+// grow with the rawlog's length.
+
+#include <omnirange/core/Rangefinder.h>
+#include <omnirange/io/SensorLabels.h>
+
+#include <string>
+
+namespace omnirange
+{
+class Progress;
+
+struct RawlogScanOptions
+{
+	std::string input;  ///< rawlog with the images
+	std::string output;  ///< rawlog to write (not the input)
+	std::string omni_label{kOmnicamLabel};  ///< label of the images to scan
+	int threads{2};  ///< threads decoding and scanning
+	/** Read and decode only: no scan, nothing written (the baseline the
+	 * benchmark compares against). */
+	bool decode_only{false};
+};
+
+struct RawlogScanSummary
+{
+	std::size_t images{0};  ///< images scanned (or decoded)
+	std::size_t objects{0};  ///< objects written
+	std::size_t rays{0}, hits{0};  ///< rays produced, and of them valid
+};
+
+/** Throws std::runtime_error naming the file or image on any bad input; the
+ * output then does not exist. `progress` counts the objects read. */
+RawlogScanSummary scanRawlog(const Rangefinder& rangefinder, const RawlogScanOptions& options,
+							 Progress* progress = nullptr);
+
+}  // namespace omnirange

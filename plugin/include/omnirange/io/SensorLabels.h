@@ -1,0 +1,14 @@
+#pragma once
+// The sensor labels of this project's rawlogs (DESIGN.md §4), each defined
+// once. Every app takes the label it reads or writes as an option whose
+// default is one of these.
+
+namespace omnirange
+{
+inline constexpr const char* kOmnicamLabel = "OMNICAM";  ///< CObservationImage: the omnicam's images
+inline constexpr const char* kLaserLabel = "LASER";  ///< CObservation2DRangeScan: the laser
+inline constexpr const char* kOdometryLabel = "ODOMETRY";  ///< CObservationOdometry
+inline constexpr const char* kGroundTruthLabel = "GT";  ///< CObservationRobotPose: the simulator's true pose
+inline constexpr const char* kOmniscanLabel = "OMNISCAN";  ///< CObservation2DRangeScan: the rangefinder's scans
+
+}  // namespace omnirange

@@ -1,0 +1,59 @@
+#pragma once
+// Training the colour histogram the paper's way (§III-A1, Fig. 1): the
+// omnicam image as a bird's-eye view (eqs. (1)-(3)), an image of the floor
+// the laser shows free over its 180 degrees, and their fusion; the pixels of
+// the fusion are counted. The robot's base is masked.
+
+#include <omnirange/train/BirdsEyeView.h>
+#include <omnirange/core/CameraModel.h>
+#include <omnirange/core/ColourHistogram.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose3D.h>
+
+namespace omnirange
+{
+/** What a user chooses about training (omnirange-train's options). */
+struct TrainingParams
+{
+	double resolution{0.02};  ///< [m/px] of the bird's-eye view
+	double laser_margin{0.10};  ///< [m] kept clear of every laser hit (mixed pixels)
+	int bins{ColourHistogram::kDefaultBins};  ///< per colour channel
+	ColourSpace space{ColourSpace::RGB};
+};
+
+/** The three images of paper Fig. 1 for one frame. */
+struct TrainingFrame
+{
+	cv::Mat birds_eye;  ///< (a) BGR, forward up, left on the left
+	cv::Mat laser_free;  ///< (b) 8-bit, 255 where the laser shows free floor
+	cv::Mat fused;  ///< (c) BGR: the bird's-eye pixels that were counted, black elsewhere
+	std::size_t pixels{0};  ///< how many were counted
+};
+
+class HistogramTrainer
+{
+   public:
+	/** `camera_pose` and the scans' sensorPose are both on the robot. Pixels
+	 * from base_range to view_range [m] are trained on: the robot's base
+	 * nearer, the rangefinder's max range farther. */
+	HistogramTrainer(const OmniCameraModel& camera, const mrpt::poses::CPose3D& camera_pose, double base_range,
+					 double view_range, const TrainingParams& p);
+
+	/** Adds one image with the laser scan taken with it. */
+	TrainingFrame add(const cv::Mat& omni_bgr, const mrpt::obs::CObservation2DRangeScan& laser);
+
+	const ColourHistogram& histogram() const { return hist_; }
+
+   private:
+	cv::Mat laserFreeMask(const mrpt::obs::CObservation2DRangeScan& laser) const;
+
+	mrpt::poses::CPose3D camera_pose_;
+	double view_range_;
+	TrainingParams p_;
+	BirdsEyeView view_;
+	ColourHistogram hist_;
+	cv::Mat base_mask_;  // 255 outside the base and within view_range
+};
+
+}  // namespace omnirange

@@ -1,0 +1,50 @@
+#pragma once
+// omnirange-train's job as a library function: stream a rawlog, pair each
+// omnicam image with the laser scan taken with it, and train the histogram
+// (HistogramTrainer) on the selected pairs.
+
+#include <omnirange/core/Rangefinder.h>
+#include <omnirange/io/ObservationPairer.h>
+#include <omnirange/io/SensorLabels.h>
+#include <omnirange/train/HistogramTrainer.h>
+
+#include <string>
+
+namespace omnirange
+{
+class Progress;
+
+struct RawlogTrainingOptions
+{
+	std::string input;
+	std::string omni_label{kOmnicamLabel};
+	std::string laser_label{kLaserLabel};
+	double max_dt{kDefaultMaxPairingDt};  ///< [s] largest time between an image and its scan
+	int every{1};  ///< use every N-th pair
+	int first{0};  ///< skip the pairs before this one
+	int max_frames{0};  ///< use at most this many pairs (0: all)
+	TrainingParams training;
+	/** If not empty: write PREFIX_birdseye.png, PREFIX_laser.png and
+	 * PREFIX_fused.png (paper Fig. 1) for the used pair `figures_frame`. */
+	std::string figures_prefix;
+	int figures_frame{0};
+
+	/** Throws std::invalid_argument on an impossible value. */
+	void validate() const;
+};
+
+struct RawlogTrainingResult
+{
+	ColourHistogram histogram;
+	int pairs{0};  ///< synchronised pairs seen
+	int used{0};  ///< pairs trained on
+	std::size_t pixels{0};  ///< floor pixels counted
+};
+
+/** The camera, its pose and the base come from `params`. Throws
+ * std::runtime_error naming the file on bad input, or when no image had a
+ * laser scan (training needs both). */
+RawlogTrainingResult trainFromRawlog(const RangefinderParams& params, const RawlogTrainingOptions& options,
+									 Progress* progress = nullptr);
+
+}  // namespace omnirange

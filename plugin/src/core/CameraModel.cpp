@@ -1,0 +1,147 @@
+#include "omnirange/core/CameraModel.h"
+
+
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace omnirange
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+double wrapToPi(double a)
+{
+	a = std::fmod(a + kPi, 2 * kPi);
+	if (a <= 0) a += 2 * kPi;
+	return a - kPi;  // (-pi, pi]
+}
+}  // namespace
+
+std::string toString(MirrorModel m)
+{
+	switch (m)
+	{
+		case MirrorModel::Paraboloid: return "paraboloid";
+		case MirrorModel::FirstOrder: return "first_order";
+	}
+	throw std::logic_error("unknown MirrorModel");
+}
+
+MirrorModel mirrorModelFromString(const std::string& name)
+{
+	if (name == "paraboloid") return MirrorModel::Paraboloid;
+	if (name == "first_order") return MirrorModel::FirstOrder;
+	throw std::invalid_argument("mirror_model must be 'paraboloid' or 'first_order', not '" + name + "'");
+}
+
+const OptionsTable<CameraParams>& CameraParams::table()
+{
+	using P = CameraParams;
+	static const auto t = OptionsTable<P>()
+		.add("image_width", "px", "width of the omnicam image; other sizes are rejected", [](P& p) -> auto& { return p.image_width; })
+		.add("image_height", "px", "height of the omnicam image", [](P& p) -> auto& { return p.image_height; })
+		.add("cx", "px", "column of the image centre (the mirror's axis)", [](P& p) -> auto& { return p.cx; })
+		.add("cy", "px", "row of the image centre", [](P& p) -> auto& { return p.cy; })
+		.add("R", "px", "radius of the 90-degree incidence circle of the paraboloid", [](P& p) -> auto& { return p.R; })
+		.add("h", "m", "height of the effective viewpoint above the floor", [](P& p) -> auto& { return p.h; })
+		.addEnum("mirror_model", "paraboloid: theta = 2 atan(rho/R); first_order: theta = rho/alpha",
+				 [](P& p) -> auto& { return p.mirror_model; }, mirrorModelFromString)
+		.add("alpha", "px/rad", "alpha of the first-order model (R/2 matches the paraboloid near the centre)",
+			 [](P& p) -> auto& { return p.alpha; })
+		.addAngle("forward_azimuth",
+				  "on-screen angle, counter-clockwise from the image's +u axis as the picture is viewed, where "
+				  "the sensor's forward axis appears (180: the image's left)",
+				  [](P& p) -> auto& { return p.forward_azimuth; })
+		.add("mirrored", "bool", "bearings increase clockwise on screen, as in an image taken from below the mirror",
+			 [](P& p) -> auto& { return p.mirrored; })
+		.renamed("forward_azimuth", "use forward_azimuth_deg, in degrees (180 where forward_azimuth was 3.14159)");
+	return t;
+}
+
+void CameraParams::validate() const
+{
+	require(image_width > 0 && image_height > 0, "image_width and image_height must be > 0");
+	require(image_width <= 20000 && image_height <= 20000, "image_width and image_height must be <= 20000 px");
+	require(R > 0, "R must be > 0 px");
+	require(h > 0, "h must be > 0 m");
+	require(alpha > 0, "alpha must be > 0 px/rad");
+	require(cx >= 0 && cx < image_width && cy >= 0 && cy < image_height,
+			"the image centre (cx, cy) must lie inside the image");
+	require(std::isfinite(forward_azimuth), "forward_azimuth_deg must be finite");
+}
+
+OmniCameraModel::OmniCameraModel(const CameraParams& p) : p_(p)
+{
+	p_.validate();
+}
+
+double OmniCameraModel::thetaFromRho(double rho) const
+{
+	if (p_.mirror_model == MirrorModel::Paraboloid)
+		return 2.0 * std::atan(rho / p_.R);
+	return rho / p_.alpha;
+}
+
+double OmniCameraModel::rhoFromTheta(double theta) const
+{
+	if (p_.mirror_model == MirrorModel::Paraboloid)
+		return p_.R * std::tan(0.5 * theta);
+	return theta * p_.alpha;
+}
+
+double OmniCameraModel::distanceFromRho(double rho) const
+{
+	const double theta = thetaFromRho(rho);
+	if (theta >= kHalfPi) return std::numeric_limits<double>::infinity();
+	return p_.h * std::tan(theta);  // eq. (6)
+}
+
+double OmniCameraModel::rhoFromDistance(double d) const
+{
+	return rhoFromTheta(std::atan2(d, p_.h));
+}
+
+double OmniCameraModel::screenAzimuthFromBearing(double bearing) const
+{
+	return wrapToPi(p_.forward_azimuth + (p_.mirrored ? -bearing : bearing));
+}
+
+double OmniCameraModel::bearingFromScreenAzimuth(double azimuth) const
+{
+	const double rel = azimuth - p_.forward_azimuth;
+	return wrapToPi(p_.mirrored ? -rel : rel);
+}
+
+Pixel OmniCameraModel::pixelFromPolar(double bearing, double rho) const
+{
+	const double a = screenAzimuthFromBearing(bearing);
+	// Rows grow downwards, so the on-screen counter-clockwise angle flips v.
+	return {p_.cx + rho * std::cos(a), p_.cy - rho * std::sin(a)};
+}
+
+double OmniCameraModel::rhoOfPixel(const Pixel& px) const { return std::hypot(px.u - p_.cx, px.v - p_.cy); }
+
+std::pair<double, double> OmniCameraModel::polarFromPixel(const Pixel& px) const
+{
+	const double du = px.u - p_.cx, dv = px.v - p_.cy;
+	return {bearingFromScreenAzimuth(std::atan2(-dv, du)), std::hypot(du, dv)};
+}
+
+Pixel OmniCameraModel::pixelFromFloor(const FloorPoint& f) const
+{
+	return pixelFromPolar(
+		std::atan2(f.y, f.x), rhoFromDistance(std::hypot(f.x, f.y)));
+}
+
+std::optional<FloorPoint> OmniCameraModel::floorFromPixel(const Pixel& px) const
+{
+	const auto [bearing, rho] = polarFromPixel(px);
+	const double d = distanceFromRho(rho);
+	if (!std::isfinite(d)) return std::nullopt;
+	return FloorPoint{d * std::cos(bearing), d * std::sin(bearing)};
+}
+
+}  // namespace omnirange

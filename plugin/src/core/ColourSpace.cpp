@@ -1,0 +1,66 @@
+#include "omnirange/core/ColourSpace.h"
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+namespace omnirange
+{
+std::string toString(ColourSpace s)
+{
+	return s == ColourSpace::RGB ? "RGB" : "HSV";
+}
+
+ColourSpace colourSpaceFromString(const std::string& name)
+{
+	std::string n = name;
+	std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) {
+		return static_cast<char>(std::toupper(c));
+	});
+	if (n == "RGB") return ColourSpace::RGB;
+	if (n == "HSV") return ColourSpace::HSV;
+	throw std::invalid_argument(
+		"colour space must be RGB or HSV, not '" + name + "'");
+}
+
+void bgrToHsv(const std::uint8_t* bgr, std::uint8_t* hsv)
+{
+	const int b = bgr[0], g = bgr[1], r = bgr[2];
+	const int v = std::max({r, g, b});
+	const int delta = v - std::min({r, g, b});
+	hsv[2] = static_cast<std::uint8_t>(v);
+	hsv[1] = static_cast<std::uint8_t>(v == 0 ? 0 : (255 * delta) / v);
+	if (delta == 0)
+	{
+		hsv[0] = 0;
+		return;
+	}
+	// Hue in sixths of the circle, each sixth 256/6 wide.
+	int h6;  // hue * 6 * delta, in units of a sixth
+	if (v == r)
+		h6 = (g - b) + (g < b ? 6 * delta : 0);
+	else if (v == g)
+		h6 = (b - r) + 2 * delta;
+	else
+		h6 = (r - g) + 4 * delta;
+	hsv[0] = static_cast<std::uint8_t>((h6 * 256 / (6 * delta)) & 0xFF);
+}
+
+ColourBinner::ColourBinner(ColourSpace space, int bins)
+	: space_(space), bins_(bins)
+{
+	if (bins < 1 || bins > 256)
+		throw std::invalid_argument(
+			"histogram bins per channel must be in [1, 256], not " +
+			std::to_string(bins));
+	const std::uint32_t n = static_cast<std::uint32_t>(bins);
+	for (std::uint32_t x = 0; x < 256; ++x)
+	{
+		const std::uint32_t bin = x * n / 256;
+		lut0_[x] = bin * n * n;
+		lut1_[x] = bin * n;
+		lut2_[x] = bin;
+	}
+}
+
+}  // namespace omnirange

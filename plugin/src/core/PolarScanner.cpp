@@ -1,0 +1,190 @@
+#include "omnirange/core/PolarScanner.h"
+
+#include "omnirange/io/OptionsTable.h"
+
+#include <opencv2/core.hpp>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace omnirange
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+/** Pixels classified per call to the classifier: short, so the search's
+ * early decisions still skip most of a scanline. */
+constexpr int kClassifyRun = 16;
+}  // namespace
+
+std::string toString(RayStatus s)
+{
+	switch (s)
+	{
+		case RayStatus::Hit: return "hit";
+		case RayStatus::NoHit: return "no_hit";
+		case RayStatus::TooClose: return "too_close";
+		case RayStatus::Outlier: return "outlier";
+	}
+	throw std::logic_error("unknown RayStatus");
+}
+
+std::string toString(HitSearch::Status s)
+{
+	switch (s)
+	{
+		case HitSearch::Status::Hit: return "hit";
+		case HitSearch::Status::NoCandidate: return "no_candidate";
+		case HitSearch::Status::Unconfirmed: return "unconfirmed";
+	}
+	throw std::logic_error("unknown HitSearch::Status");
+}
+
+const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
+{
+	using P = PolarScannerParams;
+	static const auto t = OptionsTable<P>()
+		.add("scanlines", "-", "S, the number of scanlines and of rays in the scan", [](P& p) -> auto& { return p.scanlines; })
+		.add("base_radius", "px", "radius of the robot's own base at the image centre; scanlines start there",
+			 [](P& p) -> auto& { return p.base_radius; })
+		.add("min_range", "m", "hits closer than this (or on a scanline's first pixel) report min_range",
+			 [](P& p) -> auto& { return p.min_range; })
+		.add("max_range", "m", "no hit up to this range reports max_range, flagged invalid",
+			 [](P& p) -> auto& { return p.max_range; })
+		.add("boundary_offset", "px",
+			 "where the floor's end is put, outwards from the midpoint between the last free and the first "
+			 "non-free pixel; 0 is exact for hard edges, blurred edges want about +0.5 (omnirange-calibrate "
+			 "suggests a value), within [-1, 1]",
+			 [](P& p) -> auto& { return p.boundary_offset; })
+		.add("N", "px", "false-positive filter: pixels behind a candidate that must be non-free (>= 1)",
+			 [](P& p) -> auto& { return p.filter.N; })
+		.add("K", "px", "false-negative filter: longest free run negated inside that window (>= 0)",
+			 [](P& p) -> auto& { return p.filter.K; });
+	return t;
+}
+
+void PolarScannerParams::validate(const OmniCameraModel& cam) const
+{
+	require(scanlines >= 2 && scanlines <= 36000, "scanlines must be within [2, 36000]");
+	require(filter.N >= 1 && filter.N <= 10000, "N (false-positive filter) must be within [1, 10000] px");
+	require(filter.K >= 0 && filter.K <= 10000, "K (false-negative filter) must be within [0, 10000] px");
+	require(base_radius >= 0, "base_radius must be >= 0 px");
+	require(min_range >= 0, "min_range must be >= 0 m");
+	require(max_range > min_range, "max_range must be > min_range");
+	require(std::abs(boundary_offset) <= 1.0, "boundary_offset must be within [-1, 1] px");
+	require(base_radius < cam.rhoFromDistance(max_range),
+			"base_radius must be smaller than the max-range radius (" +
+				std::to_string(cam.rhoFromDistance(max_range)) + " px)");
+}
+
+double scanAperture(int S) { return 2.0 * kPi * (S - 1) / S; }
+
+double scanlineBearing(int i, int S)
+{
+	return -0.5 * scanAperture(S) + 2.0 * kPi * i / S;
+}
+
+PolarScanner::PolarScanner(const OmniCameraModel& cam, const PolarScannerParams& p)
+	: p_(p), width_(cam.params().image_width), height_(cam.params().image_height)
+{
+	p_.validate(cam);
+	max_rho_ = cam.rhoFromDistance(p_.max_range);
+	const int window = p_.filter.N + p_.filter.K + 1;
+
+	lines_.reserve(p_.scanlines);
+	for (int s = 0; s < p_.scanlines; ++s)
+	{
+		Scanline line{scanlineBearing(s, p_.scanlines), pixel_.size(), 0, -1};
+		int past_max = -1;  // first pixel whose range exceeds max range
+		long prev = -1;
+		double prev_rho = 0;
+		// Step 1 px along the ray; rounding gives an 8-connected digital ray,
+		// from which repeated pixels are dropped.
+		for (double r = p_.base_radius; past_max < 0 || line.count < past_max + window;
+			 r += 1.0)
+		{
+			const Pixel f = cam.pixelFromPolar(line.bearing, r);
+			const long u = std::lround(f.u), v = std::lround(f.v);
+			if (u < 0 || v < 0 || u >= width_ || v >= height_)
+				throw std::invalid_argument(
+					"scanner: the scan circle (max_range " +
+					std::to_string(p_.max_range) + " m = " + std::to_string(max_rho_) +
+					" px, plus the N+K+1 = " + std::to_string(window) +
+					" px filter window) does not fit in the " + std::to_string(width_) +
+					"x" + std::to_string(height_) + " image around (" +
+					std::to_string(cam.params().cx) + ", " +
+					std::to_string(cam.params().cy) + ")");
+			const long idx = v * width_ + u;
+			if (idx == prev) continue;
+			prev = idx;
+			const double rho = cam.rhoOfPixel({static_cast<double>(u), static_cast<double>(v)});
+			const double mid = line.count == 0 ? rho : 0.5 * (prev_rho + rho) + p_.boundary_offset;
+			prev_rho = rho;
+			const double range = cam.distanceFromRho(mid);
+			pixel_.push_back(static_cast<std::int32_t>(idx));
+			mid_rho_.push_back(static_cast<float>(mid));
+			mid_range_.push_back(static_cast<float>(range));
+			if (past_max < 0 && range > p_.max_range) past_max = line.count;
+			++line.count;
+		}
+		line.last_candidate = past_max - 1;
+		longest_line_ = std::max(longest_line_, line.count);
+		scan_radius_ = std::max(scan_radius_, prev_rho);
+		lines_.push_back(line);
+	}
+}
+
+std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier& classifier) const
+{
+	if (image.type() != CV_8UC3) throw std::invalid_argument("scanner: the image must be 8-bit, 3-channel BGR");
+	if (image.cols != width_ || image.rows != height_)
+		throw std::invalid_argument("scanner: the image is " + std::to_string(image.cols) + "x" +
+									std::to_string(image.rows) + " but the camera is " + std::to_string(width_) +
+									"x" + std::to_string(height_));
+	const cv::Mat bgr = image.isContinuous() ? image : image.clone();
+	const std::uint8_t* data = bgr.ptr<std::uint8_t>();
+	std::vector<std::uint8_t> free(longest_line_);
+
+	std::vector<Ray> rays(lines_.size());
+	for (std::size_t s = 0; s < lines_.size(); ++s)
+	{
+		const Scanline& line = lines_[s];
+		const std::int32_t* pix = pixel_.data() + line.first;
+		int classified = 0;  // pixels [0, classified) of this scanline are in `free`
+		const auto is_free = [&](int k) {
+			while (k >= classified)
+			{
+				const int n = std::min(kClassifyRun, line.count - classified);
+				classifier.classify(data, pix + classified, n, free.data() + classified);
+				classified += n;
+			}
+			return free[k] != 0;
+		};
+		Ray& ray = rays[s];
+		ray.bearing = line.bearing;
+		ray.search = findHit(is_free, line.count, line.last_candidate, p_.filter);
+		if (ray.search.status != HitSearch::Status::Hit)
+		{
+			ray.status = RayStatus::NoHit;
+			ray.range = static_cast<float>(p_.max_range);
+			continue;
+		}
+		const int hit = ray.search.index;
+		ray.hit_rho = mid_rho_[line.first + hit];
+		const float range = mid_range_[line.first + hit];
+		// The first pixel is at the base: the obstacle may start inside it.
+		const bool too_close = hit == 0 || range < p_.min_range;
+		ray.status = too_close ? RayStatus::TooClose : RayStatus::Hit;
+		ray.range = too_close ? static_cast<float>(p_.min_range) : range;
+	}
+	return rays;
+}
+
+std::vector<std::int32_t> PolarScanner::scanlinePixels(int s) const
+{
+	const Scanline& line = lines_.at(s);
+	return {pixel_.begin() + line.first, pixel_.begin() + line.first + line.count};
+}
+
+}  // namespace omnirange

@@ -1,0 +1,106 @@
+#include "omnirange/core/Rangefinder.h"
+
+#include "omnirange/io/OptionsTable.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <algorithm>
+
+namespace omnirange
+{
+const OptionsTable<RangefinderParams>& RangefinderParams::table()
+{
+	using P = RangefinderParams;
+	static const auto t = OptionsTable<P>()
+		.include(CameraParams::table(), [](P& p) -> auto& { return p.camera; })
+		.include(PolarScannerParams::table(), [](P& p) -> auto& { return p.scanner; })
+		.add("threshold", "-", "Theta of eq. (5): a colour is free floor when P(colour) >= Theta, in [0, 1]",
+			 [](P& p) -> auto& { return p.threshold; })
+		.include(OutlierFilterParams::table(), [](P& p) -> auto& { return p.outliers; })
+		.add("sensor_label", "-", "sensorLabel of the produced CObservation2DRangeScan",
+			 [](P& p) -> auto& { return p.sensor_label; })
+		.addPose("the omnicam's pose on the robot: the scan's sensorPose (pose_z defaults to h when absent)",
+				 [](P& p) -> auto& { return p.sensor_pose; })
+		.add("std_error", "m", "stdError written into each scan", [](P& p) -> auto& { return p.std_error; });
+	return t;
+}
+
+void RangefinderParams::loadFromConfig(const mrpt::config::CConfigFileBase& c, const std::string& s,
+									   const std::vector<std::string>& also_allowed)
+{
+	table().load(*this, c, s, also_allowed);
+	// pose_z defaults to h: the viewpoint is on the camera's axis at that height.
+	std::vector<std::string> present;
+	c.getAllKeys(s, present);
+	if (std::find(present.begin(), present.end(), "pose_z") == present.end()) sensor_pose.z(camera.h);
+	try
+	{
+		validate();
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument("[" + s + "] " + e.what());
+	}
+}
+
+void RangefinderParams::validate() const
+{
+	camera.validate();
+	scanner.validate(OmniCameraModel(camera));
+	outliers.validate();
+	require(threshold >= 0.0 && threshold <= 1.0, "threshold (Theta) must be within [0, 1]");
+	require(!sensor_label.empty(), "sensor_label is empty");
+	require(std_error >= 0, "std_error must be >= 0 m");
+}
+
+std::string RangefinderParams::asIni() const { return table().print(*this); }
+
+int RangeScan::count(RayStatus s) const
+{
+	return static_cast<int>(std::count_if(
+		rays.begin(), rays.end(), [s](const Ray& r) { return r.status == s; }));
+}
+
+Rangefinder::Rangefinder(
+	const RangefinderParams& params, const ColourHistogram& histogram)
+	: p_((params.validate(), params)),
+	  camera_(p_.camera),
+	  classifier_(histogram, p_.threshold),
+	  scanner_(camera_, p_.scanner)
+{
+}
+
+RangeScan Rangefinder::process(const cv::Mat& bgr) const
+{
+	RangeScan out;
+	// 1-3. Classify the pixels along each polar scanline (eq. (5)), find
+	//      where the floor ends with the N/K filters (Fig. 3), and convert
+	//      that pixel to metres (eq. (6)).
+	out.rays = scanner_.scan(bgr, classifier_);
+	// 4. Reject the rays that disagree with both their neighbours.
+	out.outliers = rejectOutliers(out.rays, p_.outliers);
+	return out;
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr Rangefinder::toObservation(
+	const RangeScan& scan, mrpt::Clock::time_point stamp) const
+{
+	auto obs = mrpt::obs::CObservation2DRangeScan::Create();
+	const int S = static_cast<int>(scan.rays.size());
+	obs->sensorLabel = p_.sensor_label;
+	obs->timestamp = stamp;
+	obs->sensorPose = p_.sensor_pose;
+	obs->aperture = static_cast<float>(scanAperture(S));
+	obs->rightToLeft = true;
+	obs->maxRange = static_cast<float>(p_.scanner.max_range);
+	obs->stdError = static_cast<float>(p_.std_error);
+	obs->resizeScan(S);
+	for (int i = 0; i < S; ++i)
+	{
+		obs->setScanRange(i, scan.rays[i].range);
+		obs->setScanRangeValidity(i, scan.rays[i].status == RayStatus::Hit);
+	}
+	return obs;
+}
+
+}  // namespace omnirange

@@ -1,0 +1,97 @@
+#include "omnirange/io/OptionsTable.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace omnirange
+{
+namespace
+{
+std::string trimmed(const std::string& s)
+{
+	const auto b = s.find_first_not_of(" \t\r\n");
+	if (b == std::string::npos) return "";
+	return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+}  // namespace
+
+double parseDouble(const std::string& text)
+{
+	const std::string t = trimmed(text);
+	char* end = nullptr;
+	errno = 0;
+	const double v = std::strtod(t.c_str(), &end);
+	if (t.empty() || end != t.c_str() + t.size()) throw std::invalid_argument("not a number (no unit, '.' for decimals)");
+	if (!std::isfinite(v) || errno == ERANGE) throw std::invalid_argument("not a finite number");
+	return v;
+}
+
+int parseInt(const std::string& text)
+{
+	const std::string t = trimmed(text);
+	char* end = nullptr;
+	errno = 0;
+	const long v = std::strtol(t.c_str(), &end, 10);
+	if (t.empty() || end != t.c_str() + t.size()) throw std::invalid_argument("not a whole number");
+	if (errno == ERANGE || v < INT_MIN || v > INT_MAX) throw std::invalid_argument("out of range");
+	return static_cast<int>(v);
+}
+
+std::uint32_t parseUint32(const std::string& text)
+{
+	const std::string t = trimmed(text);
+	char* end = nullptr;
+	errno = 0;
+	const long long v = std::strtoll(t.c_str(), &end, 10);
+	if (t.empty() || end != t.c_str() + t.size()) throw std::invalid_argument("not a whole number");
+	if (errno == ERANGE || v < 0 || v > static_cast<long long>(UINT32_MAX)) throw std::invalid_argument("out of range");
+	return static_cast<std::uint32_t>(v);
+}
+
+bool parseBool(const std::string& text)
+{
+	std::string t = trimmed(text);
+	std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });
+	if (t == "true" || t == "yes" || t == "1") return true;
+	if (t == "false" || t == "no" || t == "0") return false;
+	throw std::invalid_argument("not true or false");
+}
+
+std::string formatDouble(double v)
+{
+	std::ostringstream o;
+	o.precision(10);
+	o << v;
+	return o.str();
+}
+
+std::vector<std::string> checkSectionKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+										  const std::vector<std::string>& known,
+										  const std::vector<std::pair<std::string, std::string>>& renamed)
+{
+	if (!cfg.sectionExists(section)) throw std::invalid_argument("section [" + section + "] not found");
+	std::vector<std::string> present;
+	cfg.getAllKeys(section, present);
+	for (const auto& k : present)
+	{
+		for (const auto& [old_key, instead] : renamed)
+			if (k == old_key)
+				throw std::invalid_argument("[" + section + "] key '" + k + "' is no longer read: " + instead);
+		if (std::find(known.begin(), known.end(), k) == known.end())
+			throw std::invalid_argument("unknown key '" + k + "' in section [" + section + "]");
+	}
+	return present;
+}
+
+std::string readRawValue(const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key)
+{
+	return cfg.read_string(section, key, "", true);
+}
+
+}  // namespace omnirange

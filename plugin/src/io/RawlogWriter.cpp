@@ -1,0 +1,88 @@
+#include "omnirange/io/RawlogWriter.h"
+
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
+#include <opencv2/imgcodecs.hpp>
+#include <unistd.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace omnirange
+{
+std::string imagesDirFor(const std::string& rawlog_path)
+{
+	fs::path p(rawlog_path);
+	std::string stem = p.filename().string();
+	for (const std::string ext : {".rawlog.gz", ".rawlog"})
+		if (stem.size() > ext.size() && stem.compare(stem.size() - ext.size(), ext.size(), ext) == 0)
+		{
+			stem.resize(stem.size() - ext.size());
+			break;
+		}
+	return (p.parent_path() / (stem + "_Images")).string();
+}
+
+RawlogWriter::RawlogWriter(const std::string& path, int gz_level)
+	: path_(path),
+	  tmp_path_(path + ".tmp-" + std::to_string(::getpid())),
+	  images_(imagesDirFor(path)),
+	  tmp_images_(images_ + ".tmp-" + std::to_string(::getpid())),
+	  out_(std::make_unique<mrpt::io::CFileGZOutputStream>())
+{
+	if (!out_->open(tmp_path_, gz_level))
+		throw std::runtime_error("cannot write rawlog '" + path + "'");
+}
+
+RawlogWriter::~RawlogWriter()
+{
+	if (committed_) return;
+	out_.reset();
+	std::error_code ec;
+	fs::remove(tmp_path_, ec);
+	fs::remove_all(tmp_images_, ec);
+}
+
+void RawlogWriter::write(const mrpt::serialization::CSerializable& obj)
+{
+	mrpt::serialization::archiveFrom(*out_) << obj;
+	++count_;
+}
+
+mrpt::img::CImage RawlogWriter::externalImage(
+	const cv::Mat& bgr, const std::string& name, int jpeg_quality)
+{
+	if (!has_images_)
+	{
+		fs::remove_all(tmp_images_);
+		fs::create_directories(tmp_images_);
+		has_images_ = true;
+	}
+	const std::string file = (fs::path(tmp_images_) / name).string();
+	if (!cv::imwrite(file, bgr, {cv::IMWRITE_JPEG_QUALITY, jpeg_quality}))
+		throw std::runtime_error("cannot write image '" + file + "'");
+	mrpt::img::CImage img;
+	img.setExternalStorage(name);
+	return img;
+}
+
+void RawlogWriter::commit()
+{
+	out_->close();
+	if (has_images_)
+	{
+		fs::remove_all(images_);
+		fs::rename(tmp_images_, images_);
+	}
+	else if (!link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_))
+	{
+		fs::remove_all(images_);
+		fs::create_directory_symlink(fs::absolute(link_to_), images_);
+	}
+	fs::rename(tmp_path_, path_);
+	committed_ = true;
+}
+
+}  // namespace omnirange

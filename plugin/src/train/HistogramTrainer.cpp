@@ -1,0 +1,74 @@
+#include "omnirange/train/HistogramTrainer.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace omnirange
+{
+HistogramTrainer::HistogramTrainer(const OmniCameraModel& camera, const mrpt::poses::CPose3D& camera_pose,
+								   double base_range, double view_range, const TrainingParams& p)
+	: camera_pose_(camera_pose),
+	  view_range_(view_range),
+	  p_(p),
+	  view_(camera, 2 * static_cast<int>(std::ceil(view_range / p.resolution)) + 1, p.resolution),
+	  hist_(p.space, p.bins)
+{
+	if (!(view_range > 0) || !(p.resolution > 0) || !(p.laser_margin >= 0) || !(base_range >= 0))
+		throw std::invalid_argument("training: view range and resolution must be > 0, margins >= 0");
+	// Pixels between the base and view_range: a ring around the centre.
+	const int n = view_.size();
+	base_mask_ = cv::Mat::zeros(n, n, CV_8UC1);
+	const cv::Point c(n / 2, n / 2);
+	cv::circle(base_mask_, c, static_cast<int>(view_range / p.resolution), cv::Scalar(255), cv::FILLED);
+	cv::circle(base_mask_, c, static_cast<int>(std::ceil(base_range / p.resolution)), cv::Scalar(0), cv::FILLED);
+}
+
+cv::Mat HistogramTrainer::laserFreeMask(const mrpt::obs::CObservation2DRangeScan& laser) const
+{
+	// The laser's pose in the camera's frame: both poses are on the robot.
+	const mrpt::poses::CPose3D rel = laser.sensorPose - camera_pose_;
+	const int n = view_.size();
+	const double c = 0.5 * (n - 1), mpp = view_.metresPerPixel();
+	// Sensor frame (x forward, y left) -> view pixel (forward up, left left).
+	const auto toPx = [&](double x, double y) {
+		return cv::Point(static_cast<int>(std::lround(c - y / mpp)), static_cast<int>(std::lround(c - x / mpp)));
+	};
+	const double reach = 2.0 * view_range_;  // invalid rays: free beyond the view
+	std::vector<cv::Point> poly{toPx(rel.x(), rel.y())};
+	std::vector<cv::Point> hits;
+	for (std::size_t i = 0; i < laser.getScanSize(); ++i)
+	{
+		const bool valid = laser.getScanRangeValidity(i);
+		const double r = valid ? laser.getScanRange(i) : reach;
+		const double a = laser.getScanAngle(i);
+		mrpt::math::TPoint3D local(r * std::cos(a), r * std::sin(a), 0), inCam;
+		rel.composePoint(local, inCam);
+		poly.push_back(toPx(inCam.x, inCam.y));
+		if (valid) hits.push_back(poly.back());
+	}
+	cv::Mat mask = cv::Mat::zeros(n, n, CV_8UC1);
+	cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{poly}, cv::Scalar(255));
+	// Keep clear of every hit: its neighbourhood mixes floor and obstacle.
+	const int margin = static_cast<int>(std::ceil(p_.laser_margin / mpp));
+	if (margin > 0)
+		for (const auto& h : hits) cv::circle(mask, h, margin, cv::Scalar(0), cv::FILLED);
+	return mask;
+}
+
+TrainingFrame HistogramTrainer::add(const cv::Mat& omni, const mrpt::obs::CObservation2DRangeScan& laser)
+{
+	TrainingFrame f;
+	f.birds_eye = view_.render(omni);  // (a)
+	f.laser_free = laserFreeMask(laser);  // (b)
+	cv::Mat use;
+	cv::bitwise_and(f.laser_free, base_mask_, use);
+	f.fused = cv::Mat::zeros(f.birds_eye.size(), CV_8UC3);  // (c)
+	f.birds_eye.copyTo(f.fused, use);
+	hist_.addImage(f.birds_eye, use);
+	f.pixels = static_cast<std::size_t>(cv::countNonZero(use));
+	return f;
+}
+
+}  // namespace omnirange

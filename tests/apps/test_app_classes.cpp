@@ -1,0 +1,115 @@
+// The apps run in-process as classes: train, scan, accuracy and calibrate
+// on the factory sample, each result checked against what the sample holds;
+// the command-line parsing fills the same options.
+#include <omnirange_apps/AccuracyApp.h>
+#include <omnirange_apps/CalibrateApp.h>
+#include <omnirange_apps/CommandLine.h>
+#include <omnirange_apps/ScanApp.h>
+#include <omnirange_apps/TrainApp.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace omnirange;
+using namespace omnirange::app;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kSource = OMNIRANGE_SOURCE_DIR;
+const std::string kSample = kSource + "/rawlogs/factory-sample.rawlog";
+const std::string kIni = kSource + "/ini/factory.ini";
+
+std::string workDir(const std::string& name)
+{
+	const fs::path d = fs::temp_directory_path() / "omnirange_apps" / name;
+	fs::remove_all(d);
+	fs::create_directories(d);
+	return d.string();
+}
+
+std::string trainHistogram(const std::string& dir)
+{
+	TrainApp::Options o;
+	o.ini = kIni;
+	o.output = dir + "/f.hist";
+	o.training.input = kSample;
+	o.verbosity = mrpt::system::LVL_ERROR;
+	const RawlogTrainingResult r = TrainApp(o).run();
+	EXPECT_EQ(r.pairs, 20);  // the sample's 20 image/laser pairs
+	EXPECT_EQ(r.used, 20);
+	EXPECT_GT(r.pixels, 20u * 10000);
+	return o.output;
+}
+}  // namespace
+
+TEST(AppClasses, TrainScanAndAccuracyOfTheFactorySample)
+{
+	const std::string dir = workDir("pipeline");
+	ScanApp::Options s;
+	s.ini = kIni;
+	s.histogram = trainHistogram(dir);
+	s.scan.input = kSample;
+	s.scan.output = dir + "/scanned.rawlog";
+	s.verbosity = mrpt::system::LVL_ERROR;
+	const RawlogScanSummary scanned = ScanApp(s).run();
+	EXPECT_EQ(scanned.images, 20u);
+	EXPECT_EQ(scanned.rays, 20u * 360);
+	EXPECT_GT(scanned.hits, scanned.rays / 4);  // much of the factory is open beyond 3.8 m
+
+	AccuracyApp::Options a;
+	a.input = s.scan.output;
+	a.output = dir + "/acc";
+	a.verbosity = mrpt::system::LVL_ERROR;
+	const eval::AccuracyResult acc = AccuracyApp(a).run();
+	EXPECT_EQ(acc.frames, 20);
+	EXPECT_GT(acc.stats.compared, 20u * 40);
+	// Within the paper's worst Table II figure (0.1375 m) on these 20 frames.
+	EXPECT_LT(acc.stats.meanAbs(), 0.1375);
+	for (const std::string f : {"_pairs.csv", "_histogram.png", "_table.md"}) EXPECT_TRUE(fs::exists(a.output + f)) << f;
+}
+
+TEST(AppClasses, CalibrateRecoversTheMirrorRadius)
+{
+	const std::string dir = workDir("calibrate");
+	CalibrateApp::Options o;
+	o.histogram = trainHistogram(dir);
+	// Start from a wrong R: the fit must come back near the simulator's 192 px.
+	o.ini = dir + "/wrong.ini";
+	std::ofstream(o.ini) << "[rangefinder]\nR = 205\nthreshold = 0.075\n";
+	o.calibration.input = kSample;
+	o.calibration.every = 1;
+	o.verbosity = mrpt::system::LVL_ERROR;
+	const MirrorCalibration c = CalibrateApp(o).run();
+	EXPECT_NEAR(c.R, 192.0, 5.0);
+	EXPECT_LT(c.rms_R, c.rms_given);  // the fit explains the laser better than R = 205
+	EXPECT_GE(c.suggested_boundary_offset, -1.0);  // what the scanner accepts
+	EXPECT_LE(c.suggested_boundary_offset, 1.0);
+	EXPECT_GE(c.kept, c.pairs / 2);
+}
+
+TEST(AppClasses, CommandLinesFillTheOptions)
+{
+	const char* argv[] = {"omnirange-train", "-i", "in.rawlog", "-o", "out.hist", "-c", "x.ini", "--every", "3",
+						  "--colour-space", "HSV", "-q"};
+	const TrainApp::Options o = TrainApp::parse(12, argv);
+	EXPECT_EQ(o.training.input, "in.rawlog");
+	EXPECT_EQ(o.output, "out.hist");
+	EXPECT_EQ(o.training.every, 3);
+	EXPECT_EQ(o.training.training.space, ColourSpace::HSV);
+	EXPECT_EQ(o.training.laser_label, "LASER");  // the default, from the options struct
+	EXPECT_EQ(o.verbosity, mrpt::system::LVL_ERROR);
+
+	const char* bad[] = {"omnirange-scan", "--bogus"};
+	try
+	{
+		ScanApp::parse(2, bad);
+		FAIL() << "a bad command line must end the program";
+	}
+	catch (const ExitRequest& e)
+	{
+		EXPECT_EQ(e.code, 2);
+	}
+}
