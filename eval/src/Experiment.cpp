@@ -37,6 +37,7 @@ Experiment::Experiment(ExperimentConfig config)
 	dataset_ = out_ + "/dataset/" + c_.name + ".rawlog";
 	histogram_ = out_ + "/floor.hist";
 	scanned_ = out_ + "/scanned.rawlog";
+	r_.has_check_region = c_.hasCheckRegion();
 	// The laser's missing returns are free space; the omnicam's are not (emptyLike()).
 	r_.sensors = {{kLaserLabel, "laser", c_.map_laser_ini, c_.icp_laser_ini, true, {}, {}, {}, 0, 0},
 				  {c_.rangefinder.sensor_label, "omniscan", c_.map_omni_ini, c_.icp_omni_ini, false, {}, {}, {}, 0, 0}};

@@ -65,8 +65,11 @@ Metrics metricsOf(const ExperimentResults& r)
 			m[mode + s.label + "_recall"] = g->recall;
 			m[mode + s.label + "_thickness"] = g->thickness;
 		}
-		m["gt_" + s.label + "_check_region_marked"] = s.gt_check_marked;
-		m["icp_" + s.label + "_check_region_marked"] = s.icp_check_marked;
+		if (r.has_check_region)
+		{
+			m["gt_" + s.label + "_check_region_marked"] = s.gt_check_marked;
+			m["icp_" + s.label + "_check_region_marked"] = s.icp_check_marked;
+		}
 		m["icp_" + s.label + "_ate_rmse"] = s.icp_path.ate_rmse;
 		m["icp_" + s.label + "_final_xy"] = s.icp_path.final_xy;
 		m["icp_" + s.label + "_final_yaw"] = s.icp_path.final_yaw;

@@ -42,6 +42,15 @@ inline cv::Mat drawFloorDisc(const OmniCameraModel& cam, double rho)
 	return img;
 }
 
+/** The default camera with the first-order model theta = rho / alpha. */
+inline CameraParams firstOrderCamera(double alpha)
+{
+	CameraParams p;
+	p.mirror_model = MirrorModel::FirstOrder;
+	p.alpha = alpha;
+	return p;
+}
+
 /** A histogram that has seen only the floor colour. */
 inline ColourHistogram floorHistogram()
 {

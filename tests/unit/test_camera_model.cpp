@@ -1,5 +1,7 @@
 // Camera model: the paraboloid's known angles, round trips both ways, the
 // image orientation convention, bad parameters.
+#include "SyntheticOmni.h"
+
 #include <omnirange/core/CameraModel.h>
 
 #include <gtest/gtest.h>
@@ -12,13 +14,6 @@ namespace
 {
 constexpr double kPi = 3.14159265358979323846;
 
-CameraParams firstOrder(double alpha)
-{
-	CameraParams p;
-	p.mirror_model = MirrorModel::FirstOrder;
-	p.alpha = alpha;
-	return p;
-}
 }  // namespace
 
 TEST(CameraModel, ParaboloidKnownAngles)
@@ -36,7 +31,7 @@ TEST(CameraModel, ParaboloidKnownAngles)
 
 TEST(CameraModel, RoundTripsBothModels)
 {
-	for (const CameraParams& p : {CameraParams{}, firstOrder(110.0)})
+	for (const CameraParams& p : {CameraParams{}, test::firstOrderCamera(110.0)})
 	{
 		const OmniCameraModel cam{p};
 		for (double rho = 0.5; rho < 170; rho += 3.7)

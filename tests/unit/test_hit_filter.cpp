@@ -110,3 +110,23 @@ TEST(HitFilter, ClassifiesLazily)
 	EXPECT_EQ(r.index, 3);
 	EXPECT_LE(calls, 8);  // pixels 0..7 decide it
 }
+
+TEST(HitFilter, TheSearchKeepsTheCandidatesKRejectedAndWhy)
+{
+	// K = 1: the X at 2 is followed by FF (a run of K+1): rejected; the X at 5 is the hit.
+	auto r = search("FFXFFXXXXX", 3, 1);
+	EXPECT_EQ(r.status, Status::Hit);
+	EXPECT_EQ(r.index, 5);
+	EXPECT_EQ(r.rejected_by_K, 1);
+	EXPECT_EQ(r.last_rejected, 2);
+	// A candidate whose window runs off the scanline stays named.
+	r = search("FFFFFFFXX", 4, 1);
+	EXPECT_EQ(r.status, Status::Unconfirmed);
+	EXPECT_EQ(r.index, 7);
+	EXPECT_EQ(r.rejected_by_K, 0);
+	r = search("FFXFFFXFFFF", 4, 1);
+	EXPECT_EQ(r.status, Status::NoCandidate);
+	EXPECT_EQ(r.index, -1);
+	EXPECT_EQ(r.rejected_by_K, 2);
+	EXPECT_EQ(r.last_rejected, 6);
+}

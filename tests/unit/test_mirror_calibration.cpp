@@ -1,5 +1,7 @@
 // Mirror calibration: the fits of alpha and R recover the model that made
 // the pairs, and fail on no pairs.
+#include "SyntheticOmni.h"
+
 #include <omnirange/train/MirrorCalibration.h>
 
 #include <gtest/gtest.h>
@@ -8,20 +10,9 @@
 
 using namespace omnirange;
 
-namespace
-{
-CameraParams firstOrder(double alpha)
-{
-	CameraParams p;
-	p.mirror_model = MirrorModel::FirstOrder;
-	p.alpha = alpha;
-	return p;
-}
-}  // namespace
-
 TEST(MirrorCalibration, FitAlphaRecoversTheFirstOrderConstant)
 {
-	const OmniCameraModel truth{firstOrder(123.4)};
+	const OmniCameraModel truth{test::firstOrderCamera(123.4)};
 	std::vector<RhoRangePair> pairs;
 	for (double rho = 20; rho < 150; rho += 10)
 		pairs.push_back({rho, truth.distanceFromRho(rho)});

@@ -188,3 +188,44 @@ TEST(PolarScanner, ImageOfTheWrongSizeOrTypeIsRejected)
 	EXPECT_THROW(f.scanner.scan(cv::Mat(480, 640, CV_8UC3), f.classifier), std::invalid_argument);
 	EXPECT_THROW(f.scanner.scan(cv::Mat(768, 1024, CV_8UC1), f.classifier), std::invalid_argument);
 }
+
+namespace
+{
+/** Another free-space model through the scanner's seam: free where green dominates. */
+class GreenIsFree final : public PixelClassifier
+{
+   public:
+	void classify(const std::uint8_t* bgr, const std::int32_t* pixels, int count, std::uint8_t* out) const override
+	{
+		for (int k = 0; k < count; ++k)
+		{
+			const std::uint8_t* p = bgr + 3 * static_cast<std::size_t>(pixels[k]);
+			out[k] = p[1] > p[2] ? 1 : 0;
+		}
+	}
+};
+}  // namespace
+
+TEST(PolarScanner, AnotherClassifierPlugsInThroughTheSeam)
+{
+	Fixture f;
+	const double rho = 90.0;
+	const auto image = test::drawFloorDisc(f.cam, rho);
+	const auto with_histogram = f.scanner.scan(image, f.classifier);
+	const auto with_green = f.scanner.scan(image, GreenIsFree{});
+	ASSERT_EQ(with_green.size(), with_histogram.size());
+	for (std::size_t i = 0; i < with_green.size(); ++i)
+	{
+		EXPECT_EQ(with_green[i].status, RayStatus::Hit);
+		EXPECT_FLOAT_EQ(with_green[i].range, with_histogram[i].range);
+		EXPECT_EQ(with_green[i].search.status, HitSearch::Status::Hit);
+		EXPECT_EQ(with_green[i].search.rejected_by_K, 0);
+	}
+	// All floor: every ray is a no-hit, and the search says there was no candidate.
+	const cv::Mat floor(image.size(), CV_8UC3, cv::Scalar(test::kFloor));
+	for (const Ray& r : f.scanner.scan(floor, GreenIsFree{}))
+	{
+		EXPECT_EQ(r.status, RayStatus::NoHit);
+		EXPECT_EQ(r.search.status, HitSearch::Status::NoCandidate);
+	}
+}

@@ -37,12 +37,11 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 
 MirrorCalibration CalibrateApp::run()
 {
-	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section);
-	MRPT_LOG_INFO_STREAM("options from " << o_.ini << " [" << o_.section << "]:\n" << params.asIni());
+	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	const Rangefinder rf(params, ColourHistogram::load(o_.histogram));
 	Progress progress("objects read");
 	const MirrorCalibration c =
-		calibrateMirror(rf, o_.calibration, o_.verbosity <= mrpt::system::LVL_INFO ? &progress : nullptr);
+		calibrateMirror(rf, o_.calibration, progressAt(o_.verbosity, progress));
 	// The result is the program's output: on stdout, whatever the verbosity.
 	std::printf("pairs: %zu (%zu kept after dropping residuals over 3x the median)\n", c.pairs, c.kept);
 	std::printf("paraboloid:   R = %.2f px      RMS range error %.3f m (ini's R = %.2f: %.3f m)\n", c.R, c.rms_R,

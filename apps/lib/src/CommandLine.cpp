@@ -73,7 +73,8 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	}
 }
 
-RangefinderParams loadRangefinderIni(const std::string& file, const std::string& section)
+RangefinderParams loadRangefinderIni(const std::string& file, const std::string& section,
+									 mrpt::system::COutputLogger& log)
 {
 	if (!std::filesystem::is_regular_file(file)) throw std::runtime_error("cannot open ini file '" + file + "'");
 	RangefinderParams p;
@@ -85,7 +86,13 @@ RangefinderParams loadRangefinderIni(const std::string& file, const std::string&
 	{
 		throw std::runtime_error(file + ": " + e.what());
 	}
+	log.logStr(mrpt::system::LVL_INFO, "options from " + file + " [" + section + "]:\n" + p.asIni());
 	return p;
+}
+
+Progress* progressAt(mrpt::system::VerbosityLevel level, Progress& progress)
+{
+	return level <= mrpt::system::LVL_INFO ? &progress : nullptr;
 }
 
 }  // namespace omnirange::app

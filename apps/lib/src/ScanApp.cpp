@@ -35,11 +35,10 @@ ScanApp::ScanApp(Options o) : mrpt::system::COutputLogger("omnirange-scan"), o_(
 
 RawlogScanSummary ScanApp::run()
 {
-	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section);
-	MRPT_LOG_INFO_STREAM("options from " << o_.ini << " [" << o_.section << "]:\n" << params.asIni());
+	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	const Rangefinder rf(params, ColourHistogram::load(o_.histogram));
 	Progress progress("objects read");
-	const auto s = scanRawlog(rf, o_.scan, o_.verbosity <= mrpt::system::LVL_INFO ? &progress : nullptr);
+	const auto s = scanRawlog(rf, o_.scan, progressAt(o_.verbosity, progress));
 	MRPT_LOG_INFO_FMT("%zu images scanned, %.1f %% of rays hit, %zu objects -> %s", s.images,
 					  100.0 * s.hits / std::max<std::size_t>(1, s.rays), s.objects, o_.scan.output.c_str());
 	return s;

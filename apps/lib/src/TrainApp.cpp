@@ -46,11 +46,10 @@ TrainApp::TrainApp(Options o) : mrpt::system::COutputLogger("omnirange-train"), 
 
 RawlogTrainingResult TrainApp::run()
 {
-	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section);
-	MRPT_LOG_INFO_STREAM("options from " << o_.ini << " [" << o_.section << "]:\n" << params.asIni());
+	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	Progress progress("objects read");
 	const RawlogTrainingResult r =
-		trainFromRawlog(params, o_.training, o_.verbosity <= mrpt::system::LVL_INFO ? &progress : nullptr);
+		trainFromRawlog(params, o_.training, progressAt(o_.verbosity, progress));
 	r.histogram.save(o_.output);
 	MRPT_LOG_INFO_FMT("trained on %d image/scan pairs (of %d), %zu floor pixels -> %s", r.used, r.pairs, r.pixels,
 					  o_.output.c_str());

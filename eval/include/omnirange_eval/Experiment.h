@@ -44,6 +44,7 @@ struct ExperimentResults
 	double omni_hit_fraction{0};
 	AccuracyResult accuracy;
 	std::vector<SensorMaps> sensors;  ///< the laser, then the omnicam
+	bool has_check_region{false};  ///< the ini named one: the sensors' *_check_marked are measured
 	double seconds{0};
 };
 

@@ -13,6 +13,7 @@
 namespace omnirange
 {
 struct RangefinderParams;
+class Progress;
 }
 
 namespace omnirange::app
@@ -41,7 +42,12 @@ void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv);
  * "NAME: error: MESSAGE" on one line for any exception. */
 int runApp(const std::string& name, const std::function<void()>& body);
 
-/** The rangefinder's section of an ini file, with the file named in errors. */
-RangefinderParams loadRangefinderIni(const std::string& file, const std::string& section);
+/** The rangefinder's section of an ini file, with the file named in
+ * errors; the options are logged once to `log` at INFO. */
+RangefinderParams loadRangefinderIni(const std::string& file, const std::string& section,
+									 mrpt::system::COutputLogger& log);
+
+/** `progress` when `level` shows progress (INFO or more), else nullptr. */
+Progress* progressAt(mrpt::system::VerbosityLevel level, Progress& progress);
 
 }  // namespace omnirange::app
