@@ -8,7 +8,12 @@ namespace omnirange
 {
 std::string toString(ColourSpace s)
 {
-	return s == ColourSpace::RGB ? "RGB" : "HSV";
+	switch (s)
+	{
+		case ColourSpace::RGB: return "RGB";
+		case ColourSpace::HSV: return "HSV";
+	}
+	throw std::logic_error("unknown ColourSpace");
 }
 
 ColourSpace colourSpaceFromString(const std::string& name)

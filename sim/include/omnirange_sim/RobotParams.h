@@ -1,5 +1,5 @@
 #pragma once
-// The simulated robot (DESIGN.md §5): an omnicam, a laser, odometry, its
+// The simulated robot (docs/worlds.md): an omnicam, a laser, odometry, its
 // motion. Read from a robot ini (ini/robot-omnip2dx.ini documents every key).
 
 #include <omnirange/core/CameraModel.h>

@@ -1,6 +1,6 @@
 #pragma once
 // Camera/mirror model of a catadioptric (paraboloidal-mirror) omnicam looking
-// down on a flat floor (paper §III-B, eq. (6); DESIGN.md §2).
+// down on a flat floor (paper §III-B, eq. (6); docs/method.md).
 
 #include <omnirange/io/OptionsTable.h>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The sensor labels of this project's rawlogs (DESIGN.md §4), each defined
+// The sensor labels of this project's rawlogs (docs/architecture.md), each defined
 // once. Every app takes the label it reads or writes as an option whose
 // default is one of these.
 
