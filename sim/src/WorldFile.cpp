@@ -1,5 +1,7 @@
 // The world file reader. Syntax: docs/worlds.md. Every error names the file
 // and the line.
+#include "WorldFields.h"
+
 #include "omnirange_sim/World.h"
 
 #include <mrpt/io/CFileGZInputStream.h>
@@ -18,72 +20,6 @@ namespace omnirange::sim
 {
 namespace
 {
-/** One line's "key=value" tokens, with checks that name the line. */
-class Fields
-{
-   public:
-	Fields(std::string where, const std::vector<std::string>& tokens) : where_(std::move(where))
-	{
-		for (const auto& t : tokens)
-		{
-			const auto eq = t.find('=');
-			if (eq == std::string::npos || eq == 0)
-				throw error("expected key=value, got '" + t + "'");
-			kv_[t.substr(0, eq)] = t.substr(eq + 1);
-		}
-	}
-	std::runtime_error error(const std::string& what) const
-	{
-		return std::runtime_error(where_ + ": " + what);
-	}
-	bool has(const std::string& k) const { return kv_.count(k) != 0; }
-	std::string str(const std::string& k) const
-	{
-		used_.insert(k);
-		const auto it = kv_.find(k);
-		if (it == kv_.end()) throw error("missing key '" + k + "'");
-		return it->second;
-	}
-	double num(const std::string& k) const
-	{
-		const std::string s = str(k);
-		char* end = nullptr;
-		const double v = std::strtod(s.c_str(), &end);
-		if (end == s.c_str() || *end != '\0' || !std::isfinite(v))
-			throw error("key '" + k + "' is not a number: '" + s + "'");
-		return v;
-	}
-	double num(const std::string& k, double def) const { return has(k) ? num(k) : def; }
-	double positive(const std::string& k) const
-	{
-		const double v = num(k);
-		if (!(v > 0)) throw error("key '" + k + "' must be > 0, not " + str(k));
-		return v;
-	}
-	std::array<double, 3> rgb(const std::string& k) const
-	{
-		std::array<double, 3> c{};
-		std::istringstream s(str(k));
-		char comma;
-		if (!(s >> c[0] >> comma >> c[1] >> comma >> c[2]))
-			throw error("key '" + k + "' must be R,G,B");
-		for (double v : c)
-			if (v < 0 || v > 255) throw error("key '" + k + "' has a value outside 0..255");
-		return c;
-	}
-	/** Throws on a key nothing read (a typo must not pass silently). */
-	void requireAllUsed() const
-	{
-		for (const auto& [k, v] : kv_)
-			if (!used_.count(k)) throw error("unknown key '" + k + "'");
-	}
-
-   private:
-	std::string where_;
-	std::map<std::string, std::string> kv_;
-	mutable std::set<std::string> used_;
-};
-
 struct LegendEntry
 {
 	int material;
@@ -101,78 +37,27 @@ class Parser
 		if (!f) throw std::runtime_error(path_ + ": cannot open world file");
 		w_.materials = stockMaterials();
 		w_.floor_material = w_.findMaterial("concrete");
-		std::string raw;
 		bool header = false;
-		bool have_bounds = false;
-		while (std::getline(f, raw))
+		for (std::string raw; std::getline(f, raw);)
 		{
 			++line_;
 			const auto tokens = split(raw);
 			if (tokens.empty()) continue;
-			const std::string& cmd = tokens[0];
 			if (!header)
 			{
-				if (cmd != "omnirange-world" || tokens.size() != 2 || tokens[1] != "1")
+				if (tokens[0] != "omnirange-world" || tokens.size() != 2 || tokens[1] != "1")
 					throw error("the first line must be 'omnirange-world 1'");
 				header = true;
-				continue;
 			}
-			if (cmd == "plan")
-			{
-				plan(fields(tokens), f);
-				continue;
-			}
-			const Fields fl = fields(tokens);
-			if (cmd == "name")
+			else if (tokens[0] == "plan")
+				plan(fields(tokens), f);  // reads the lines of the plan that follow
+			else if (tokens[0] == "name")
 			{
 				if (tokens.size() != 2) throw error("expected 'name NAME'");
 				w_.name = tokens[1];
-				continue;
 			}
-			else if (cmd == "bounds")
-			{
-				w_.lo = {fl.num("xmin"), fl.num("ymin")};
-				w_.hi = {fl.num("xmax"), fl.num("ymax")};
-				if (!(w_.hi.x > w_.lo.x && w_.hi.y > w_.lo.y))
-					throw error("bounds need xmax > xmin and ymax > ymin");
-				have_bounds = true;
-			}
-			else if (cmd == "floor")
-				w_.floor_material = material(fl);
-			else if (cmd == "sky")
-			{
-				const auto c = fl.rgb("rgb");
-				for (int i = 0; i < 3; ++i) w_.sky_rgb[i] = static_cast<std::uint8_t>(c[i]);
-			}
-			else if (cmd == "light")
-			{
-				w_.light.azimuth = fl.num("azimuth", w_.light.azimuth);
-				w_.light.elevation = fl.num("elevation", w_.light.elevation);
-				w_.light.ambient = fl.num("ambient", w_.light.ambient);
-				w_.light.diffuse = fl.num("diffuse", w_.light.diffuse);
-				if (!(w_.light.elevation > 0.05 && w_.light.elevation <= 1.5708))
-					throw error("light elevation must be in (0.05, pi/2] rad");
-			}
-			else if (cmd == "material")
-				defineMaterial(fl);
-			else if (cmd == "legend")
-				legend(fl);
-			else if (cmd == "box")
-				add(fl, Footprint::box({fl.num("x"), fl.num("y")}, fl.positive("w"),
-									   fl.positive("d"), fl.num("yaw", 0.0)));
-			else if (cmd == "wall")
-				wall(fl);
-			else if (cmd == "cylinder")
-				add(fl, Footprint::circle({fl.num("x"), fl.num("y")}, fl.positive("r")));
-			else if (cmd == "arc")
-				arc(fl);
-			else if (cmd == "polygon")
-				add(fl, polygon(fl));
-			else if (cmd == "gridmap")
-				gridmap(fl, have_bounds);
 			else
-				throw error("unknown statement '" + cmd + "'");
-			fl.requireAllUsed();
+				statement(tokens[0], fields(tokens));
 		}
 		if (!header) throw error("empty world file");
 		if (w_.name.empty()) w_.name = "world";
@@ -180,11 +65,61 @@ class Parser
 		return std::move(w_);
 	}
 
+	/** One statement line other than the header, name and plan. */
+	void statement(const std::string& cmd, const Fields& fl)
+	{
+		if (cmd == "bounds")
+		{
+			w_.lo = {fl.num("xmin"), fl.num("ymin")};
+			w_.hi = {fl.num("xmax"), fl.num("ymax")};
+			if (!(w_.hi.x > w_.lo.x && w_.hi.y > w_.lo.y))
+				throw error("bounds need xmax > xmin and ymax > ymin");
+			have_bounds_ = true;
+		}
+		else if (cmd == "floor")
+			w_.floor_material = material(fl);
+		else if (cmd == "sky")
+		{
+			const auto c = fl.rgb("rgb");
+			for (int i = 0; i < 3; ++i) w_.sky_rgb[i] = static_cast<std::uint8_t>(c[i]);
+		}
+		else if (cmd == "light")
+		{
+			w_.light.azimuth = fl.num("azimuth", w_.light.azimuth);
+			w_.light.elevation = fl.num("elevation", w_.light.elevation);
+			w_.light.ambient = fl.num("ambient", w_.light.ambient);
+			w_.light.diffuse = fl.num("diffuse", w_.light.diffuse);
+			if (!(w_.light.elevation > 0.05 && w_.light.elevation <= 1.5708))
+				throw error("light elevation must be in (0.05, pi/2] rad");
+		}
+		else if (cmd == "material")
+			defineMaterial(fl);
+		else if (cmd == "legend")
+			legend(fl);
+		else if (cmd == "box")
+			add(fl, Footprint::box({fl.num("x"), fl.num("y")}, fl.positive("w"),
+								   fl.positive("d"), fl.num("yaw", 0.0)));
+		else if (cmd == "wall")
+			wall(fl);
+		else if (cmd == "cylinder")
+			add(fl, Footprint::circle({fl.num("x"), fl.num("y")}, fl.positive("r")));
+		else if (cmd == "arc")
+			arc(fl);
+		else if (cmd == "polygon")
+			add(fl, polygon(fl));
+		else if (cmd == "gridmap")
+			gridmap(fl, have_bounds_);
+		else
+			throw error("unknown statement '" + cmd + "'");
+		fl.requireAllUsed();
+	}
+
    private:
 	std::string path_;
 	int line_{0};
 	World w_;
 	std::map<char, LegendEntry> legend_;
+	bool have_bounds_{false};
 
 	std::string where() const { return path_ + ":" + std::to_string(line_); }
 	std::runtime_error error(const std::string& what) const
@@ -208,7 +143,6 @@ class Parser
 
 	Fields fields(const std::vector<std::string>& tokens) const
 	{
-		if (tokens[0] == "name") return Fields(where(), {});
 		return Fields(where(), {tokens.begin() + 1, tokens.end()});
 	}
 
@@ -400,79 +334,6 @@ class Parser
 	}
 };
 }  // namespace
-
-int World::findMaterial(const std::string& n) const
-{
-	for (std::size_t i = 0; i < materials.size(); ++i)
-		if (materials[i].name == n) return static_cast<int>(i);
-	return -1;
-}
-
-void World::buildIndex(double cell)
-{
-	cell_ = cell;
-	Vec2 lo = this->lo, hi = this->hi;
-	for (const auto& s : solids)
-	{
-		lo = {std::min(lo.x, s.footprint.lo().x), std::min(lo.y, s.footprint.lo().y)};
-		hi = {std::max(hi.x, s.footprint.hi().x), std::max(hi.y, s.footprint.hi().y)};
-	}
-	grid_lo_ = lo;
-	nx_ = static_cast<int>(std::ceil((hi.x - lo.x) / cell_)) + 1;
-	ny_ = static_cast<int>(std::ceil((hi.y - lo.y) / cell_)) + 1;
-	grid_.assign(static_cast<std::size_t>(nx_) * ny_, {});
-	for (std::size_t i = 0; i < solids.size(); ++i)
-	{
-		const auto& f = solids[i].footprint;
-		const int x0 = static_cast<int>((f.lo().x - lo.x) / cell_);
-		const int x1 = static_cast<int>((f.hi().x - lo.x) / cell_);
-		const int y0 = static_cast<int>((f.lo().y - lo.y) / cell_);
-		const int y1 = static_cast<int>((f.hi().y - lo.y) / cell_);
-		for (int y = y0; y <= y1; ++y)
-			for (int x = x0; x <= x1; ++x) grid_[y * nx_ + x].push_back(static_cast<int>(i));
-	}
-}
-
-void World::castRay(const Vec2& o, const Vec2& d, double max_t,
-					std::vector<SolidCrossing>& out) const
-{
-	out.clear();
-	thread_local std::vector<int> candidates;
-	candidates.clear();
-	// March through the grid cells the ray visits (Amanatides-Woo).
-	double px = (o.x - grid_lo_.x) / cell_, py = (o.y - grid_lo_.y) / cell_;
-	int cx = static_cast<int>(std::floor(px)), cy = static_cast<int>(std::floor(py));
-	const int sx = d.x > 0 ? 1 : -1, sy = d.y > 0 ? 1 : -1;
-	const double inf = 1e30;
-	const double dtx = d.x != 0 ? cell_ / std::abs(d.x) : inf;
-	const double dty = d.y != 0 ? cell_ / std::abs(d.y) : inf;
-	double tx = d.x != 0 ? ((sx > 0 ? (cx + 1 - px) : (px - cx)) * cell_) / std::abs(d.x) : inf;
-	double ty = d.y != 0 ? ((sy > 0 ? (cy + 1 - py) : (py - cy)) * cell_) / std::abs(d.y) : inf;
-	double t = 0;
-	while (t <= max_t)
-	{
-		if (cx >= 0 && cy >= 0 && cx < nx_ && cy < ny_)
-		{
-			const auto& cellv = grid_[cy * nx_ + cx];
-			candidates.insert(candidates.end(), cellv.begin(), cellv.end());
-		}
-		else if ((cx < 0 && sx < 0) || (cy < 0 && sy < 0) || (cx >= nx_ && sx > 0) ||
-				 (cy >= ny_ && sy > 0))
-			break;  // outside and moving away
-		if (tx < ty)
-			t = tx, tx += dtx, cx += sx;
-		else
-			t = ty, ty += dty, cy += sy;
-	}
-	std::sort(candidates.begin(), candidates.end());
-	candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-	for (int i : candidates)
-		if (const auto c = solids[i].footprint.intersect(o, d); c && c->t_in < max_t)
-			out.push_back({*c, i});
-	std::sort(out.begin(), out.end(), [](const SolidCrossing& a, const SolidCrossing& b) {
-		return a.crossing.t_in < b.crossing.t_in;
-	});
-}
 
 World loadWorld(const std::string& path) { return Parser(path).run(); }
 
