@@ -52,6 +52,11 @@ AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions
 			}
 			++r.frames;
 		});
+	loop.onPair<CObservation2DRangeScan, CObservation2DRangeScan>(
+		o.truth_label, o.omni_label, o.max_dt,
+		[&](const CObservation2DRangeScan::Ptr& truth, const CObservation2DRangeScan::Ptr& omni) {
+			r.truth.add(*truth, *omni);
+		});
 	loop.run(progress);
 	if (r.frames == 0) throw std::runtime_error(loop.describeNoPair());
 	return r;

@@ -122,6 +122,7 @@ void Experiment::measureAccuracy()
 	writeImageAtomically(out_ + "/accuracy_histogram.png",
 						 differenceHistogram(r_.accuracy.stats.differences, c_.name, o.max_difference));
 	writeFileAtomically(out_ + "/accuracy_table.md", r_.accuracy.table(o.max_difference));
+	if (r_.accuracy.truth.frames > 0) writeFileAtomically(out_ + "/accuracy_truth.md", r_.accuracy.truth.table());
 }
 
 MapMetrics Experiment::assess(const mrpt::maps::COccupancyGridMap2D& map, const std::string& title,

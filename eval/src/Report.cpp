@@ -57,6 +57,18 @@ Metrics metricsOf(const ExperimentResults& r)
 	m["accuracy_signed_mean"] = a.meanSigned();
 	m["accuracy_compared"] = double(a.compared);
 	m["accuracy_excluded_fraction"] = a.excludedFraction();
+	if (r.accuracy.truth.frames > 0)
+	{
+		const TruthBand t = r.accuracy.truth.all();
+		const double n = static_cast<double>(std::max<std::size_t>(1, t.rays));
+		m["truth_within_2cm"] = t.within_2cm / n;
+		m["truth_within_5cm"] = t.within_5cm / n;
+		m["truth_mean_abs"] = t.meanAbs();
+		m["truth_median_abs"] = t.medianAbs();
+		m["truth_missed"] = t.missed() / n;
+		m["truth_false_obstacles"] =
+			double(r.accuracy.truth.false_obstacles) / std::max<std::size_t>(1, r.accuracy.truth.open_rays);
+	}
 	for (const auto& s : r.sensors)
 	{
 		for (const auto& [mode, g] : {std::pair{"gt_", &s.gt}, std::pair{"icp_", &s.icp}})
@@ -89,6 +101,11 @@ std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r
 	  << " image/laser pairs. The whole run took " << fmt("%.0f", r.seconds) << " s.\n\n"
 	  << "## Accuracy: laser against omnicam (paper Table II, Fig. 9)\n\n"
 	  << r.accuracy.table(max_difference) << "\n![differences](accuracy_histogram.png)\n\n"
+	  << (r.accuracy.truth.frames > 0 ? "## Accuracy: omnicam against the true floor boundary\n\nEvery omnicam ray against "
+										 "where the simulator knows the floor really ends along its bearing (the TRUTH "
+										 "scans). Missed: the floor ends within the max range but the ray has no hit.\n\n" +
+											r.accuracy.truth.table() + "\n"
+									  : std::string())
 	  << "All pairs: `accuracy_pairs.csv`. What the histogram learned from (paper Fig. 1): "
 	  << "![bird's-eye view](fig1_birdseye.png) ![laser free region](fig1_laser.png) ![fused](fig1_fused.png)\n\n"
 	  << "## Maps against the world's true map\n\n"

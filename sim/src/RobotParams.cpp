@@ -19,6 +19,8 @@ const OptionsTable<OmnicamSimParams>& OmnicamSimParams::table()
 		.add("antialias", "bool", "supersample pixels on edges", [](P& p) -> auto& { return p.antialias; })
 		.add("format", "-", "png | jpg", [](P& p) -> auto& { return p.format; })
 		.add("jpeg_quality", "1..100", "JPEG quality", [](P& p) -> auto& { return p.jpeg_quality; })
+		.add("truth_rays", "-", "rays of the TRUTH scan (where the floor really ends)", [](P& p) -> auto& { return p.truth_rays; })
+		.add("truth_max_range", "m", "the TRUTH scan's reach", [](P& p) -> auto& { return p.truth_max_range; })
 		.renamed("rim_theta", "use rim_theta_deg, in degrees");
 	return t;
 }
@@ -91,7 +93,9 @@ void RobotParams::validate() const
 	require(o.noise_sigma >= 0, "[omnicam] noise_sigma must be >= 0");
 	require(o.format == "jpg" || o.format == "png", "[omnicam] format must be jpg or png");
 	require(o.jpeg_quality >= 1 && o.jpeg_quality <= 100, "[omnicam] jpeg_quality must be in 1..100");
-	require(laser.rays >= 2, "[laser] rays must be >= 2");
+	require(o.truth_rays >= 2 && o.truth_rays <= 36000, "[omnicam] truth_rays must be within [2, 36000]");
+	require(o.truth_max_range > 0 && o.truth_max_range <= 1000, "[omnicam] truth_max_range must be within (0, 1000] m");
+	require(laser.rays >= 2 && laser.rays <= 100000, "[laser] rays must be within [2, 100000]");
 	require(laser.fov > 0 && laser.fov <= 6.2832, "[laser] fov_deg must be in (0, 360]");
 	require(laser.max_range > 0, "[laser] max_range must be > 0 m");
 	require(laser.sigma >= 0, "[laser] sigma must be >= 0 m");

@@ -2,6 +2,7 @@
 
 #include <omnirange/io/SensorLabels.h>
 
+#include "omnirange_sim/FloorTruth.h"
 #include "omnirange_sim/OmniRenderer.h"
 #include "omnirange_sim/Route.h"
 #include "omnirange_sim/SensorModels.h"
@@ -77,7 +78,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	cv::setNumThreads(o.threads);
 	const OmniRenderer renderer(world, robot);
 
-	// 2. The frames: ODOMETRY, GT, OMNICAM, LASER at each pose.
+	// 2. The frames: ODOMETRY, GT, OMNICAM, TRUTH, LASER at each pose.
 	RawlogWriter out(o.output);
 	OdometrySimulator odometry(robot.odometry, robot.robot.seed * 31u + 1u);
 	std::mt19937_64 laser_rng(robot.robot.seed * 131u + 7u);
@@ -109,6 +110,10 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		img->image = out.externalImage(renderer.render(pose, robot.robot.seed * 1000003ull + k),
 									   name.str(), cam.jpeg_quality);
 		out.write(*img);
+
+		auto truth = floorTruth(world, cam, pose, cam.truth_rays, cam.truth_max_range);
+		truth->timestamp = stamp;
+		out.write(*truth);
 
 		auto laser = simulateLaser(world, robot.laser, pose, laser_rng);
 		laser->timestamp = stamp;

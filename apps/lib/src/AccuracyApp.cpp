@@ -45,6 +45,11 @@ eval::AccuracyResult AccuracyApp::run()
 												   a.max_difference));
 	writeFileAtomically(o_.output + "_table.md", table);
 	MRPT_LOG_INFO_STREAM("\n" << table);
+	if (r.truth.frames > 0)
+	{
+		writeFileAtomically(o_.output + "_truth.md", r.truth.table());
+		MRPT_LOG_INFO_STREAM("against the truth:\n" << r.truth.table());
+	}
 	return r;
 }
 

@@ -6,6 +6,7 @@
 #include <omnirange/io/ObservationPairer.h>
 #include <omnirange/io/SensorLabels.h>
 #include <omnirange/train/LaserComparison.h>
+#include <omnirange_eval/TruthComparison.h>
 
 #include <string>
 #include <vector>
@@ -37,6 +38,7 @@ struct AccuracyOptions
 {
 	std::string laser_label{kLaserLabel};
 	std::string omni_label{kOmniscanLabel};
+	std::string truth_label{kTruthLabel};  ///< the simulator's true boundary, where the rawlog has it
 	double max_difference{kDefaultMaxDifference};  ///< [m] pairs differing by more are excluded
 	double max_dt{kDefaultMaxPairingDt};  ///< [s] largest time between paired scans
 };
@@ -46,13 +48,15 @@ struct AccuracyResult
 	AccuracyStats stats;
 	int frames{0};  ///< scan pairs compared
 	std::string csv;  ///< every ray pair, with a header line
+	TruthStats truth;  ///< against the truth, when the rawlog holds it (truth.frames > 0)
 	/** The Table II-style table, in Markdown. */
 	std::string table(double max_difference) const;
 };
 
 /** Streams a rawlog with both scans and pairs every laser scan with the
- * omnicam scan taken with it. Throws std::runtime_error on a bad rawlog or
- * when no pair is found. */
+ * omnicam scan taken with it, and, where the rawlog holds truth scans, every
+ * omnicam scan with the truth. Throws std::runtime_error on a bad rawlog or
+ * when no laser/omnicam pair is found. */
 AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions& options,
 								Progress* progress = nullptr);
 

@@ -29,6 +29,8 @@ struct OmnicamSimParams
 	bool antialias{true};  ///< supersample pixels on edges (default true)
 	std::string format{"png"};  ///< png | jpg (default png: lossless)
 	int jpeg_quality{90};  ///< [1..100] (default 90)
+	int truth_rays{360};  ///< rays of the TRUTH scan: the rangefinder's scanlines (default 360)
+	double truth_max_range{10.0};  ///< [m] the TRUTH scan's reach (default 10)
 
 	static const OptionsTable<OmnicamSimParams>& table();
 };

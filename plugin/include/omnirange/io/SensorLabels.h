@@ -10,5 +10,8 @@ inline constexpr const char* kLaserLabel = "LASER";  ///< CObservation2DRangeSca
 inline constexpr const char* kOdometryLabel = "ODOMETRY";  ///< CObservationOdometry
 inline constexpr const char* kGroundTruthLabel = "GT";  ///< CObservationRobotPose: the simulator's true pose
 inline constexpr const char* kOmniscanLabel = "OMNISCAN";  ///< CObservation2DRangeScan: the rangefinder's scans
+/** CObservation2DRangeScan from the simulator: where the floor really ends
+ * along each scanline bearing (sim/FloorTruth.h). */
+inline constexpr const char* kTruthLabel = "TRUTH";
 
 }  // namespace omnirange
