@@ -54,8 +54,22 @@ std::array<double, 3> shadeMaterial(
 	const double p = tex.at(a / m.patch + 13.1, b / m.patch + 7.7) - 0.5;
 	const double k = 1.0 + 2.0 * (m.grain_contrast * g + m.patch_contrast * p);
 	const double j = 2.0 * m.hue_jitter * (tex.at2(a / m.grain, b / m.grain) - 0.5);
+	std::array<double, 3> rgb = m.rgb;
+	double kk = k;
+	if (m.pattern != "none")
+	{
+		const double s = m.pattern_size, w = m.pattern_width;
+		const double fa = a / s - std::floor(a / s), fb = b / s - std::floor(b / s);
+		if (m.pattern == "tiles" && (fa * s < w || fb * s < w)) return {m.pattern_rgb[2], m.pattern_rgb[1], m.pattern_rgb[0]};
+		if (m.pattern == "planks")
+		{
+			if (fb * s < w) return {m.pattern_rgb[2], m.pattern_rgb[1], m.pattern_rgb[0]};
+			// Each board its own shade: a texture sample at the board's index.
+			kk *= 1.0 + 0.25 * (tex.at(3.7 * std::floor(b / s), 5.3) - 0.5);
+		}
+	}
 	// Returned as B, G, R; the jitter shifts green against red/blue.
-	return {m.rgb[2] * k * (1 - j), m.rgb[1] * k * (1 + j), m.rgb[0] * k * (1 - j)};
+	return {rgb[2] * kk * (1 - j), rgb[1] * kk * (1 + j), rgb[0] * kk * (1 - j)};
 }
 
 }  // namespace omnirange::sim

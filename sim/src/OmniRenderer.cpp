@@ -1,5 +1,7 @@
 #include "omnirange_sim/OmniRenderer.h"
 
+#include "omnirange_sim/CameraEffects.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -122,6 +124,32 @@ void OmniRenderer::buildShadowMap()
 		cv::fillConvexPoly(shadow_, hull, cv::Scalar(0));
 	}
 	cv::GaussianBlur(shadow_, shadow_, cv::Size(5, 5), 1.2);  // soft penumbra
+	buildOcclusionMap();
+}
+
+void OmniRenderer::buildOcclusionMap()
+{
+	const auto& L = world_.light;
+	if (L.occlusion <= 0) return;
+	// Solids standing on the floor, rasterised; the distance from each floor
+	// cell to the nearest one darkens it by occlusion * exp(-distance / radius).
+	cv::Mat free(shadow_.size(), CV_8UC1, cv::Scalar(255));
+	for (const auto& s : world_.solids)
+	{
+		if (s.z0 > 0.02) continue;
+		std::vector<cv::Point> pts;
+		for (const auto& q : s.footprint.outline())
+			pts.emplace_back(static_cast<int>(std::lround((q.x - shadow_lo_.x) / shadow_res_)),
+							 static_cast<int>(std::lround((q.y - shadow_lo_.y) / shadow_res_)));
+		cv::fillPoly(free, std::vector<std::vector<cv::Point>>{pts}, cv::Scalar(0));
+	}
+	cv::Mat dist;
+	cv::distanceTransform(free, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+	occlusion_.create(dist.size(), CV_32F);
+	for (int y = 0; y < dist.rows; ++y)
+		for (int x = 0; x < dist.cols; ++x)
+			occlusion_.at<float>(y, x) = static_cast<float>(
+				1.0 - L.occlusion * std::exp(-dist.at<float>(y, x) * shadow_res_ / L.occlusion_radius));
 }
 
 double OmniRenderer::floorLight(const Vec2& p) const
@@ -132,7 +160,21 @@ double OmniRenderer::floorLight(const Vec2& p) const
 		? shadow_.at<std::uint8_t>(y, x) / 255.0
 		: 1.0;
 	const auto& L = world_.light;
-	return L.ambient + L.diffuse * std::sin(L.elevation) * lit;
+	double occluded = 1.0;
+	if (!occlusion_.empty())
+	{
+		// Bilinear: the occlusion fades over a few cells, which must not show as steps.
+		const double fx = (p.x - shadow_lo_.x) / shadow_res_, fy = (p.y - shadow_lo_.y) / shadow_res_;
+		const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+		if (x0 >= 0 && y0 >= 0 && x0 + 1 < occlusion_.cols && y0 + 1 < occlusion_.rows)
+		{
+			const double ax = fx - x0, ay = fy - y0;
+			const auto at = [&](int y, int x) { return static_cast<double>(occlusion_.at<float>(y, x)); };
+			occluded = (1 - ay) * ((1 - ax) * at(y0, x0) + ax * at(y0, x0 + 1)) +
+				ay * ((1 - ax) * at(y0 + 1, x0) + ax * at(y0 + 1, x0 + 1));
+		}
+	}
+	return (L.ambient + L.diffuse * std::sin(L.elevation) * lit) * occluded;
 }
 
 OmniRenderer::Sample OmniRenderer::shadeFloor(const Vec2& p) const
@@ -202,7 +244,7 @@ OmniRenderer::Sample OmniRenderer::trace(const Frame& f, int bin, double theta) 
 	return {{double(sky[2]), double(sky[1]), double(sky[0])}, kSky};
 }
 
-cv::Mat OmniRenderer::render(const Pose2& robot, std::uint64_t noise_seed) const
+cv::Mat OmniRenderer::render(const Pose2& robot, std::uint64_t noise_seed, int frame) const
 {
 	const auto& p = robot_.omnicam.camera;
 	const auto& pose = robot_.omnicam.pose;
@@ -269,7 +311,11 @@ cv::Mat OmniRenderer::render(const Pose2& robot, std::uint64_t noise_seed) const
 				}
 		});
 	}
-	// 3. Sensor noise, from a precomputed table at a seeded offset.
+	// 3. The optics (vignetting, blur) and the exposure of this frame.
+	const auto& fx = robot_.omnicam.effects;
+	applyOptics(img, fx, p.cx + robot_.omnicam.centre_offset_u, p.cy + robot_.omnicam.centre_offset_v, rim_rho_);
+	applyExposure(img, fx, frame);
+	// 4. Sensor noise, from a precomputed table at a seeded offset.
 	const double sigma = robot_.omnicam.noise_sigma;
 	if (sigma > 0)
 	{
@@ -285,6 +331,8 @@ cv::Mat OmniRenderer::render(const Pose2& robot, std::uint64_t noise_seed) const
 			}
 		});
 	}
+	// 5. A single-chip sensor's colour filter, demosaiced.
+	if (fx.bayer) applyBayer(img);
 	return img;
 }
 

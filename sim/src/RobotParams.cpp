@@ -19,6 +19,15 @@ const OptionsTable<OmnicamSimParams>& OmnicamSimParams::table()
 		.add("antialias", "bool", "supersample pixels on edges", [](P& p) -> auto& { return p.antialias; })
 		.add("format", "-", "png | jpg", [](P& p) -> auto& { return p.format; })
 		.add("jpeg_quality", "1..100", "JPEG quality", [](P& p) -> auto& { return p.jpeg_quality; })
+		.add("blur_sigma", "px", "Gaussian blur of the optics (0: none)", [](P& p) -> auto& { return p.effects.blur_sigma; })
+		.add("vignetting", "-", "darkening at the mirror's rim, 1 - v (r / r_rim)^2 (0: none)",
+			 [](P& p) -> auto& { return p.effects.vignetting; })
+		.add("exposure_drift", "-", "amplitude of the exposure's swing along the route (0: none)",
+			 [](P& p) -> auto& { return p.effects.exposure_drift; })
+		.add("white_balance_drift", "-", "amplitude of the red/blue balance's swing along the route (0: none)",
+			 [](P& p) -> auto& { return p.effects.white_balance_drift; })
+		.add("drift_period", "frames", "period of both swings", [](P& p) -> auto& { return p.effects.drift_period; })
+		.add("bayer", "bool", "RGGB colour filter, demosaiced", [](P& p) -> auto& { return p.effects.bayer; })
 		.add("truth_rays", "-", "rays of the TRUTH scan (where the floor really ends)", [](P& p) -> auto& { return p.truth_rays; })
 		.add("truth_max_range", "m", "the TRUTH scan's reach", [](P& p) -> auto& { return p.truth_max_range; })
 		.renamed("rim_theta", "use rim_theta_deg, in degrees");
@@ -93,6 +102,13 @@ void RobotParams::validate() const
 	require(o.noise_sigma >= 0, "[omnicam] noise_sigma must be >= 0");
 	require(o.format == "jpg" || o.format == "png", "[omnicam] format must be jpg or png");
 	require(o.jpeg_quality >= 1 && o.jpeg_quality <= 100, "[omnicam] jpeg_quality must be in 1..100");
+	const auto& fx = o.effects;
+	require(fx.blur_sigma >= 0 && fx.blur_sigma <= 20, "[omnicam] blur_sigma must be within [0, 20] px");
+	require(fx.vignetting >= 0 && fx.vignetting <= 1, "[omnicam] vignetting must be within [0, 1]");
+	require(fx.exposure_drift >= 0 && fx.exposure_drift < 1, "[omnicam] exposure_drift must be within [0, 1)");
+	require(fx.white_balance_drift >= 0 && fx.white_balance_drift < 1,
+			"[omnicam] white_balance_drift must be within [0, 1)");
+	require(fx.drift_period >= 1, "[omnicam] drift_period must be >= 1 frame");
 	require(o.truth_rays >= 2 && o.truth_rays <= 36000, "[omnicam] truth_rays must be within [2, 36000]");
 	require(o.truth_max_range > 0 && o.truth_max_range <= 1000, "[omnicam] truth_max_range must be within (0, 1000] m");
 	require(laser.rays >= 2 && laser.rays <= 100000, "[laser] rays must be within [2, 100000]");

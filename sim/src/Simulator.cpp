@@ -107,7 +107,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		img->cameraParams.setIntrinsicParamsFromValues(cam.camera.R, cam.camera.R, cam.camera.cx, cam.camera.cy);
 		std::ostringstream name;
 		name << stem << "_OMNICAM_" << std::setw(6) << std::setfill('0') << k << "." << cam.format;
-		img->image = out.externalImage(renderer.render(pose, robot.robot.seed * 1000003ull + k),
+		img->image = out.externalImage(renderer.render(pose, robot.robot.seed * 1000003ull + k, static_cast<int>(k)),
 									   name.str(), cam.jpeg_quality);
 		out.write(*img);
 

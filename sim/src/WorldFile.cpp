@@ -89,6 +89,10 @@ class Parser
 			w_.light.elevation = fl.num("elevation", w_.light.elevation);
 			w_.light.ambient = fl.num("ambient", w_.light.ambient);
 			w_.light.diffuse = fl.num("diffuse", w_.light.diffuse);
+			w_.light.occlusion = fl.num("occlusion", w_.light.occlusion);
+			w_.light.occlusion_radius = fl.num("occlusion_radius", w_.light.occlusion_radius);
+			if (!(w_.light.occlusion >= 0 && w_.light.occlusion <= 1 && w_.light.occlusion_radius > 0))
+				throw error("light occlusion must be in [0, 1] and occlusion_radius > 0 m");
 			if (!(w_.light.elevation > 0.05 && w_.light.elevation <= 1.5708))
 				throw error("light elevation must be in (0.05, pi/2] rad");
 		}
@@ -164,6 +168,12 @@ class Parser
 		m.patch = fl.has("patch") ? fl.positive("patch") : m.patch;
 		m.patch_contrast = fl.num("patch_contrast", m.patch_contrast);
 		m.hue_jitter = fl.num("hue_jitter", m.hue_jitter);
+		m.pattern = fl.has("pattern") ? fl.str("pattern") : m.pattern;
+		if (m.pattern != "none" && m.pattern != "tiles" && m.pattern != "planks")
+			throw error("pattern must be none, tiles or planks");
+		m.pattern_size = fl.has("pattern_size") ? fl.positive("pattern_size") : m.pattern_size;
+		m.pattern_width = fl.num("pattern_width", m.pattern_width);
+		if (fl.has("pattern_rgb")) m.pattern_rgb = fl.rgb("pattern_rgb");
 		const int existing = w_.findMaterial(m.name);
 		if (existing >= 0)
 			w_.materials[existing] = m;

@@ -18,6 +18,14 @@ struct Material
 	double patch{0.8};  ///< [m] size of the coarse texture
 	double patch_contrast{0.08};  ///< [-] its relative brightness swing
 	double hue_jitter{0.05};  ///< [-] per-channel swing of the fine texture
+	/** A regular pattern over the texture: none; tiles (square tiles of
+	 * pattern_size with grout lines pattern_width wide in pattern_rgb);
+	 * planks (boards pattern_size wide along the first coordinate, seams of
+	 * pattern_width, each board a little lighter or darker). */
+	std::string pattern{"none"};
+	double pattern_size{0.4};  ///< [m] tile side or board width
+	double pattern_width{0.006};  ///< [m] grout or seam width
+	std::array<double, 3> pattern_rgb{{90, 90, 90}};  ///< grout or seam colour, 0..255
 };
 
 /** The materials every world has: grass, hedge, concrete, brick, metal, wood,

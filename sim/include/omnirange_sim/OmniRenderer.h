@@ -25,7 +25,7 @@ class OmniRenderer
 
 	/** The 8-bit BGR image seen from a robot pose; the noise is drawn from
 	 * `noise_seed`, so equal inputs give equal images. */
-	cv::Mat render(const Pose2& robot, std::uint64_t noise_seed) const;
+	cv::Mat render(const Pose2& robot, std::uint64_t noise_seed, int frame = 0) const;
 
 	/** The camera model the renderer uses (with the misalignment applied). */
 	const OmniCameraModel& trueCamera() const { return cam_; }
@@ -53,6 +53,8 @@ class OmniRenderer
 	int binOf(double bearing) const;
 	void buildShadowMap();
 	double floorLight(const Vec2& p) const;
+	/** The occlusion map: 1 in the open, 1 - occlusion at a solid's foot. */
+	void buildOcclusionMap();
 
 	const World& world_;
 	RobotParams robot_;
@@ -63,6 +65,7 @@ class OmniRenderer
 	std::vector<PixelRay> rays_;  // per pixel, row-major
 	std::vector<float> noise_;  // standard normal values, a power of two long
 	cv::Mat shadow_;  // 8-bit floor light map: 255 lit, 0 in shadow
+	cv::Mat occlusion_;  // CV_32F, same grid: the floor's light factor near the foot of solids
 	Vec2 shadow_lo_;
 	double shadow_res_{0.04};
 	Vec2 sun_h_;  // horizontal unit vector towards the sun

@@ -4,6 +4,7 @@
 
 #include <omnirange/core/CameraModel.h>
 #include <omnirange/io/OptionsTable.h>
+#include <omnirange_sim/CameraEffects.h>
 
 #include <mrpt/poses/CPose3D.h>
 
@@ -29,6 +30,7 @@ struct OmnicamSimParams
 	bool antialias{true};  ///< supersample pixels on edges (default true)
 	std::string format{"png"};  ///< png | jpg (default png: lossless)
 	int jpeg_quality{90};  ///< [1..100] (default 90)
+	CameraEffectsParams effects;  ///< what a real camera adds (CameraEffects.h)
 	int truth_rays{360};  ///< rays of the TRUTH scan: the rangefinder's scanlines (default 360)
 	double truth_max_range{10.0};  ///< [m] the TRUTH scan's reach (default 10)
 

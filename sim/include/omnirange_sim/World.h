@@ -27,6 +27,11 @@ struct Light
 	double elevation{0.9};  ///< [rad] above the horizon
 	double ambient{0.45};  ///< [-] light everywhere, also in shadow
 	double diffuse{0.65};  ///< [-] extra light on a surface facing the sun
+	/** [-] how much darker the floor is right at the foot of a solid standing
+	 * on it (ambient occlusion: the soft shadow at the base of walls and
+	 * objects), fading over occlusion_radius [m]. */
+	double occlusion{0.0};
+	double occlusion_radius{0.15};  ///< [m]
 };
 
 /** A solid crossed by a 2D ray. */
