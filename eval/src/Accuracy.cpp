@@ -34,14 +34,16 @@ double AccuracyStats::excludedFraction() const
 AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions& o, Progress* progress)
 {
 	using mrpt::obs::CObservation2DRangeScan;
-	if (!(o.max_difference > 0) || !(o.max_dt >= 0))
-		throw std::invalid_argument("accuracy: max_difference must be > 0 and max_dt >= 0");
+	if (!(o.max_difference > 0) || !(o.max_dt >= 0) || o.first < 0)
+		throw std::invalid_argument("accuracy: max_difference must be > 0, max_dt and first >= 0");
 	RawlogProcessor loop(rawlog);
 	AccuracyResult r;
+	int seen = 0, truth_seen = 0;  // pairs so far, scored from `first` on
 	r.csv = "frame,laser_ray,omni_ray,bearing_rad,laser_m,omni_m,difference_m,status\n";
 	loop.onPair<CObservation2DRangeScan, CObservation2DRangeScan>(
 		o.laser_label, o.omni_label, o.max_dt,
 		[&](const CObservation2DRangeScan::Ptr& laser, const CObservation2DRangeScan::Ptr& omni) {
+			if (seen++ < o.first) return;
 			for (const RangePair& p : pairScans(*laser, *omni, o.max_difference))
 			{
 				r.stats.add(p);
@@ -55,10 +57,13 @@ AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions
 	loop.onPair<CObservation2DRangeScan, CObservation2DRangeScan>(
 		o.truth_label, o.omni_label, o.max_dt,
 		[&](const CObservation2DRangeScan::Ptr& truth, const CObservation2DRangeScan::Ptr& omni) {
-			r.truth.add(*truth, *omni);
+			if (truth_seen++ >= o.first) r.truth.add(*truth, *omni);
 		});
 	loop.run(progress);
-	if (r.frames == 0) throw std::runtime_error(loop.describeNoPair());
+	if (seen == 0) throw std::runtime_error(loop.describeNoPair());
+	if (r.frames == 0)
+		throw std::runtime_error("all " + std::to_string(seen) + " scan pairs of '" + rawlog + "' come before first = " +
+								 std::to_string(o.first));
 	return r;
 }
 

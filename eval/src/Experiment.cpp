@@ -10,6 +10,7 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 
 namespace fs = std::filesystem;
@@ -94,6 +95,8 @@ void Experiment::train()
 	RawlogTrainingOptions o;
 	o.input = dataset_;
 	o.every = c_.train_every;
+	r_.training_until = std::max(1, static_cast<int>(std::lround(c_.train_fraction * r_.simulated.frames)));
+	o.until = r_.training_until;
 	o.figures_prefix = out_ + "/fig1";
 	const RawlogTrainingResult trained = trainFromRawlog(c_.rangefinder, o);
 	trained.histogram.save(histogram_);
@@ -117,6 +120,7 @@ void Experiment::measureAccuracy()
 {
 	AccuracyOptions o;
 	o.omni_label = c_.rangefinder.sensor_label;
+	o.first = r_.training_until;  // score only what the histogram never saw
 	r_.accuracy = evaluateAccuracy(scanned_, o);
 	writeFileAtomically(out_ + "/accuracy_pairs.csv", r_.accuracy.csv);
 	writeImageAtomically(out_ + "/accuracy_histogram.png",

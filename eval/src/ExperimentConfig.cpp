@@ -24,6 +24,8 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 		.add("output", "folder", "report folder", [](C& c) -> auto& { return c.output; })
 		.add("max_frames", "-", "simulate at most this many frames (0: the whole route)", [](C& c) -> auto& { return c.max_frames; })
 		.add("train_every", "-", "train on every N-th image/scan pair", [](C& c) -> auto& { return c.train_every; })
+		.add("train_fraction", "-", "train on this first fraction of the route, score on the rest",
+			 [](C& c) -> auto& { return c.train_fraction; })
 		.add("match_tolerance", "m", "a map's occupied cell within this of a true wall counts as correct",
 			 [](C& c) -> auto& { return c.match_tolerance; })
 		.add("icp_laser_ini", "file", "icp-slam configuration for the laser", [](C& c) -> auto& { return c.icp_laser_ini; })
@@ -55,6 +57,7 @@ void validate(ExperimentConfig& c)
 {
 	require(c.max_frames >= 0, "[experiment] max_frames must be >= 0");
 	require(c.train_every >= 1, "[experiment] train_every must be >= 1");
+	require(c.train_fraction > 0 && c.train_fraction < 1, "[experiment] train_fraction must be within (0, 1)");
 	require(c.match_tolerance >= 0, "[experiment] match_tolerance must be >= 0 m");
 	if (!c.hasCheckRegion()) return;
 	std::istringstream in(c.check_region);

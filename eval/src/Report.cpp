@@ -51,6 +51,7 @@ Metrics metricsOf(const ExperimentResults& r)
 	const auto& a = r.accuracy.stats;
 	m["frames"] = r.simulated.frames;
 	m["training_pairs"] = r.training_pairs;
+	m["training_until"] = r.training_until;
 	m["omni_hit_fraction"] = r.omni_hit_fraction;
 	m["accuracy_mean_abs"] = a.meanAbs();
 	m["accuracy_mean_percent"] = a.meanPercent();

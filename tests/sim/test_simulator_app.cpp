@@ -41,7 +41,7 @@ TEST(SimulatorApp, RawlogPassesRawlogEditInfo)
 	sim.setMinLoggingLevel(mrpt::system::LVL_ERROR);
 	const auto s = sim.run(o);
 	EXPECT_EQ(s.frames, 10);
-	EXPECT_TRUE(fs::exists(test::tempDir() + "/factory10_Images/factory10_OMNICAM_000009.png"));
+	EXPECT_TRUE(fs::exists(test::tempDir() + "/factory10_Images/factory10_OMNICAM_000009.jpg"));
 	EXPECT_TRUE(fs::exists(test::tempDir() + "/factory10_truemap.png"));
 	EXPECT_TRUE(fs::exists(test::tempDir() + "/factory10_truemap.gridmap.gz"));
 

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -62,10 +63,10 @@ TEST(IniFiles, EveryKeyHasAUnitComment)
 {
 	const std::regex key(R"(^\s*([A-Za-z_]+)\s*=)");
 	const std::regex unit(R"(^\s*;.*\[[^\]]+\])");
-	for (const std::string name : {"maze.ini", "factory.ini", "robot-omnip2dx.ini", "icp-slam-laser.ini",
-								   "icp-slam-omniscan.ini", "observations2map-laser.ini", "observations2map-omniscan.ini"})
+	for (const auto& entry : std::filesystem::directory_iterator(kSource + "/ini"))
 	{
-		const auto ls = lines(kSource + "/ini/" + name);
+		const std::string name = entry.path().filename().string();
+		const auto ls = lines(entry.path().string());
 		std::string last_unit_comment;
 		bool has_unit = false;
 		for (const auto& l : ls)

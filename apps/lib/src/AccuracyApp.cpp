@@ -19,12 +19,13 @@ AccuracyApp::Options AccuracyApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the omnicam scans", false, a.omni_label, "LABEL", cmd);
 	TCLAP::ValueArg<double> max_diff("", "max-difference", "pairs differing by more are excluded [m]", false, a.max_difference, "M", cmd);
 	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between paired scans [s]", false, a.max_dt, "S", cmd);
+	TCLAP::ValueArg<int> first("", "first", "score only from this scan pair on (0-based; e.g. after the training part)", false, a.first, "N", cmd);
 	TCLAP::ValueArg<std::string> title("", "title", "title of the histogram", false, "", "TEXT", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	o.input = in.getValue(), o.output = out.getValue(), o.title = title.getValue();
 	a.laser_label = laser.getValue(), a.omni_label = omni.getValue();
-	a.max_difference = max_diff.getValue(), a.max_dt = max_dt.getValue();
+	a.max_difference = max_diff.getValue(), a.max_dt = max_dt.getValue(), a.first = first.getValue();
 	o.verbosity = verbosity.level();
 	return o;
 }

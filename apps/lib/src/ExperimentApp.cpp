@@ -2,6 +2,8 @@
 
 #include "omnirange_apps/CommandLine.h"
 
+#include <filesystem>
+
 namespace omnirange::app
 {
 ExperimentApp::Options ExperimentApp::parse(int argc, const char* const* argv)
@@ -11,9 +13,10 @@ ExperimentApp::Options ExperimentApp::parse(int argc, const char* const* argv)
 	TCLAP::UnlabeledValueArg<std::string> ini("ini", "the experiment's ini", true, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> output("o", "output", "report folder, overriding the ini's", false, "", "DIR", cmd);
 	TCLAP::ValueArg<int> frames("n", "max-frames", "simulate at most this many frames, overriding the ini", false, o.max_frames, "N", cmd);
+	TCLAP::ValueArg<std::string> robot("", "robot", "robot ini for the simulator, overriding the ini's", false, "", "INI", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.ini = ini.getValue(), o.output = output.getValue(), o.max_frames = frames.getValue();
+	o.ini = ini.getValue(), o.output = output.getValue(), o.max_frames = frames.getValue(), o.robot = robot.getValue();
 	o.verbosity = verbosity.level();
 	return o;
 }
@@ -23,6 +26,11 @@ eval::Metrics ExperimentApp::run()
 	auto config = eval::ExperimentConfig::load(o_.ini);
 	if (!o_.output.empty()) config.output = o_.output;
 	if (o_.max_frames >= 0) config.max_frames = o_.max_frames;
+	if (!o_.robot.empty())
+	{
+		if (!std::filesystem::is_regular_file(o_.robot)) throw std::runtime_error("cannot open robot ini '" + o_.robot + "'");
+		config.robot = o_.robot;
+	}
 	eval::Experiment e(config);
 	e.setMinLoggingLevel(o_.verbosity);
 	const auto m = e.run();

@@ -21,6 +21,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<int> every("", "every", "use every N-th image/scan pair", false, t.every, "N", cmd);
 	TCLAP::ValueArg<int> first("", "first", "skip the pairs before this one (0-based)", false, t.first, "N", cmd);
 	TCLAP::ValueArg<int> max_frames("n", "max-frames", "use at most this many pairs (0: all)", false, t.max_frames, "N", cmd);
+	TCLAP::ValueArg<int> until("", "until", "use only the pairs before this one (0: to the end)", false, t.until, "N", cmd);
 	TCLAP::ValueArg<int> bins("", "bins", "bins per colour channel", false, t.training.bins, "N", cmd);
 	TCLAP::ValueArg<std::string> space("", "colour-space", "RGB or HSV", false, toString(t.training.space), "SPACE", cmd);
 	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
@@ -31,7 +32,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	o.output = out.getValue(), o.ini = ini.getValue(), o.section = section.getValue();
 	t.input = in.getValue(), t.omni_label = omni.getValue(), t.laser_label = laser.getValue();
 	t.max_dt = max_dt.getValue(), t.every = every.getValue(), t.first = first.getValue();
-	t.max_frames = max_frames.getValue();
+	t.max_frames = max_frames.getValue(), t.until = until.getValue();
 	t.training.bins = bins.getValue(), t.training.space = colourSpaceFromString(space.getValue());
 	t.training.laser_margin = margin.getValue();
 	t.figures_prefix = figures.getValue(), t.figures_frame = figures_frame.getValue();

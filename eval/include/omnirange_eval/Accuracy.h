@@ -41,6 +41,9 @@ struct AccuracyOptions
 	std::string truth_label{kTruthLabel};  ///< the simulator's true boundary, where the rawlog has it
 	double max_difference{kDefaultMaxDifference};  ///< [m] pairs differing by more are excluded
 	double max_dt{kDefaultMaxPairingDt};  ///< [s] largest time between paired scans
+	/** Score only from this laser/omnicam pair on (0: all): the frames after
+	 * the part of the route the histogram was trained on. */
+	int first{0};
 };
 
 struct AccuracyResult

@@ -41,6 +41,7 @@ struct ExperimentResults
 {
 	sim::SimSummary simulated;
 	int training_pairs{0};
+	int training_until{0};  ///< pairs before this one trained on, the rest scored
 	double omni_hit_fraction{0};
 	AccuracyResult accuracy;
 	std::vector<SensorMaps> sensors;  ///< the laser, then the omnicam

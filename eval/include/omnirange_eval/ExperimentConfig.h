@@ -20,6 +20,9 @@ struct ExperimentConfig
 	std::string map_laser_ini, map_omni_ini;  ///< observations2map configurations
 	int max_frames{0};  ///< 0: the whole route
 	int train_every{3};  ///< train on every N-th image/scan pair
+	/** Train on the route's first part, this fraction of its frames, and
+	 * score on the rest (never on what was trained on). */
+	double train_fraction{0.2};
 	double match_tolerance{0.10};  ///< [m] a built map's cell within this of a true wall is correct
 	/** "x y w d" [m]: a box whose occupied cells the report measures (empty: none). */
 	std::string check_region;

@@ -11,7 +11,7 @@ namespace omnirange
 void RawlogTrainingOptions::validate() const
 {
 	require(every >= 1, "every must be >= 1");
-	require(first >= 0 && max_frames >= 0, "first and max_frames must be >= 0");
+	require(first >= 0 && max_frames >= 0 && until >= 0, "first, until and max_frames must be >= 0");
 	require(max_dt >= 0, "max_dt must be >= 0 s");
 	require(figures_frame >= 0, "figures_frame must be >= 0");
 	require(training.bins >= 1 && training.bins <= 256, "bins must be within [1, 256]");
@@ -35,6 +35,7 @@ RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTr
 		o.omni_label, o.laser_label, o.max_dt,
 		[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& laser) {
 			const int k = r.pairs++;
+			if (o.until > 0 && k >= o.until) return;  // keep counting the pairs
 			if (k < o.first || (k - o.first) % o.every != 0) return;
 			if (o.max_frames > 0 && r.used >= o.max_frames) return loop.stop();
 			const TrainingFrame f = trainer.add(decodeImage(*image, rp.camera), *laser);

@@ -23,6 +23,7 @@ struct RawlogTrainingOptions
 	int every{1};  ///< use every N-th pair
 	int first{0};  ///< skip the pairs before this one
 	int max_frames{0};  ///< use at most this many pairs (0: all)
+	int until{0};  ///< use only pairs before this one (0: to the end): train on a route's first part
 	TrainingParams training;
 	/** If not empty: write PREFIX_birdseye.png, PREFIX_laser.png and
 	 * PREFIX_fused.png (paper Fig. 1) for the used pair `figures_frame`. */
