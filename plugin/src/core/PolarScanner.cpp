@@ -30,6 +30,23 @@ std::string toString(RayStatus s)
 	throw std::logic_error("unknown RayStatus");
 }
 
+std::string toString(BoundaryModel m)
+{
+	switch (m)
+	{
+		case BoundaryModel::Midpoint: return "midpoint";
+		case BoundaryModel::Subpixel: return "subpixel";
+	}
+	throw std::logic_error("unknown BoundaryModel");
+}
+
+BoundaryModel boundaryModelFromString(const std::string& name)
+{
+	if (name == "midpoint") return BoundaryModel::Midpoint;
+	if (name == "subpixel") return BoundaryModel::Subpixel;
+	throw std::invalid_argument("boundary_model must be 'midpoint' or 'subpixel', not '" + name + "'");
+}
+
 std::string toString(HitSearch::Status s)
 {
 	switch (s)
@@ -57,6 +74,10 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 			 "non-free pixel; 0 is exact for hard edges, blurred edges want about +0.5 (omnirange-calibrate "
 			 "suggests a value), within [-1, 1]",
 			 [](P& p) -> auto& { return p.boundary_offset; })
+		.addEnum("boundary_model",
+				 "midpoint: halfway between the last free and the first non-free pixel (the paper's); subpixel: "
+				 "the floor fractions of the mixed pixels around it, summed (docs/method.md)",
+				 [](P& p) -> auto& { return p.boundary_model; }, boundaryModelFromString)
 		.add("N", "px", "false-positive filter: pixels behind a candidate that must be non-free (>= 1)",
 			 [](P& p) -> auto& { return p.filter.N; })
 		.add("K", "px", "false-negative filter: longest free run negated inside that window (>= 0)",
@@ -86,7 +107,7 @@ double scanlineBearing(int i, int S)
 }
 
 PolarScanner::PolarScanner(const OmniCameraModel& cam, const PolarScannerParams& p)
-	: p_(p), width_(cam.params().image_width), height_(cam.params().image_height)
+	: p_(p), width_(cam.params().image_width), height_(cam.params().image_height), camera_(cam)
 {
 	p_.validate(cam);
 	max_rho_ = cam.rhoFromDistance(p_.max_range);
@@ -124,6 +145,7 @@ PolarScanner::PolarScanner(const OmniCameraModel& cam, const PolarScannerParams&
 			const double range = cam.distanceFromRho(mid);
 			pixel_.push_back(static_cast<std::int32_t>(idx));
 			mid_rho_.push_back(static_cast<float>(mid));
+			rho_.push_back(static_cast<float>(rho));
 			mid_range_.push_back(static_cast<float>(range));
 			if (past_max < 0 && range > p_.max_range) past_max = line.count;
 			++line.count;
@@ -171,14 +193,28 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 			continue;
 		}
 		const int hit = ray.search.index;
+		float range = mid_range_[line.first + hit];
 		ray.hit_rho = mid_rho_[line.first + hit];
-		const float range = mid_range_[line.first + hit];
+		if (p_.boundary_model == BoundaryModel::Subpixel && hit > 0)
+		{
+			ray.hit_rho = static_cast<float>(rhoAt(line, refineBoundary(data, pix, line.count, hit)) + p_.boundary_offset);
+			range = static_cast<float>(camera_.distanceFromRho(ray.hit_rho));
+		}
 		// The first pixel is at the base: the obstacle may start inside it.
 		const bool too_close = hit == 0 || range < p_.min_range;
 		ray.status = too_close ? RayStatus::TooClose : RayStatus::Hit;
 		ray.range = too_close ? static_cast<float>(p_.min_range) : range;
 	}
 	return rays;
+}
+
+double PolarScanner::rhoAt(const Scanline& line, double k) const
+{
+	// Pixel centres are not evenly spaced along a digital ray: interpolate theirs.
+	const int k0 = std::clamp(static_cast<int>(std::floor(k)), 0, line.count - 2);
+	const double f = k - k0;
+	const float* r = rho_.data() + line.first;
+	return r[k0] + f * (r[k0 + 1] - r[k0]);
 }
 
 std::vector<std::int32_t> PolarScanner::scanlinePixels(int s) const

@@ -3,6 +3,7 @@
 // outwards, each searched for the floor's end with the N/K filters, and the
 // hit pixel turned into metres with the camera model (eq. (6)).
 
+#include <omnirange/core/BoundaryRefinement.h>
 #include <omnirange/core/CameraModel.h>
 #include <omnirange/core/HitFilter.h>
 #include <omnirange/core/PixelClassifier.h>
@@ -27,6 +28,9 @@ enum class RayStatus : std::uint8_t
 	Outlier  ///< rejected by the outlier filter (range kept, not valid)
 };
 std::string toString(RayStatus s);
+std::string toString(BoundaryModel m);
+/** "midpoint" or "subpixel"; throws std::invalid_argument otherwise. */
+BoundaryModel boundaryModelFromString(const std::string& name);
 
 /** One ray of a scan. */
 struct Ray
@@ -57,6 +61,8 @@ struct PolarScannerParams
 	 * the last free and the first non-free pixel (default 0: exact for hard
 	 * edges; blurred edges want about +0.5, see omnirange-calibrate). */
 	double boundary_offset{0.0};
+	/** How the edge is placed between pixels (BoundaryRefinement.h). */
+	BoundaryModel boundary_model{BoundaryModel::Midpoint};
 	HitFilterParams filter{};
 
 	static const OptionsTable<PolarScannerParams>& table();
@@ -93,6 +99,9 @@ class PolarScanner
 		int last_candidate;  // last pixel whose range is within max range
 	};
 
+	/** Image radius [px] at fractional pixel index k of a scanline. */
+	double rhoAt(const Scanline& line, double k) const;
+
 	PolarScannerParams p_;
 	int width_, height_;
 	double max_rho_{0}, scan_radius_{0};
@@ -103,6 +112,8 @@ class PolarScanner
 	// midpoint between it and the pixel before it (the boundary lies there).
 	std::vector<float> mid_range_;
 	std::vector<float> mid_rho_;  // [px] that midpoint's image radius
+	std::vector<float> rho_;  // [px] each pixel's own image radius
+	OmniCameraModel camera_;
 };
 
 }  // namespace omnirange
