@@ -95,6 +95,8 @@ void Experiment::train()
 	RawlogTrainingOptions o;
 	o.input = dataset_;
 	o.every = c_.train_every;
+	o.training.space = c_.colour_space;
+	o.training.bins = c_.bins;
 	r_.training_until = std::max(1, static_cast<int>(std::lround(c_.train_fraction * r_.simulated.frames)));
 	o.until = r_.training_until;
 	o.figures_prefix = out_ + "/fig1";

@@ -26,6 +26,9 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 		.add("train_every", "-", "train on every N-th image/scan pair", [](C& c) -> auto& { return c.train_every; })
 		.add("train_fraction", "-", "train on this first fraction of the route, score on the rest",
 			 [](C& c) -> auto& { return c.train_fraction; })
+		.addEnum("colour_space", "the histogram's colour space: RGB (the paper's), HSV or CHROMA",
+				 [](C& c) -> auto& { return c.colour_space; }, colourSpaceFromString)
+		.add("bins", "-", "histogram bins per colour channel", [](C& c) -> auto& { return c.bins; })
 		.add("match_tolerance", "m", "a map's occupied cell within this of a true wall counts as correct",
 			 [](C& c) -> auto& { return c.match_tolerance; })
 		.add("icp_laser_ini", "file", "icp-slam configuration for the laser", [](C& c) -> auto& { return c.icp_laser_ini; })
@@ -58,6 +61,7 @@ void validate(ExperimentConfig& c)
 	require(c.max_frames >= 0, "[experiment] max_frames must be >= 0");
 	require(c.train_every >= 1, "[experiment] train_every must be >= 1");
 	require(c.train_fraction > 0 && c.train_fraction < 1, "[experiment] train_fraction must be within (0, 1)");
+	require(c.bins >= 1 && c.bins <= 64, "[experiment] bins must be within [1, 64]");
 	require(c.match_tolerance >= 0, "[experiment] match_tolerance must be >= 0 m");
 	if (!c.hasCheckRegion()) return;
 	std::istringstream in(c.check_region);

@@ -3,6 +3,8 @@
 #include <omnirange/core/FreeSpaceClassifier.h>
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <opencv2/core.hpp>
 
 #include <cstdio>
@@ -174,4 +176,22 @@ TEST(ColourHistogram, SaveFailureLeavesTheOldFileWhole)
 	EXPECT_THROW(sample().save(tempPath("missing_dir/x.hist")), std::runtime_error);
 	EXPECT_EQ(readAll(path), before);
 	std::remove(path.c_str());
+}
+
+TEST(ColourSpace, ChromaKeepsAColourThroughAnExposureChange)
+{
+	const ColourBinner chroma(ColourSpace::Chroma, 13), rgb(ColourSpace::RGB, 13);
+	const std::uint8_t floor[3] = {60, 140, 70};  // B, G, R
+	const std::uint8_t brighter[3] = {69, 161, 81};  // the same, 15 % more light
+	const std::uint8_t wall[3] = {40, 60, 150};
+	EXPECT_EQ(chroma.binOf(floor), chroma.binOf(brighter));
+	EXPECT_NE(rgb.binOf(floor), rgb.binOf(brighter));
+	EXPECT_NE(chroma.binOf(floor), chroma.binOf(wall));
+	std::uint8_t c[3];
+	bgrToChroma(floor, c);
+	EXPECT_NEAR(c[0], 255.0 * 70 / 270, 1.0);  // r
+	EXPECT_NEAR(c[1], 255.0 * 140 / 270, 1.0);  // g
+	EXPECT_NEAR(c[2], 255.0 * std::log1p(90) / std::log(256.0), 1.0);
+	EXPECT_EQ(colourSpaceFromString("chroma"), ColourSpace::Chroma);
+	EXPECT_EQ(toString(ColourSpace::Chroma), "CHROMA");
 }

@@ -23,6 +23,8 @@ struct ExperimentConfig
 	/** Train on the route's first part, this fraction of its frames, and
 	 * score on the rest (never on what was trained on). */
 	double train_fraction{0.2};
+	ColourSpace colour_space{ColourSpace::RGB};  ///< of the trained histogram
+	int bins{ColourHistogram::kDefaultBins};  ///< per colour channel
 	double match_tolerance{0.10};  ///< [m] a built map's cell within this of a true wall is correct
 	/** "x y w d" [m]: a box whose occupied cells the report measures (empty: none). */
 	std::string check_region;

@@ -108,7 +108,7 @@ ColourHistogram ColourHistogram::deserialize(
 			std::to_string(kFileVersion) + ")");
 	const auto space = getLE(in, 12, 4);
 	const auto bins = getLE(in, 16, 4);
-	if (space > static_cast<std::uint32_t>(ColourSpace::HSV))
+	if (space > static_cast<std::uint32_t>(ColourSpace::Chroma))
 		throw fail("unknown colour space code " + std::to_string(space));
 	if (bins < 1 || bins > 256)
 		throw fail("impossible bin count " + std::to_string(bins));

@@ -1,6 +1,8 @@
 #include "omnirange/core/ColourSpace.h"
 
 #include <algorithm>
+#include <cmath>
+#include <array>
 #include <cctype>
 #include <stdexcept>
 
@@ -12,6 +14,7 @@ std::string toString(ColourSpace s)
 	{
 		case ColourSpace::RGB: return "RGB";
 		case ColourSpace::HSV: return "HSV";
+		case ColourSpace::Chroma: return "CHROMA";
 	}
 	throw std::logic_error("unknown ColourSpace");
 }
@@ -24,8 +27,8 @@ ColourSpace colourSpaceFromString(const std::string& name)
 	});
 	if (n == "RGB") return ColourSpace::RGB;
 	if (n == "HSV") return ColourSpace::HSV;
-	throw std::invalid_argument(
-		"colour space must be RGB or HSV, not '" + name + "'");
+	if (n == "CHROMA") return ColourSpace::Chroma;
+	throw std::invalid_argument("colour space must be RGB, HSV or CHROMA, not '" + name + "'");
 }
 
 void bgrToHsv(const std::uint8_t* bgr, std::uint8_t* hsv)
@@ -49,6 +52,42 @@ void bgrToHsv(const std::uint8_t* bgr, std::uint8_t* hsv)
 	else
 		h6 = (r - g) + 4 * delta;
 	hsv[0] = static_cast<std::uint8_t>((h6 * 256 / (6 * delta)) & 0xFF);
+}
+
+namespace
+{
+/** 255 log(1 + m) / log(256) for every mean brightness m, and 255 * 256 / s
+ * for every channel sum s (so a chromaticity is one multiply and a shift). */
+struct ChromaTables
+{
+	std::array<std::uint8_t, 256> log_mean{};
+	std::array<std::uint32_t, 766> inverse_sum{};
+	ChromaTables()
+	{
+		for (int m = 0; m < 256; ++m)
+			log_mean[m] = static_cast<std::uint8_t>(std::lround(255.0 * std::log1p(m) / std::log(256.0)));
+		for (int s = 1; s < 766; ++s) inverse_sum[s] = static_cast<std::uint32_t>(255u * 65536u / s);
+	}
+};
+const ChromaTables& chromaTables()
+{
+	static const ChromaTables t;
+	return t;
+}
+}  // namespace
+
+void bgrToChroma(const std::uint8_t* bgr, std::uint8_t* c)
+{
+	const auto& t = chromaTables();
+	const int sum = bgr[0] + bgr[1] + bgr[2];
+	if (sum == 0)
+	{
+		c[0] = c[1] = 85, c[2] = 0;  // black: grey chromaticity, no brightness
+		return;
+	}
+	c[0] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255, (bgr[2] * t.inverse_sum[sum]) >> 16));
+	c[1] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255, (bgr[1] * t.inverse_sum[sum]) >> 16));
+	c[2] = t.log_mean[sum / 3];
 }
 
 ColourBinner::ColourBinner(ColourSpace space, int bins)

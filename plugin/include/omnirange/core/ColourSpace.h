@@ -11,15 +11,22 @@ namespace omnirange
 enum class ColourSpace : std::uint32_t
 {
 	RGB = 0,
-	HSV = 1  ///< hue over the full 0..255 range, saturation, value
+	HSV = 1,  ///< hue over the full 0..255 range, saturation, value
+	/** rg chromaticity (R and G over R+G+B) and log brightness: a change of
+	 * exposure or of light's strength moves a colour along the brightness
+	 * channel only, and by a fraction of a bin for modest changes. */
+	Chroma = 2
 };
 
 std::string toString(ColourSpace s);
-/** "RGB" or "HSV" (any case); throws std::invalid_argument otherwise. */
+/** "RGB", "HSV" or "CHROMA" (any case); throws std::invalid_argument otherwise. */
 ColourSpace colourSpaceFromString(const std::string& name);
 
 /** 8-bit HSV with hue spanning 0..255 (not OpenCV's 0..179). */
 void bgrToHsv(const std::uint8_t* bgr, std::uint8_t* hsv);
+
+/** r = 255 R / (R+G+B), g = 255 G / (R+G+B), and 255 log(1 + mean) / log(256). */
+void bgrToChroma(const std::uint8_t* bgr, std::uint8_t* chroma);
 
 /** Maps a BGR pixel to its histogram bin, through per-channel lookup tables. */
 class ColourBinner
@@ -41,7 +48,10 @@ class ColourBinner
 		if (space_ == ColourSpace::RGB)
 			return lut0_[bgr[2]] + lut1_[bgr[1]] + lut2_[bgr[0]];
 		std::uint8_t c[3];
-		bgrToHsv(bgr, c);
+		if (space_ == ColourSpace::HSV)
+			bgrToHsv(bgr, c);
+		else
+			bgrToChroma(bgr, c);
 		return lut0_[c[0]] + lut1_[c[1]] + lut2_[c[2]];
 	}
 
