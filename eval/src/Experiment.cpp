@@ -97,12 +97,13 @@ void Experiment::train()
 	o.every = c_.train_every;
 	o.training.space = c_.colour_space;
 	o.training.bins = c_.bins;
+	o.training.obstacle_band = c_.obstacle_band;
 	r_.training_until = std::max(1, static_cast<int>(std::lround(c_.train_fraction * r_.simulated.frames)));
 	o.until = r_.training_until;
 	o.figures_prefix = out_ + "/fig1";
 	const RawlogTrainingResult trained = trainFromRawlog(c_.rangefinder, o);
-	trained.histogram.save(histogram_);
-	histogram_data_ = trained.histogram;
+	trained.model.save(histogram_);
+	histogram_data_ = trained.model;
 	r_.training_pairs = trained.used;
 }
 

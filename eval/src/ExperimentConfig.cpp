@@ -29,6 +29,8 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 		.addEnum("colour_space", "the histogram's colour space: RGB (the paper's), HSV or CHROMA",
 				 [](C& c) -> auto& { return c.colour_space; }, colourSpaceFromString)
 		.add("bins", "-", "histogram bins per colour channel", [](C& c) -> auto& { return c.bins; })
+		.add("obstacle_band", "m", "obstacle colours counted this far beyond the laser's hits (0: floor only)",
+			 [](C& c) -> auto& { return c.obstacle_band; })
 		.add("match_tolerance", "m", "a map's occupied cell within this of a true wall counts as correct",
 			 [](C& c) -> auto& { return c.match_tolerance; })
 		.add("icp_laser_ini", "file", "icp-slam configuration for the laser", [](C& c) -> auto& { return c.icp_laser_ini; })

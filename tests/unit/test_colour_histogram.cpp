@@ -1,5 +1,6 @@
 // Colour histogram: counting, eq. (4)/(5), the colour spaces, and the file.
 #include <omnirange/core/ColourHistogram.h>
+#include <omnirange/core/ColourModel.h>
 #include <omnirange/core/FreeSpaceClassifier.h>
 
 #include <gtest/gtest.h>
@@ -194,4 +195,35 @@ TEST(ColourSpace, ChromaKeepsAColourThroughAnExposureChange)
 	EXPECT_NEAR(c[2], 255.0 * std::log1p(90) / std::log(256.0), 1.0);
 	EXPECT_EQ(colourSpaceFromString("chroma"), ColourSpace::Chroma);
 	EXPECT_EQ(toString(ColourSpace::Chroma), "CHROMA");
+}
+
+TEST(ColourModel, AColourTheObstaclesExplainBetterIsNotFree)
+{
+	const std::uint8_t green[3] = {60, 140, 70}, grey[3] = {128, 128, 128};
+	ColourHistogram obstacles;
+	for (int i = 0; i < 10; ++i) obstacles.addPixel(grey);
+	const ColourModel model(sample(), obstacles);  // the floor: 90 % green, 10 % grey
+	EXPECT_TRUE(model.hasObstacles());
+	const FreeSpaceClassifier one_class(model, 0.05, 0.0), two_class(model, 0.05, 1.0);
+	EXPECT_TRUE(one_class.isFree(grey));  // the paper's model: P(grey | floor) = 0.1 >= 0.05
+	EXPECT_FALSE(two_class.isFree(grey));  // but P(grey | obstacle) = 1 > 0.1
+	EXPECT_TRUE(two_class.isFree(green));
+	EXPECT_THROW(FreeSpaceClassifier(model, 0.05, -1.0), std::invalid_argument);
+	EXPECT_THROW(ColourModel(sample(), ColourHistogram(ColourSpace::HSV)), std::invalid_argument);
+}
+
+TEST(ColourModel, SavesBothHistogramsAndReadsAPlainHistogramFile)
+{
+	const std::uint8_t grey[3] = {128, 128, 128};
+	ColourHistogram obstacles;
+	obstacles.addPixel(grey);
+	const std::string both = tempPath("model.hist"), plain = tempPath("plain.hist");
+	ColourModel(sample(), obstacles).save(both);
+	sample().save(plain);
+	const ColourModel a = ColourModel::load(both), b = ColourModel::load(plain);
+	EXPECT_EQ(a.floor.total(), sample().total());
+	EXPECT_EQ(a.obstacles.total(), 1u);
+	EXPECT_EQ(b.floor.total(), sample().total());
+	EXPECT_FALSE(b.hasObstacles());
+	EXPECT_THROW(ColourModel::load("/dev/zero"), std::runtime_error);  // not a regular file: refused, not read forever
 }

@@ -38,7 +38,7 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 MirrorCalibration CalibrateApp::run()
 {
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
-	const Rangefinder rf(params, ColourHistogram::load(o_.histogram));
+	const Rangefinder rf(params, ColourModel::load(o_.histogram));
 	Progress progress("objects read");
 	const MirrorCalibration c =
 		calibrateMirror(rf, o_.calibration, progressAt(o_.verbosity, progress));

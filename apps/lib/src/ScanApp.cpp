@@ -36,7 +36,7 @@ ScanApp::ScanApp(Options o) : mrpt::system::COutputLogger("omnirange-scan"), o_(
 RawlogScanSummary ScanApp::run()
 {
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
-	const Rangefinder rf(params, ColourHistogram::load(o_.histogram));
+	const Rangefinder rf(params, ColourModel::load(o_.histogram));
 	Progress progress("objects read");
 	const auto s = scanRawlog(rf, o_.scan, progressAt(o_.verbosity, progress));
 	MRPT_LOG_INFO_FMT("%zu images scanned, %.1f %% of rays hit, %zu objects -> %s", s.images,

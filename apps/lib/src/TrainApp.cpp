@@ -25,6 +25,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<int> bins("", "bins", "bins per colour channel", false, t.training.bins, "N", cmd);
 	TCLAP::ValueArg<std::string> space("", "colour-space", "RGB or HSV", false, toString(t.training.space), "SPACE", cmd);
 	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
+	TCLAP::ValueArg<double> band("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only", false, t.training.obstacle_band, "M", cmd);
 	TCLAP::ValueArg<std::string> figures("", "figures", "write PREFIX_birdseye.png, PREFIX_laser.png, PREFIX_fused.png (paper Fig. 1)", false, "", "PREFIX", cmd);
 	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
 	VerbosityArgs verbosity(cmd);
@@ -34,7 +35,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	t.max_dt = max_dt.getValue(), t.every = every.getValue(), t.first = first.getValue();
 	t.max_frames = max_frames.getValue(), t.until = until.getValue();
 	t.training.bins = bins.getValue(), t.training.space = colourSpaceFromString(space.getValue());
-	t.training.laser_margin = margin.getValue();
+	t.training.laser_margin = margin.getValue(), t.training.obstacle_band = band.getValue();
 	t.figures_prefix = figures.getValue(), t.figures_frame = figures_frame.getValue();
 	o.verbosity = verbosity.level();
 	return o;
@@ -51,9 +52,9 @@ RawlogTrainingResult TrainApp::run()
 	Progress progress("objects read");
 	const RawlogTrainingResult r =
 		trainFromRawlog(params, o_.training, progressAt(o_.verbosity, progress));
-	r.histogram.save(o_.output);
-	MRPT_LOG_INFO_FMT("trained on %d image/scan pairs (of %d), %zu floor pixels -> %s", r.used, r.pairs, r.pixels,
-					  o_.output.c_str());
+	r.model.save(o_.output);
+	MRPT_LOG_INFO_FMT("trained on %d image/scan pairs (of %d), %zu floor and %zu obstacle pixels -> %s", r.used,
+					  r.pairs, r.pixels, r.obstacle_pixels, o_.output.c_str());
 	return r;
 }
 

@@ -76,7 +76,7 @@ class Experiment : public mrpt::system::COutputLogger
 
 	ExperimentConfig c_;
 	std::string out_, dataset_, histogram_, scanned_;  // absolute paths
-	ColourHistogram histogram_data_;
+	ColourModel histogram_data_;
 	mrpt::maps::COccupancyGridMap2D truth_;
 	std::vector<StampedPose> gt_path_;
 	ExperimentResults r_;

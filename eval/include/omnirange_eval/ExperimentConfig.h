@@ -3,6 +3,7 @@
 // configurations and the report folder; [rangefinder] the method's keys.
 
 #include <omnirange/core/Rangefinder.h>
+#include <omnirange/train/HistogramTrainer.h>
 #include <omnirange/io/OptionsTable.h>
 
 #include <array>
@@ -25,6 +26,8 @@ struct ExperimentConfig
 	double train_fraction{0.2};
 	ColourSpace colour_space{ColourSpace::RGB};  ///< of the trained histogram
 	int bins{ColourHistogram::kDefaultBins};  ///< per colour channel
+	/** [m] obstacle colours counted this far beyond the laser's hits (0: floor only). */
+	double obstacle_band{TrainingParams{}.obstacle_band};
 	double match_tolerance{0.10};  ///< [m] a built map's cell within this of a true wall is correct
 	/** "x y w d" [m]: a box whose occupied cells the report measures (empty: none). */
 	std::string check_region;

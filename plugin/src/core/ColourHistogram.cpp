@@ -5,6 +5,7 @@
 #include <opencv2/core.hpp>
 #include <zlib.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -92,6 +93,16 @@ std::string ColourHistogram::serialize() const
 	return out;
 }
 
+std::size_t ColourHistogram::serializedSize(const std::string& in, const std::string& what)
+{
+	if (in.size() < kHeaderBytes + 4 || in.compare(0, sizeof(kMagic), kMagic, sizeof(kMagic)) != 0)
+		throw std::runtime_error("histogram file '" + what + "': not an omnirange histogram file");
+	const auto bins = getLE(in, 16, 4);
+	if (bins < 1 || bins > 256)
+		throw std::runtime_error("histogram file '" + what + "': impossible bin count " + std::to_string(bins));
+	return kHeaderBytes + 8 * bins * bins * bins + 4;
+}
+
 ColourHistogram ColourHistogram::deserialize(
 	const std::string& in, const std::string& what)
 {
@@ -136,6 +147,7 @@ void ColourHistogram::save(const std::string& path) const
 
 ColourHistogram ColourHistogram::load(const std::string& path)
 {
+	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open histogram file '" + path + "'");
 	std::ifstream f(path, std::ios::binary);
 	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "'");
 	std::ostringstream ss;

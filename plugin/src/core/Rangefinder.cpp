@@ -16,6 +16,10 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 		.include(PolarScannerParams::table(), [](P& p) -> auto& { return p.scanner; })
 		.add("threshold", "-", "Theta of eq. (5): a colour is free floor when P(colour) >= Theta, in [0, 1]",
 			 [](P& p) -> auto& { return p.threshold; })
+		.add("obstacle_ratio", "-",
+			 "with obstacle colours in the histogram file: free also needs P(c|floor) >= obstacle_ratio * "
+			 "P(c|obstacle); 0: the paper's one-class model",
+			 [](P& p) -> auto& { return p.obstacle_ratio; })
 		.include(OutlierFilterParams::table(), [](P& p) -> auto& { return p.outliers; })
 		.add("sensor_label", "-", "sensorLabel of the produced CObservation2DRangeScan",
 			 [](P& p) -> auto& { return p.sensor_label; })
@@ -49,6 +53,7 @@ void RangefinderParams::validate() const
 	scanner.validate(OmniCameraModel(camera));
 	outliers.validate();
 	require(threshold >= 0.0 && threshold <= 1.0, "threshold (Theta) must be within [0, 1]");
+	require(obstacle_ratio >= 0.0 && obstacle_ratio <= 1000.0, "obstacle_ratio must be within [0, 1000]");
 	require(!sensor_label.empty(), "sensor_label is empty");
 	require(std_error >= 0, "std_error must be >= 0 m");
 }
@@ -61,11 +66,10 @@ int RangeScan::count(RayStatus s) const
 		rays.begin(), rays.end(), [s](const Ray& r) { return r.status == s; }));
 }
 
-Rangefinder::Rangefinder(
-	const RangefinderParams& params, const ColourHistogram& histogram)
+Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& colours)
 	: p_((params.validate(), params)),
 	  camera_(p_.camera),
-	  classifier_(histogram, p_.threshold),
+	  classifier_(colours, p_.threshold, p_.obstacle_ratio),
 	  scanner_(camera_, p_.scanner)
 {
 }

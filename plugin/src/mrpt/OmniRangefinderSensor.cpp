@@ -41,7 +41,7 @@ void COmniRangefinderSensor::loadConfig_sensorSpecific(
 
 void COmniRangefinderSensor::initialize()
 {
-	rangefinder_ = std::make_unique<Rangefinder>(params_, ColourHistogram::load(histogram_file_));
+	rangefinder_ = std::make_unique<Rangefinder>(params_, ColourModel::load(histogram_file_));
 	MRPT_LOG_INFO_STREAM("histogram " << histogram_file_ << ", rangefinder options:\n" << params_.asIni());
 	camera_->initialize();
 }

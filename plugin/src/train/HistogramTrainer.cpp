@@ -13,9 +13,11 @@ HistogramTrainer::HistogramTrainer(const OmniCameraModel& camera, const mrpt::po
 	  view_range_(view_range),
 	  p_(p),
 	  view_(camera, 2 * static_cast<int>(std::ceil(view_range / p.resolution)) + 1, p.resolution),
-	  hist_(p.space, p.bins)
+	  hist_(p.space, p.bins),
+	  obstacles_(p.space, p.bins)
 {
-	if (!(view_range > 0) || !(p.resolution > 0) || !(p.laser_margin >= 0) || !(base_range >= 0))
+	if (!(view_range > 0) || !(p.resolution > 0) || !(p.laser_margin >= 0) || !(base_range >= 0) ||
+		!(p.obstacle_band >= 0))
 		throw std::invalid_argument("training: view range and resolution must be > 0, margins >= 0");
 	// Pixels between the base and view_range: a ring around the centre.
 	const int n = view_.size();
@@ -25,7 +27,7 @@ HistogramTrainer::HistogramTrainer(const OmniCameraModel& camera, const mrpt::po
 	cv::circle(base_mask_, c, static_cast<int>(std::ceil(base_range / p.resolution)), cv::Scalar(0), cv::FILLED);
 }
 
-cv::Mat HistogramTrainer::laserFreeMask(const mrpt::obs::CObservation2DRangeScan& laser) const
+cv::Mat HistogramTrainer::laserFreeMask(const mrpt::obs::CObservation2DRangeScan& laser, cv::Mat& obstacle) const
 {
 	// The laser's pose in the camera's frame: both poses are on the robot.
 	const mrpt::poses::CPose3D rel = laser.sensorPose - camera_pose_;
@@ -38,6 +40,7 @@ cv::Mat HistogramTrainer::laserFreeMask(const mrpt::obs::CObservation2DRangeScan
 	const double reach = 2.0 * view_range_;  // invalid rays: free beyond the view
 	std::vector<cv::Point> poly{toPx(rel.x(), rel.y())};
 	std::vector<cv::Point> hits;
+	obstacle = cv::Mat::zeros(n, n, CV_8UC1);
 	for (std::size_t i = 0; i < laser.getScanSize(); ++i)
 	{
 		const bool valid = laser.getScanRangeValidity(i);
@@ -46,7 +49,16 @@ cv::Mat HistogramTrainer::laserFreeMask(const mrpt::obs::CObservation2DRangeScan
 		mrpt::math::TPoint3D local(r * std::cos(a), r * std::sin(a), 0), inCam;
 		rel.composePoint(local, inCam);
 		poly.push_back(toPx(inCam.x, inCam.y));
-		if (valid) hits.push_back(poly.back());
+		if (!valid) continue;
+		hits.push_back(poly.back());
+		// What stands at the hit continues away from the camera in the
+		// bird's-eye view (a wall's face projects onto the floor beyond its foot).
+		const double len = std::hypot(inCam.x, inCam.y);
+		if (p_.obstacle_band <= 0 || len <= 0 || len > view_range_) continue;
+		const double ux = inCam.x / len, uy = inCam.y / len;
+		const double a0 = p_.laser_margin, a1 = p_.laser_margin + p_.obstacle_band;
+		cv::line(obstacle, toPx(inCam.x + ux * a0, inCam.y + uy * a0), toPx(inCam.x + ux * a1, inCam.y + uy * a1),
+				 cv::Scalar(255), 2);
 	}
 	cv::Mat mask = cv::Mat::zeros(n, n, CV_8UC1);
 	cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{poly}, cv::Scalar(255));
@@ -61,13 +73,21 @@ TrainingFrame HistogramTrainer::add(const cv::Mat& omni, const mrpt::obs::CObser
 {
 	TrainingFrame f;
 	f.birds_eye = view_.render(omni);  // (a)
-	f.laser_free = laserFreeMask(laser);  // (b)
+	cv::Mat obstacle;
+	f.laser_free = laserFreeMask(laser, obstacle);  // (b)
 	cv::Mat use;
 	cv::bitwise_and(f.laser_free, base_mask_, use);
 	f.fused = cv::Mat::zeros(f.birds_eye.size(), CV_8UC3);  // (c)
 	f.birds_eye.copyTo(f.fused, use);
 	hist_.addImage(f.birds_eye, use);
 	f.pixels = static_cast<std::size_t>(cv::countNonZero(use));
+	// Obstacle pixels: never where the laser saw floor, nor on the base.
+	cv::Mat not_free;
+	cv::bitwise_not(f.laser_free, not_free);
+	cv::bitwise_and(obstacle, not_free, obstacle);
+	cv::bitwise_and(obstacle, base_mask_, obstacle);
+	obstacles_.addImage(f.birds_eye, obstacle);
+	f.obstacle_pixels = static_cast<std::size_t>(cv::countNonZero(obstacle));
 	return f;
 }
 

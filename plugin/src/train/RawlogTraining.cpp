@@ -16,6 +16,7 @@ void RawlogTrainingOptions::validate() const
 	require(figures_frame >= 0, "figures_frame must be >= 0");
 	require(training.bins >= 1 && training.bins <= 256, "bins must be within [1, 256]");
 	require(training.laser_margin >= 0, "laser_margin must be >= 0 m");
+	require(training.obstacle_band >= 0 && training.obstacle_band <= 5, "obstacle_band must be within [0, 5] m");
 }
 
 RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTrainingOptions& o, Progress* progress)
@@ -40,6 +41,7 @@ RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTr
 			if (o.max_frames > 0 && r.used >= o.max_frames) return loop.stop();
 			const TrainingFrame f = trainer.add(decodeImage(*image, rp.camera), *laser);
 			r.pixels += f.pixels;
+			r.obstacle_pixels += f.obstacle_pixels;
 			if (!o.figures_prefix.empty() && r.used == o.figures_frame)
 			{
 				writeImageAtomically(o.figures_prefix + "_birdseye.png", f.birds_eye);
@@ -57,7 +59,7 @@ RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTr
 		throw std::runtime_error("figures_frame " + std::to_string(o.figures_frame) + " is past the " +
 								 std::to_string(r.used) + " pairs used");
 	if (trainer.histogram().empty()) throw std::runtime_error("no free-floor pixel was found to train on");
-	r.histogram = trainer.histogram();
+	r.model = trainer.model();
 	return r;
 }
 

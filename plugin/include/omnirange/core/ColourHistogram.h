@@ -47,6 +47,9 @@ class ColourHistogram
 	 * file if it is missing, truncated, of another version or corrupt. */
 	static ColourHistogram load(const std::string& path);
 
+	/** How many bytes the histogram at the start of `bytes` takes (from its
+	 * header); throws std::runtime_error naming `what` if that is no histogram. */
+	static std::size_t serializedSize(const std::string& bytes, const std::string& what);
 	/** The file's bytes (what save() writes) and their inverse. */
 	std::string serialize() const;
 	static ColourHistogram deserialize(

@@ -3,7 +3,7 @@
 // histogram's P(colour) >= Theta. The decision is precomputed per bin, so
 // classifying a pixel is three table look-ups and one more.
 
-#include <omnirange/core/ColourHistogram.h>
+#include <omnirange/core/ColourModel.h>
 #include <omnirange/core/PixelClassifier.h>
 
 #include <cstdint>
@@ -19,9 +19,12 @@ namespace omnirange
 class FreeSpaceClassifier final : public PixelClassifier
 {
    public:
-	/** Throws std::invalid_argument if the histogram is empty or the
-	 * threshold is outside [0, 1]. */
-	FreeSpaceClassifier(const ColourHistogram& hist, double threshold);
+	/** A colour is free when P(colour | floor) >= threshold (eq. (5)) and,
+	 * with obstacle colours in the model and obstacle_ratio > 0, when also
+	 * P(colour | floor) >= obstacle_ratio * P(colour | obstacle). Throws
+	 * std::invalid_argument if the floor histogram is empty or a parameter
+	 * is out of range. */
+	FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio = 0.0);
 
 	const ColourBinner& binner() const { return binner_; }
 

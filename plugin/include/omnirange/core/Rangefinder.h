@@ -4,7 +4,7 @@
 // the paper's steps in order (see process()).
 
 #include <omnirange/core/CameraModel.h>
-#include <omnirange/core/ColourHistogram.h>
+#include <omnirange/core/ColourModel.h>
 #include <omnirange/core/FreeSpaceClassifier.h>
 #include <omnirange/core/OutlierFilter.h>
 #include <omnirange/core/PolarScanner.h>
@@ -33,6 +33,9 @@ struct RangefinderParams
 	PolarScannerParams scanner;
 	OutlierFilterParams outliers;
 	double threshold{0.05};  ///< Theta of eq. (5) [-] (the maze's, paper Table I)
+	/** [-] with obstacle colours in the model: free also needs
+	 * P(c | floor) >= obstacle_ratio * P(c | obstacle); 0: the paper's one-class model. */
+	double obstacle_ratio{1.0};
 	std::string sensor_label{kOmniscanLabel};  ///< label of the produced scans
 	/** The omnicam's pose on the robot, which becomes the scan's sensorPose
 	 * (MRPT's pose_* keys). pose_z defaults to camera h. */
@@ -63,8 +66,8 @@ struct RangeScan
 class Rangefinder
 {
    public:
-	/** Throws std::invalid_argument on bad parameters or an empty histogram. */
-	Rangefinder(const RangefinderParams& params, const ColourHistogram& histogram);
+	/** Throws std::invalid_argument on bad parameters or an empty floor histogram. */
+	Rangefinder(const RangefinderParams& params, const ColourModel& colours);
 
 	const RangefinderParams& params() const { return p_; }
 	const OmniCameraModel& camera() const { return camera_; }

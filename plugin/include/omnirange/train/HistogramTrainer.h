@@ -6,7 +6,7 @@
 
 #include <omnirange/train/BirdsEyeView.h>
 #include <omnirange/core/CameraModel.h>
-#include <omnirange/core/ColourHistogram.h>
+#include <omnirange/core/ColourModel.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
@@ -20,6 +20,9 @@ struct TrainingParams
 	double laser_margin{0.10};  ///< [m] kept clear of every laser hit (mixed pixels)
 	int bins{ColourHistogram::kDefaultBins};  ///< per colour channel
 	ColourSpace space{ColourSpace::RGB};
+	/** [m] how far beyond each laser hit (after laser_margin) the obstacle's
+	 * colours are counted, for the two-class model; 0: the floor only. */
+	double obstacle_band{0.25};
 };
 
 /** The three images of paper Fig. 1 for one frame. */
@@ -29,6 +32,7 @@ struct TrainingFrame
 	cv::Mat laser_free;  ///< (b) 8-bit, 255 where the laser shows free floor
 	cv::Mat fused;  ///< (c) BGR: the bird's-eye pixels that were counted, black elsewhere
 	std::size_t pixels{0};  ///< how many were counted
+	std::size_t obstacle_pixels{0};  ///< obstacle pixels counted (beyond the laser's hits)
 };
 
 class HistogramTrainer
@@ -44,15 +48,18 @@ class HistogramTrainer
 	TrainingFrame add(const cv::Mat& omni_bgr, const mrpt::obs::CObservation2DRangeScan& laser);
 
 	const ColourHistogram& histogram() const { return hist_; }
+	/** The floor's colours and the obstacles'. */
+	ColourModel model() const { return ColourModel(hist_, obstacles_); }
 
    private:
-	cv::Mat laserFreeMask(const mrpt::obs::CObservation2DRangeScan& laser) const;
+	/** (b) of Fig. 1, and the obstacle pixels: a band just beyond each hit. */
+	cv::Mat laserFreeMask(const mrpt::obs::CObservation2DRangeScan& laser, cv::Mat& obstacle) const;
 
 	mrpt::poses::CPose3D camera_pose_;
 	double view_range_;
 	TrainingParams p_;
 	BirdsEyeView view_;
-	ColourHistogram hist_;
+	ColourHistogram hist_, obstacles_;
 	cv::Mat base_mask_;  // 255 outside the base and within view_range
 };
 

@@ -36,10 +36,11 @@ struct RawlogTrainingOptions
 
 struct RawlogTrainingResult
 {
-	ColourHistogram histogram;
+	ColourModel model;  ///< the floor's colours, and the obstacles' where obstacle_band > 0
 	int pairs{0};  ///< synchronised pairs seen
 	int used{0};  ///< pairs trained on
 	std::size_t pixels{0};  ///< floor pixels counted
+	std::size_t obstacle_pixels{0};  ///< obstacle pixels counted
 };
 
 /** The camera, its pose and the base come from `params`. Throws

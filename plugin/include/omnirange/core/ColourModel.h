@@ -1,0 +1,38 @@
+#pragma once
+// The colours the rangefinder knows: the free floor's histogram (the
+// paper's, §III-A) and, where training saw them, the obstacles' (the colours
+// just beyond the laser's hits). With both, a colour is free floor only when
+// the floor explains it at least as well as the obstacles do (a two-class
+// model): a wall the colour of a shadowed patch of floor stops being free
+// when training has seen that wall.
+
+#include <omnirange/core/ColourHistogram.h>
+
+#include <string>
+
+namespace omnirange
+{
+struct ColourModel
+{
+	ColourHistogram floor;
+	ColourHistogram obstacles;  ///< empty: the one-class model of the paper
+
+	/** A one-class model: the floor only. */
+	ColourModel(ColourHistogram floor_histogram = ColourHistogram())  // NOLINT: implicit on purpose
+		: floor(std::move(floor_histogram)), obstacles(floor.space(), floor.binsPerChannel())
+	{
+	}
+	ColourModel(ColourHistogram floor_histogram, ColourHistogram obstacle_histogram);
+
+	bool hasObstacles() const { return !obstacles.empty(); }
+
+	/** One file: the floor histogram's bytes, then the obstacles' if any
+	 * (each versioned and checksummed, ColourHistogram's format). Written
+	 * atomically. */
+	void save(const std::string& path) const;
+	/** Reads a file written by save(), or a plain histogram file (then
+	 * one-class); throws std::runtime_error naming the file. */
+	static ColourModel load(const std::string& path);
+};
+
+}  // namespace omnirange
