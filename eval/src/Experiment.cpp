@@ -101,10 +101,32 @@ void Experiment::train()
 	r_.training_until = std::max(1, static_cast<int>(std::lround(c_.train_fraction * r_.simulated.frames)));
 	o.until = r_.training_until;
 	o.figures_prefix = out_ + "/fig1";
+	if (c_.learn) return learn(o);
 	const RawlogTrainingResult trained = trainFromRawlog(c_.rangefinder, o);
 	trained.model.save(histogram_);
 	histogram_data_ = trained.model;
 	r_.training_pairs = trained.used;
+}
+
+void Experiment::learn(const RawlogTrainingOptions& o)
+{
+	const LearningResult l = learnParameters(c_.rangefinder, o);
+	c_.rangefinder = l.params;
+	histogram_data_ = l.model;
+	histogram_data_.save(histogram_);
+	writeFileAtomically(out_ + "/learned.ini", learnedIni(l));
+	r_.training_pairs = l.training_pairs;
+	char s[300];
+	std::snprintf(s, sizeof s,
+				  "colour space %s, threshold %g, obstacle_ratio %g, N %d, K %d (of %zu candidates, validated on %d "
+				  "held-aside pairs: `learned.ini`)",
+				  toString(l.best.space).c_str(), l.best.threshold, l.best.obstacle_ratio, l.best.N, l.best.K,
+				  l.tried.size(), l.validation_pairs);
+	r_.learned = s;
+	// The figures of paper Fig. 1, from the first training pair.
+	RawlogTrainingOptions one = o;
+	one.max_frames = 1;
+	trainFromRawlog(c_.rangefinder, one);
 }
 
 // 3. The omnicam scans.

@@ -26,6 +26,8 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 		.add("train_every", "-", "train on every N-th image/scan pair", [](C& c) -> auto& { return c.train_every; })
 		.add("train_fraction", "-", "train on this first fraction of the route, score on the rest",
 			 [](C& c) -> auto& { return c.train_fraction; })
+		.add("learn", "bool", "learn colour space, threshold, obstacle_ratio, N and K against the laser",
+			 [](C& c) -> auto& { return c.learn; })
 		.addEnum("colour_space", "the histogram's colour space: RGB (the paper's), HSV or CHROMA",
 				 [](C& c) -> auto& { return c.colour_space; }, colourSpaceFromString)
 		.add("bins", "-", "histogram bins per colour channel", [](C& c) -> auto& { return c.bins; })

@@ -113,3 +113,37 @@ TEST(AppClasses, CommandLinesFillTheOptions)
 		EXPECT_EQ(e.code, 2);
 	}
 }
+
+TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
+{
+	const std::string dir = workDir("learn");
+	TrainApp::Options t;
+	t.ini = kIni;
+	t.output = dir + "/learned.hist";
+	t.learn_ini = dir + "/learned.ini";
+	t.training.input = kSample;
+	t.training.until = 12;  // learn on the first 12 pairs (9 to train, 3 held aside)
+	t.verbosity = mrpt::system::LVL_ERROR;
+	TrainApp(t).run();
+	// The written ini is a [rangefinder] section a user (and omnirange-scan) can load.
+	mrpt::system::COutputLogger quiet("test");
+	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+	const RangefinderParams learned = loadRangefinderIni(t.learn_ini, "rangefinder", quiet);
+	EXPECT_GE(learned.threshold, 0.0025);
+	EXPECT_LE(learned.threshold, 0.1);
+	ScanApp::Options s;
+	s.ini = t.learn_ini;
+	s.histogram = t.output;
+	s.scan.input = kSample;
+	s.scan.output = dir + "/scanned.rawlog";
+	s.verbosity = mrpt::system::LVL_ERROR;
+	ScanApp(s).run();
+	AccuracyApp::Options a;
+	a.input = s.scan.output;
+	a.output = dir + "/acc";
+	a.accuracy.first = 12;  // only the 8 frames learning never saw
+	a.verbosity = mrpt::system::LVL_ERROR;
+	const eval::AccuracyResult acc = AccuracyApp(a).run();
+	EXPECT_EQ(acc.frames, 8);
+	EXPECT_LT(acc.stats.meanAbs(), 0.1375);  // within the paper's worst Table II figure
+}

@@ -2,6 +2,7 @@
 
 #include "omnirange_apps/CommandLine.h"
 
+#include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/Progress.h>
 
 namespace omnirange::app
@@ -26,11 +27,12 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> space("", "colour-space", "RGB or HSV", false, toString(t.training.space), "SPACE", cmd);
 	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
 	TCLAP::ValueArg<double> band("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only", false, t.training.obstacle_band, "M", cmd);
+	TCLAP::ValueArg<std::string> learn("", "learn", "also learn colour space, threshold, obstacle_ratio, N and K against the laser on held-aside pairs, and write them to this ini", false, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> figures("", "figures", "write PREFIX_birdseye.png, PREFIX_laser.png, PREFIX_fused.png (paper Fig. 1)", false, "", "PREFIX", cmd);
 	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.output = out.getValue(), o.ini = ini.getValue(), o.section = section.getValue();
+	o.output = out.getValue(), o.ini = ini.getValue(), o.section = section.getValue(), o.learn_ini = learn.getValue();
 	t.input = in.getValue(), t.omni_label = omni.getValue(), t.laser_label = laser.getValue();
 	t.max_dt = max_dt.getValue(), t.every = every.getValue(), t.first = first.getValue();
 	t.max_frames = max_frames.getValue(), t.until = until.getValue();
@@ -50,11 +52,28 @@ RawlogTrainingResult TrainApp::run()
 {
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	Progress progress("objects read");
+	if (!o_.learn_ini.empty()) return learn(params);
 	const RawlogTrainingResult r =
 		trainFromRawlog(params, o_.training, progressAt(o_.verbosity, progress));
 	r.model.save(o_.output);
 	MRPT_LOG_INFO_FMT("trained on %d image/scan pairs (of %d), %zu floor and %zu obstacle pixels -> %s", r.used,
 					  r.pairs, r.pixels, r.obstacle_pixels, o_.output.c_str());
+	return r;
+}
+
+RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
+{
+	Progress progress("objects read (learning)");
+	const LearningResult l = learnParameters(params, o_.training, LearningOptions{}, progressAt(o_.verbosity, progress));
+	l.model.save(o_.output);
+	writeFileAtomically(o_.learn_ini, learnedIni(l, o_.section));
+	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: colour space %s, threshold %g, obstacle_ratio %g, N %d, "
+					  "K %d (mean error %.4f m) -> %s, %s",
+					  l.training_pairs, l.validation_pairs, toString(l.best.space).c_str(), l.best.threshold,
+					  l.best.obstacle_ratio, l.best.N, l.best.K, l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
+	RawlogTrainingResult r;
+	r.model = l.model;
+	r.used = l.training_pairs;
 	return r;
 }
 

@@ -10,6 +10,7 @@
 #include <omnirange_eval/Trajectory.h>
 #include <omnirange_sim/Simulator.h>
 
+#include <omnirange/train/ParameterLearning.h>
 #include <omnirange/train/RawlogTraining.h>
 
 #include <mrpt/system/COutputLogger.h>
@@ -42,6 +43,7 @@ struct ExperimentResults
 	sim::SimSummary simulated;
 	int training_pairs{0};
 	int training_until{0};  ///< pairs before this one trained on, the rest scored
+	std::string learned;  ///< what learning chose, for the report (empty: not learned)
 	double omni_hit_fraction{0};
 	AccuracyResult accuracy;
 	std::vector<SensorMaps> sensors;  ///< the laser, then the omnicam
@@ -65,6 +67,8 @@ class Experiment : public mrpt::system::COutputLogger
 	void stage(const std::string& name, const std::function<void()>& body);
 	void simulate();
 	void train();
+	/** Learns the parameters on the training part; the scan stage then uses them. */
+	void learn(const RawlogTrainingOptions& o);
 	void scan();
 	void measureAccuracy();
 	void mapWithGroundTruth();

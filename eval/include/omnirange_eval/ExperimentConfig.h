@@ -24,6 +24,10 @@ struct ExperimentConfig
 	/** Train on the route's first part, this fraction of its frames, and
 	 * score on the rest (never on what was trained on). */
 	double train_fraction{0.2};
+	/** Learn colour space, Theta, obstacle_ratio, N and K against the laser
+	 * on held-aside training pairs (ParameterLearning.h) instead of taking
+	 * [rangefinder]'s and colour_space. */
+	bool learn{false};
 	ColourSpace colour_space{ColourSpace::RGB};  ///< of the trained histogram
 	int bins{ColourHistogram::kDefaultBins};  ///< per colour channel
 	/** [m] obstacle colours counted this far beyond the laser's hits (0: floor only). */

@@ -2,6 +2,7 @@
 // omnirange-train: rawlog with omnicam images and laser scans -> colour
 // histogram of the free floor (paper §III-A1), and the images of Fig. 1.
 
+#include <omnirange/train/ParameterLearning.h>
 #include <omnirange/train/RawlogTraining.h>
 
 #include <mrpt/system/COutputLogger.h>
@@ -16,16 +17,22 @@ class TrainApp : public mrpt::system::COutputLogger
 		std::string output;  ///< histogram file to write
 		std::string ini, section{"rangefinder"};
 		RawlogTrainingOptions training;
+		/** If not empty: learn the parameters too (ParameterLearning.h) and
+		 * write them, as a [rangefinder] section, to this ini. */
+		std::string learn_ini;
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */
 	static Options parse(int argc, const char* const* argv);
 
 	explicit TrainApp(Options o);
-	/** Trains and saves the histogram; throws on any bad input. */
+	/** Trains and saves the histogram (and, with learn_ini, learns the
+	 * parameters); throws on any bad input. */
 	RawlogTrainingResult run();
 
    private:
+	RawlogTrainingResult learn(const RangefinderParams& params);
+
 	Options o_;
 };
 
