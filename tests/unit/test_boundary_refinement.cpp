@@ -66,9 +66,10 @@ TEST(BoundaryRefinement, TheScannerPlacesABlurredDiscsEdgeWhereItIs)
 {
 	const OmniCameraModel cam{CameraParams{}};
 	const FreeSpaceClassifier classifier{test::floorHistogram(), 0.05};
-	PolarScannerParams sub;
+	PolarScannerParams sub, mid;
 	sub.boundary_model = BoundaryModel::Subpixel;
-	const PolarScanner midpoint(cam, PolarScannerParams{}), subpixel(cam, sub);
+	mid.boundary_model = BoundaryModel::Midpoint;
+	const PolarScanner midpoint(cam, mid), subpixel(cam, sub);
 	// A disc of floor with a smooth edge at 111.3 px, blurred like a lens.
 	const double rho = 111.3;
 	cv::Mat img(768, 1024, CV_32FC3);

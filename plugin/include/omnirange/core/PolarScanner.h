@@ -62,7 +62,7 @@ struct PolarScannerParams
 	 * edges; blurred edges want about +0.5, see omnirange-calibrate). */
 	double boundary_offset{0.0};
 	/** How the edge is placed between pixels (BoundaryRefinement.h). */
-	BoundaryModel boundary_model{BoundaryModel::Midpoint};
+	BoundaryModel boundary_model{BoundaryModel::Subpixel};
 	HitFilterParams filter{};
 
 	static const OptionsTable<PolarScannerParams>& table();
