@@ -2,6 +2,7 @@
 
 #include "omnirange/io/AtomicWrite.h"
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,9 +17,20 @@ ColourModel::ColourModel(ColourHistogram floor_histogram, ColourHistogram obstac
 		throw std::invalid_argument("the floor and obstacle histograms differ in colour space or bins");
 }
 
+namespace
+{
+constexpr char kReferenceTag[8] = {'O', 'M', 'N', 'I', 'R', 'E', 'F', '1'};
+}
+
 void ColourModel::save(const std::string& path) const
 {
-	writeFileAtomically(path, floor.serialize() + (hasObstacles() ? obstacles.serialize() : std::string()));
+	std::string bytes = floor.serialize() + (hasObstacles() ? obstacles.serialize() : std::string());
+	if (hasReference())
+	{
+		bytes.append(kReferenceTag, sizeof(kReferenceTag));
+		for (double v : reference) bytes.append(reinterpret_cast<const char*>(&v), sizeof v);  // little-endian hosts
+	}
+	writeFileAtomically(path, bytes);
 }
 
 ColourModel ColourModel::load(const std::string& path)
@@ -30,10 +42,22 @@ ColourModel ColourModel::load(const std::string& path)
 	std::ostringstream ss;
 	ss << f.rdbuf();
 	const std::string bytes = ss.str();
-	const std::size_t first = ColourHistogram::serializedSize(bytes, path);
-	ColourHistogram floor = ColourHistogram::deserialize(bytes.substr(0, first), path);
-	if (first == bytes.size()) return ColourModel(std::move(floor));
-	return ColourModel(std::move(floor), ColourHistogram::deserialize(bytes.substr(first), path + " (obstacles)"));
+	std::size_t at = ColourHistogram::serializedSize(bytes, path);
+	ColourModel m(ColourHistogram::deserialize(bytes.substr(0, at), path));
+	const auto starts = [&](const char* tag) { return bytes.compare(at, 8, tag, 8) == 0; };
+	if (at < bytes.size() && starts("OMNIHIST"))
+	{
+		const std::size_t n = ColourHistogram::serializedSize(bytes.substr(at), path);
+		m = ColourModel(std::move(m.floor), ColourHistogram::deserialize(bytes.substr(at, n), path + " (obstacles)"));
+		at += n;
+	}
+	if (at < bytes.size())
+	{
+		if (!starts(kReferenceTag) || bytes.size() != at + 8 + 3 * sizeof(double))
+			throw std::runtime_error("histogram file '" + path + "': unreadable data after the histograms");
+		for (int c = 0; c < 3; ++c) std::memcpy(&m.reference[c], bytes.data() + at + 8 + c * sizeof(double), sizeof(double));
+	}
+	return m;
 }
 
 }  // namespace omnirange

@@ -157,13 +157,18 @@ PolarScanner::PolarScanner(const OmniCameraModel& cam, const PolarScannerParams&
 	}
 }
 
-std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier& classifier) const
+void PolarScanner::checkImage(const cv::Mat& image) const
 {
 	if (image.type() != CV_8UC3) throw std::invalid_argument("scanner: the image must be 8-bit, 3-channel BGR");
 	if (image.cols != width_ || image.rows != height_)
 		throw std::invalid_argument("scanner: the image is " + std::to_string(image.cols) + "x" +
 									std::to_string(image.rows) + " but the camera is " + std::to_string(width_) +
 									"x" + std::to_string(height_));
+}
+
+std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier& classifier) const
+{
+	checkImage(image);
 	const cv::Mat bgr = image.isContinuous() ? image : image.clone();
 	const std::uint8_t* data = bgr.ptr<std::uint8_t>();
 	std::vector<std::uint8_t> free(longest_line_);

@@ -3,6 +3,7 @@
 #include "omnirange/io/OptionsTable.h"
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <opencv2/core.hpp>
 
 #include <algorithm>
 
@@ -21,6 +22,10 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 			 "P(c|obstacle); 0: the paper's one-class model",
 			 [](P& p) -> auto& { return p.obstacle_ratio; })
 		.include(OutlierFilterParams::table(), [](P& p) -> auto& { return p.outliers; })
+		.add("exposure_compensation", "bool",
+			 "bring each image's floor just beyond the base back to its colour in training before classifying "
+			 "(needs a histogram file that records it)",
+			 [](P& p) -> auto& { return p.exposure_compensation; })
 		.add("sensor_label", "-", "sensorLabel of the produced CObservation2DRangeScan",
 			 [](P& p) -> auto& { return p.sensor_label; })
 		.addPose("the omnicam's pose on the robot: the scan's sensorPose (pose_z defaults to h when absent)",
@@ -70,17 +75,30 @@ Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& col
 	: p_((params.validate(), params)),
 	  camera_(p_.camera),
 	  classifier_(colours, p_.threshold, p_.obstacle_ratio),
-	  scanner_(camera_, p_.scanner)
+	  scanner_(camera_, p_.scanner),
+	  reference_(colours.reference),
+	  compensate_(p_.exposure_compensation && colours.hasReference()),
+	  ring_(camera_, camera_.distanceFromRho(p_.scanner.base_radius) + 0.05)
 {
 }
 
 RangeScan Rangefinder::process(const cv::Mat& bgr) const
 {
+	scanner_.checkImage(bgr);
 	RangeScan out;
+	// 0. Light: see the image as if in training's light, through the floor
+	//    just beyond the base (ExposureCompensation.h).
 	// 1-3. Classify the pixels along each polar scanline (eq. (5)), find
 	//      where the floor ends with the N/K filters (Fig. 3), and convert
 	//      that pixel to metres (eq. (6)).
-	out.rays = scanner_.scan(bgr, classifier_);
+	if (compensate_)
+	{
+		const cv::Mat img = bgr.isContinuous() ? bgr : bgr.clone();
+		const CompensatedClassifier seen(classifier_, compensatingGains(reference_, ring_.medianColour(img)));
+		out.rays = scanner_.scan(img, seen);
+	}
+	else
+		out.rays = scanner_.scan(bgr, classifier_);
 	// 4. Reject the rays that disagree with both their neighbours.
 	out.outliers = rejectOutliers(out.rays, p_.outliers);
 	return out;

@@ -14,7 +14,8 @@ HistogramTrainer::HistogramTrainer(const OmniCameraModel& camera, const mrpt::po
 	  p_(p),
 	  view_(camera, 2 * static_cast<int>(std::ceil(view_range / p.resolution)) + 1, p.resolution),
 	  hist_(p.space, p.bins),
-	  obstacles_(p.space, p.bins)
+	  obstacles_(p.space, p.bins),
+	  ring_(camera, base_range)
 {
 	if (!(view_range > 0) || !(p.resolution > 0) || !(p.laser_margin >= 0) || !(base_range >= 0) ||
 		!(p.obstacle_band >= 0))
@@ -88,7 +89,18 @@ TrainingFrame HistogramTrainer::add(const cv::Mat& omni, const mrpt::obs::CObser
 	cv::bitwise_and(obstacle, base_mask_, obstacle);
 	obstacles_.addImage(f.birds_eye, obstacle);
 	f.obstacle_pixels = static_cast<std::size_t>(cv::countNonZero(obstacle));
+	const auto ring = ring_.medianColour(omni.isContinuous() ? omni : omni.clone());
+	for (int c = 0; c < 3; ++c) ring_sum_[c] += ring[c];
+	++frames_;
 	return f;
+}
+
+ColourModel HistogramTrainer::model() const
+{
+	ColourModel m(hist_, obstacles_);
+	if (frames_ > 0)
+		for (int c = 0; c < 3; ++c) m.reference[c] = ring_sum_[c] / frames_;
+	return m;
 }
 
 }  // namespace omnirange

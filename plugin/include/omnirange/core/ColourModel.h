@@ -8,6 +8,7 @@
 
 #include <omnirange/core/ColourHistogram.h>
 
+#include <array>
 #include <string>
 
 namespace omnirange
@@ -16,6 +17,9 @@ struct ColourModel
 {
 	ColourHistogram floor;
 	ColourHistogram obstacles;  ///< empty: the one-class model of the paper
+	/** Median B, G, R of the floor just beyond the base during training
+	 * (ExposureCompensation.h); all 0 when unknown. */
+	std::array<double, 3> reference{};
 
 	/** A one-class model: the floor only. */
 	ColourModel(ColourHistogram floor_histogram = ColourHistogram())  // NOLINT: implicit on purpose
@@ -25,10 +29,12 @@ struct ColourModel
 	ColourModel(ColourHistogram floor_histogram, ColourHistogram obstacle_histogram);
 
 	bool hasObstacles() const { return !obstacles.empty(); }
+	bool hasReference() const { return reference[0] + reference[1] + reference[2] > 0; }
 
 	/** One file: the floor histogram's bytes, then the obstacles' if any
-	 * (each versioned and checksummed, ColourHistogram's format). Written
-	 * atomically. */
+	 * (each versioned and checksummed, ColourHistogram's format), then the
+	 * reference colour if known ("OMNIREF1" and three little-endian
+	 * doubles). Written atomically. */
 	void save(const std::string& path) const;
 	/** Reads a file written by save(), or a plain histogram file (then
 	 * one-class); throws std::runtime_error naming the file. */

@@ -84,6 +84,8 @@ class PolarScanner
 	/** Largest image radius [px] any scanline reads. */
 	double scanRadius() const { return scan_radius_; }
 
+	/** Throws std::invalid_argument unless `bgr` is 8-bit BGR of the camera's size. */
+	void checkImage(const cv::Mat& bgr) const;
 	/** Scans one BGR image of the camera's size. */
 	std::vector<Ray> scan(const cv::Mat& bgr, const PixelClassifier& classifier) const;
 

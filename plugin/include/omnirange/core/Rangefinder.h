@@ -5,6 +5,7 @@
 
 #include <omnirange/core/CameraModel.h>
 #include <omnirange/core/ColourModel.h>
+#include <omnirange/core/ExposureCompensation.h>
 #include <omnirange/core/FreeSpaceClassifier.h>
 #include <omnirange/core/OutlierFilter.h>
 #include <omnirange/core/PolarScanner.h>
@@ -36,6 +37,10 @@ struct RangefinderParams
 	/** [-] with obstacle colours in the model: free also needs
 	 * P(c | floor) >= obstacle_ratio * P(c | obstacle); 0: the paper's one-class model. */
 	double obstacle_ratio{1.0};
+	/** Bring each image's floor, just beyond the base, back to the colour it
+	 * had in training before classifying (ExposureCompensation.h); only with
+	 * a histogram file that records that colour. */
+	bool exposure_compensation{true};
 	std::string sensor_label{kOmniscanLabel};  ///< label of the produced scans
 	/** The omnicam's pose on the robot, which becomes the scan's sensorPose
 	 * (MRPT's pose_* keys). pose_z defaults to camera h. */
@@ -87,6 +92,9 @@ class Rangefinder
 	OmniCameraModel camera_;
 	FreeSpaceClassifier classifier_;
 	PolarScanner scanner_;
+	std::array<double, 3> reference_{};  // the floor's colour around the base in training
+	bool compensate_{false};
+	FloorRing ring_;
 };
 
 }  // namespace omnirange

@@ -7,6 +7,7 @@
 #include <omnirange/train/BirdsEyeView.h>
 #include <omnirange/core/CameraModel.h>
 #include <omnirange/core/ColourModel.h>
+#include <omnirange/core/ExposureCompensation.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
@@ -48,8 +49,9 @@ class HistogramTrainer
 	TrainingFrame add(const cv::Mat& omni_bgr, const mrpt::obs::CObservation2DRangeScan& laser);
 
 	const ColourHistogram& histogram() const { return hist_; }
-	/** The floor's colours and the obstacles'. */
-	ColourModel model() const { return ColourModel(hist_, obstacles_); }
+	/** The floor's colours, the obstacles', and the reference colour of
+	 * the floor just beyond the base (the mean of the frames' medians). */
+	ColourModel model() const;
 
    private:
 	/** (b) of Fig. 1, and the obstacle pixels: a band just beyond each hit. */
@@ -60,6 +62,9 @@ class HistogramTrainer
 	TrainingParams p_;
 	BirdsEyeView view_;
 	ColourHistogram hist_, obstacles_;
+	FloorRing ring_;
+	std::array<double, 3> ring_sum_{};
+	int frames_{0};
 	cv::Mat base_mask_;  // 255 outside the base and within view_range
 };
 

@@ -1,0 +1,76 @@
+#include "omnirange/core/ExposureCompensation.h"
+
+#include <opencv2/core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace omnirange
+{
+FloorRing::FloorRing(const OmniCameraModel& camera, double inner, double width)
+	: width_(camera.params().image_width), height_(camera.params().image_height)
+{
+	const double from = camera.rhoFromDistance(inner);
+	for (double rho = from; rho < from + width; rho += 1.0)
+		for (int deg = 0; deg < 360; ++deg)
+		{
+			const Pixel p = camera.pixelFromPolar(deg * 3.14159265358979323846 / 180.0, rho);
+			const long u = std::lround(p.u), v = std::lround(p.v);
+			if (u >= 0 && v >= 0 && u < width_ && v < height_) pixels_.push_back(static_cast<std::int32_t>(v * width_ + u));
+		}
+	if (pixels_.empty()) throw std::invalid_argument("the floor ring around the base lies outside the image");
+}
+
+std::array<double, 3> FloorRing::medianColour(const cv::Mat& bgr) const
+{
+	if (bgr.type() != CV_8UC3 || bgr.cols != width_ || bgr.rows != height_ || !bgr.isContinuous())
+		throw std::invalid_argument("FloorRing: the image must be a continuous 8-bit BGR image of the camera's size");
+	const std::uint8_t* data = bgr.ptr<std::uint8_t>();
+	std::array<double, 3> out{};
+	std::vector<std::uint8_t> v(pixels_.size());
+	for (int c = 0; c < 3; ++c)
+	{
+		for (std::size_t i = 0; i < pixels_.size(); ++i) v[i] = data[3 * static_cast<std::size_t>(pixels_[i]) + c];
+		std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+		out[c] = v[v.size() / 2];
+	}
+	return out;
+}
+
+std::array<double, 3> compensatingGains(const std::array<double, 3>& reference, const std::array<double, 3>& current)
+{
+	std::array<double, 3> g{};
+	for (int c = 0; c < 3; ++c) g[c] = std::clamp(reference[c] / std::max(1.0, current[c]), 0.5, 2.0);
+	return g;
+}
+
+CompensatedClassifier::CompensatedClassifier(const PixelClassifier& base, const std::array<double, 3>& gains)
+	: base_(base)
+{
+	for (int c = 0; c < 3; ++c)
+		for (int x = 0; x < 256; ++x)
+			lut_[c][x] = static_cast<std::uint8_t>(std::min(255L, std::lround(x * gains[c])));
+}
+
+void CompensatedClassifier::classify(const std::uint8_t* bgr, const std::int32_t* pixels, int count,
+									 std::uint8_t* out) const
+{
+	// Through the base one pixel at a time, from a small buffer of compensated colours.
+	constexpr int kRun = 16;
+	std::uint8_t buf[3 * kRun];
+	std::int32_t idx[kRun];
+	for (int i = 0; i < kRun; ++i) idx[i] = i;
+	for (int from = 0; from < count; from += kRun)
+	{
+		const int n = std::min(kRun, count - from);
+		for (int k = 0; k < n; ++k)
+		{
+			const std::uint8_t* p = bgr + 3 * static_cast<std::size_t>(pixels[from + k]);
+			for (int c = 0; c < 3; ++c) buf[3 * k + c] = lut_[c][p[c]];
+		}
+		base_.classify(buf, idx, n, out + from);
+	}
+}
+
+}  // namespace omnirange

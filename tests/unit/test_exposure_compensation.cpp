@@ -1,0 +1,58 @@
+// Exposure compensation: the floor ring's median colour, the gains that
+// bring it back to training's, and a classifier that then recognises a
+// floor seen in other light.
+#include "SyntheticOmni.h"
+
+#include <omnirange/core/ExposureCompensation.h>
+#include <omnirange/core/FreeSpaceClassifier.h>
+#include <omnirange/core/Rangefinder.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include <gtest/gtest.h>
+
+using namespace omnirange;
+
+TEST(ExposureCompensation, TheRingSeesTheFloorAroundTheBase)
+{
+	const OmniCameraModel cam{CameraParams{}};
+	cv::Mat img = test::drawFloorDisc(cam, 120.0);
+	// A wall patch covering a tenth of the ring does not move the median.
+	cv::rectangle(img, cv::Rect(512 + 40, 384 - 8, 30, 16), cv::Scalar(test::kWall), cv::FILLED);
+	const FloorRing ring(cam, 0.45);
+	const auto m = ring.medianColour(img);
+	EXPECT_EQ(m[0], test::kFloor[0]);
+	EXPECT_EQ(m[1], test::kFloor[1]);
+	EXPECT_EQ(m[2], test::kFloor[2]);
+}
+
+TEST(ExposureCompensation, GainsBringTheColourBackAndAreBounded)
+{
+	const auto g = compensatingGains({100, 150, 200}, {80, 150, 250});
+	EXPECT_DOUBLE_EQ(g[0], 1.25);
+	EXPECT_DOUBLE_EQ(g[1], 1.0);
+	EXPECT_DOUBLE_EQ(g[2], 0.8);
+	EXPECT_DOUBLE_EQ(compensatingGains({200, 200, 200}, {10, 200, 200})[0], 2.0);
+}
+
+TEST(ExposureCompensation, ADarkerImageOfTheFloorIsStillFloor)
+{
+	const OmniCameraModel cam{CameraParams{}};
+	const double rho = 100.0;
+	const cv::Mat bright = test::drawFloorDisc(cam, rho);
+	cv::Mat dark;
+	bright.convertTo(dark, -1, 0.7);  // the same scene with 30 % less light
+	ColourModel model(test::floorHistogram());
+	RangefinderParams p;
+	const Rangefinder plain(p, model);
+	model.reference = FloorRing(cam, cam.distanceFromRho(p.scanner.base_radius) + 0.05).medianColour(bright);
+	const Rangefinder compensated(p, model);
+	const double truth = cam.distanceFromRho(rho);
+	// Without compensation the darker floor is not floor: every ray is "too close".
+	EXPECT_EQ(plain.process(dark).count(RayStatus::TooClose), 360);
+	const RangeScan s = compensated.process(dark);
+	EXPECT_EQ(s.count(RayStatus::Hit), 360);
+	for (const Ray& r : s.rays) EXPECT_NEAR(r.range, truth, cam.distanceFromRho(rho + 1) - truth);
+	p.exposure_compensation = false;
+	EXPECT_EQ(Rangefinder(p, model).process(dark).count(RayStatus::TooClose), 360);  // the switch
+}
