@@ -1,7 +1,7 @@
 // One decoded 1024x768 omnicam frame -> one 360-ray scan, with the paper's
 // parameters (N = 20, K = 2, Theta = 0.05). Run:
 //   build/tests/benchmarks/omnirange_bench_rangefinder --benchmark_repetitions=10
-// The frame is a room drawn through the camera model: a noisy floor texture,
+// (defaults otherwise: the sub-pixel boundary.) The frame is a room drawn through the camera model: a noisy floor texture,
 // walls between 0.8 m and 3.5 m, and a doorway the rays see past max range.
 #include "SyntheticOmni.h"
 
@@ -87,6 +87,24 @@ void BM_FrameToObservation(benchmark::State& state)
 	}
 }
 BENCHMARK(BM_FrameToObservation)->Unit(benchmark::kMillisecond);
+
+// The same frame with what the defaults add when the histogram file records
+// the floor's colour: exposure compensation (the ring's median, classifying
+// through gains) and the sub-pixel boundary (on by default in both).
+void BM_FrameToScanCompensated(benchmark::State& state)
+{
+	const Scene& scene = ::scene(false);
+	ColourModel model(scene.histogram);
+	const OmniCameraModel cam{scene.params.camera};
+	model.reference = FloorRing(cam, cam.distanceFromRho(scene.params.scanner.base_radius) + 0.05).medianColour(scene.frame);
+	const Rangefinder rf(scene.params, model);
+	for (auto _ : state)
+	{
+		const RangeScan scan = rf.process(scene.frame);
+		benchmark::DoNotOptimize(scan.rays.data());
+	}
+}
+BENCHMARK(BM_FrameToScanCompensated)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -44,6 +44,7 @@ TEST(ExposureCompensation, ADarkerImageOfTheFloorIsStillFloor)
 	bright.convertTo(dark, -1, 0.7);  // the same scene with 30 % less light
 	ColourModel model(test::floorHistogram());
 	RangefinderParams p;
+	p.exposure_compensation = true;
 	const Rangefinder plain(p, model);
 	model.reference = FloorRing(cam, cam.distanceFromRho(p.scanner.base_radius) + 0.05).medianColour(bright);
 	const Rangefinder compensated(p, model);

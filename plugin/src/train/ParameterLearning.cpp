@@ -68,7 +68,7 @@ double score(const Rangefinder& rf, const std::vector<Validation>& validation)
 			{
 				case PairStatus::Compared: sum += std::min(cap, std::abs(p.difference())); break;
 				case PairStatus::TooDifferent: sum += cap; break;
-				case PairStatus::OmniRejected: sum += 0.6; break;
+				case PairStatus::OmniRejected: sum += cap; break;  // no answer is as bad as a wrong one
 				case PairStatus::LaserBeyondMaxRange: sum += hit ? std::min(cap, max_range - p.omni) : 0.0; break;
 			}
 			++n;

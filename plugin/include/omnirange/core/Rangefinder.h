@@ -39,8 +39,10 @@ struct RangefinderParams
 	double obstacle_ratio{1.0};
 	/** Bring each image's floor, just beyond the base, back to the colour it
 	 * had in training before classifying (ExposureCompensation.h); only with
-	 * a histogram file that records that colour. */
-	bool exposure_compensation{true};
+	 * a histogram file that records that colour. Off by default: it mends a
+	 * change of exposure but breaks where the robot stands in a shadow and
+	 * looks into light (docs/results.md measures both). */
+	bool exposure_compensation{false};
 	std::string sensor_label{kOmniscanLabel};  ///< label of the produced scans
 	/** The omnicam's pose on the robot, which becomes the scan's sensorPose
 	 * (MRPT's pose_* keys). pose_z defaults to camera h. */

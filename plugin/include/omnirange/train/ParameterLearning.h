@@ -35,7 +35,8 @@ struct LearnedCandidate
 	int N{0}, K{0};
 	/** [m] mean over the laser's rays of the error: |laser - omni| where
 	 * both see the boundary (at most 1.25), the false obstacle's shortfall
-	 * where the laser sees nothing within max range, 0.6 for a rejected ray. */
+	 * where the laser sees nothing within max range, 1.25 for a rejected ray
+	 * (a candidate that rejects what it cannot classify must not win). */
 	double score{0};
 };
 
