@@ -42,7 +42,8 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	if (o.output.empty()) throw std::invalid_argument("no output rawlog given");
-	if (o.threads < 1) throw std::invalid_argument("threads must be >= 1");
+	if (o.threads < 1 || o.threads > 256) throw std::invalid_argument("threads must be within [1, 256]");
+	if (o.max_frames < 0) throw std::invalid_argument("max_frames must be >= 0 (0: the whole route)");
 	if (!(o.map_resolution > 0)) throw std::invalid_argument("map resolution must be > 0 m");
 
 	// 1. Inputs: robot, world, route; all checked before anything is written.

@@ -6,9 +6,11 @@
 #include <omnirange_apps/CommandLine.h>
 #include <omnirange_apps/ScanApp.h>
 #include <omnirange_apps/TrainApp.h>
+#include <omnirange_eval/ExperimentConfig.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -146,4 +148,83 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	const eval::AccuracyResult acc = AccuracyApp(a).run();
 	EXPECT_EQ(acc.frames, 8);
 	EXPECT_LT(acc.stats.meanAbs(), 0.1375);  // within the paper's worst Table II figure
+}
+
+TEST(AppClasses, EveryShippedExperimentLoads)
+{
+	// Each ini names its world, route, robot and MRPT configurations; load()
+	// checks them all, and that the route keeps clear of the world's solids.
+	for (const std::string name : {"maze", "factory", "office", "warehouse"})
+	{
+		const auto c = eval::ExperimentConfig::load(kSource + "/ini/" + name + ".ini");
+		EXPECT_EQ(c.name, name);
+		EXPECT_TRUE(c.learn) << name;  // the stock experiments learn their parameters
+		EXPECT_DOUBLE_EQ(c.train_fraction, 0.2) << name;
+	}
+}
+
+TEST(AppClasses, AnOutputOntoAnInputIsRefusedAndTheInputKept)
+{
+	const std::string dir = workDir("overwrite");
+	const std::string rawlog = dir + "/in.rawlog", ini = dir + "/in.ini";
+	fs::copy_file(kSample, rawlog);
+	fs::create_directory_symlink(kSource + "/rawlogs/factory-sample_Images", dir + "/in_Images");
+	fs::copy_file(kIni, ini);
+	fs::create_symlink(ini, dir + "/link.ini");
+	const auto size = fs::file_size(rawlog);
+
+	TrainApp::Options t;
+	t.ini = ini;
+	t.training.input = rawlog;
+	t.verbosity = mrpt::system::LVL_ERROR;
+	for (const std::string& out : std::vector<std::string>{rawlog, ini, dir + "/./in.rawlog", dir + "/link.ini"})
+	{
+		t.output = out;
+		EXPECT_THROW(TrainApp(t).run(), std::runtime_error) << out;
+	}
+	EXPECT_EQ(fs::file_size(rawlog), size);
+	EXPECT_EQ(fs::file_size(ini), fs::file_size(kIni));
+
+	t.output = dir + "/f.hist";
+	TrainApp(t).run();
+	ScanApp::Options s;
+	s.ini = ini;
+	s.histogram = t.output;
+	s.scan.input = rawlog;
+	s.scan.output = t.output;  // onto the histogram
+	s.verbosity = mrpt::system::LVL_ERROR;
+	EXPECT_THROW(ScanApp(s).run(), std::runtime_error);
+	EXPECT_NO_THROW(ColourModel::load(t.output));
+}
+
+TEST(AppClasses, ACutImageIsAnErrorNamingTheFile)
+{
+	const std::string dir = workDir("cut_image");
+	fs::copy_file(kSample, dir + "/s.rawlog");
+	fs::create_directory(dir + "/s_Images");
+	for (const auto& e : fs::directory_iterator(kSource + "/rawlogs/factory-sample_Images"))
+		fs::copy_file(e.path(), dir + "/s_Images/" + e.path().filename().string());
+	// Cut the fifth image in half, as a full disk or an interrupted copy would.
+	std::vector<fs::path> images;
+	for (const auto& e : fs::directory_iterator(dir + "/s_Images")) images.push_back(e.path());
+	std::sort(images.begin(), images.end());
+	const fs::path cut = images.at(4);
+	fs::resize_file(cut, fs::file_size(cut) / 2);
+	ScanApp::Options s;
+	s.ini = kIni;
+	s.histogram = trainHistogram(dir);
+	s.scan.input = dir + "/s.rawlog";
+	s.scan.output = dir + "/out.rawlog";
+	s.verbosity = mrpt::system::LVL_ERROR;
+	try
+	{
+		ScanApp(s).run();
+		FAIL() << "a cut image must not be scanned";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find(cut.filename().string()), std::string::npos) << e.what();
+		EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+	}
+	EXPECT_FALSE(fs::exists(s.scan.output));
 }

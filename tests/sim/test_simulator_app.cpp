@@ -57,6 +57,22 @@ TEST(SimulatorApp, RawlogPassesRawlogEditInfo)
 	EXPECT_NE(info.find("Observations format               : Yes"), std::string::npos) << info;
 }
 
+TEST(SimulatorApp, ImpossibleFrameAndThreadCountsAreRefused)
+{
+	SimOptions o;
+	o.world_file = kSource + "/worlds/factory.world";
+	o.route_file = kSource + "/worlds/factory.route";
+	o.output = test::tempDir() + "/refused.rawlog";
+	Simulator sim;
+	sim.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+	o.max_frames = -1;  // once ran the whole route
+	EXPECT_THROW(sim.run(o), std::invalid_argument);
+	o.max_frames = 1;
+	o.threads = 70000;  // once crashed at exit
+	EXPECT_THROW(sim.run(o), std::invalid_argument);
+	EXPECT_FALSE(fs::exists(o.output));
+}
+
 TEST(SimulatorApp, BadInputLeavesNoOutput)
 {
 	const std::string out = test::tempDir() + "/never.rawlog";

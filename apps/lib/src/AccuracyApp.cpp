@@ -38,6 +38,9 @@ AccuracyApp::AccuracyApp(Options o) : mrpt::system::COutputLogger("omnirange-acc
 eval::AccuracyResult AccuracyApp::run()
 {
 	const auto& a = o_.accuracy;
+	requireOutputsAreNotInputs({o_.output + "_pairs.csv", o_.output + "_histogram.png", o_.output + "_table.md",
+								o_.output + "_truth.md"},
+							   {o_.input});
 	const eval::AccuracyResult r = eval::evaluateAccuracy(o_.input, a);
 	const std::string table = r.table(a.max_difference);
 	writeFileAtomically(o_.output + "_pairs.csv", r.csv);

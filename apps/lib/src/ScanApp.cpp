@@ -35,6 +35,7 @@ ScanApp::ScanApp(Options o) : mrpt::system::COutputLogger("omnirange-scan"), o_(
 
 RawlogScanSummary ScanApp::run()
 {
+	requireOutputsAreNotInputs({o_.scan.output}, {o_.scan.input, o_.ini, o_.histogram});
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	const Rangefinder rf(params, ColourModel::load(o_.histogram));
 	Progress progress("objects read");

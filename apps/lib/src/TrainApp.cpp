@@ -50,6 +50,11 @@ TrainApp::TrainApp(Options o) : mrpt::system::COutputLogger("omnirange-train"), 
 
 RawlogTrainingResult TrainApp::run()
 {
+	const auto& t = o_.training;
+	const std::string fig = t.figures_prefix;
+	requireOutputsAreNotInputs({o_.output, o_.learn_ini, fig.empty() ? "" : fig + "_birdseye.png",
+								fig.empty() ? "" : fig + "_laser.png", fig.empty() ? "" : fig + "_fused.png"},
+							   {t.input, o_.ini});
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	Progress progress("objects read");
 	if (!o_.learn_ini.empty()) return learn(params);

@@ -4,10 +4,41 @@
 #include <opencv2/imgproc.hpp>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <vector>
 #include <stdexcept>
 
 namespace omnirange
 {
+namespace
+{
+/** Why the bytes of an image file are not a whole JPEG or PNG, or "". A cut
+ * file would otherwise decode with grey rows and only a libjpeg warning. */
+std::string incompleteImage(const std::string& b)
+{
+	const auto ends_with_within = [&](const std::string& marker, std::size_t tail) {
+		const std::size_t from = b.size() > tail ? b.size() - tail : 0;
+		return b.find(marker, from) != std::string::npos;
+	};
+	if (b.size() >= 2 && static_cast<unsigned char>(b[0]) == 0xFF && static_cast<unsigned char>(b[1]) == 0xD8)
+		return ends_with_within("\xFF\xD9", 64) ? "" : "truncated: no JPEG end-of-image marker";
+	if (b.size() >= 8 && b.compare(1, 3, "PNG") == 0) return ends_with_within("IEND", 16) ? "" : "truncated: no PNG end chunk";
+	return "";
+}
+
+cv::Mat readImageFile(const std::string& file, const std::string& label)
+{
+	std::ifstream f(file, std::ios::binary);
+	const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+	if (!f.good() && !f.eof()) throw std::runtime_error("image '" + file + "' of " + label + " is unreadable");
+	if (const std::string why = incompleteImage(bytes); !why.empty())
+		throw std::runtime_error("image '" + file + "' of " + label + " is " + why);
+	const std::vector<unsigned char> buf(bytes.begin(), bytes.end());
+	return buf.empty() ? cv::Mat() : cv::imdecode(buf, cv::IMREAD_COLOR);
+}
+}  // namespace
+
 cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
 {
 	cv::Mat img;
@@ -16,7 +47,7 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
 		// Read the file ourselves: CImage's lazy loading shares state between
 		// threads and reports a missing file with a stack trace.
 		const std::string file = obs.image.getExternalStorageFileAbsolutePath();
-		if (std::filesystem::is_regular_file(file)) img = cv::imread(file, cv::IMREAD_COLOR);
+		if (std::filesystem::is_regular_file(file)) img = readImageFile(file, obs.sensorLabel);
 		if (img.empty())
 			throw std::runtime_error("image '" + file + "' of " + obs.sensorLabel +
 									 " is missing or unreadable");
