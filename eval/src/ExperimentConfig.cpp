@@ -79,6 +79,7 @@ void checkSimulatorInputs(const ExperimentConfig& c)
 	sim::RobotParams robot;
 	try
 	{
+		requireNoRepeatedKeys(c.robot);
 		robot.loadFromConfig(mrpt::config::CConfigFile(c.robot));
 	}
 	catch (const std::invalid_argument& e)
@@ -97,6 +98,7 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 	c.ini_file = ini;
 	try
 	{
+		requireNoRepeatedKeys(ini);
 		const mrpt::config::CConfigFile cfg(ini);
 		table().load(c, cfg, "experiment");
 		resolvePaths(c, fs::absolute(ini).parent_path());

@@ -1,13 +1,13 @@
 #include "omnirange_sim/Simulator.h"
 
-#include <omnirange/io/SensorLabels.h>
-
 #include "omnirange_sim/FloorTruth.h"
 #include "omnirange_sim/OmniRenderer.h"
 #include "omnirange_sim/Route.h"
 #include "omnirange_sim/SensorModels.h"
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/SensorLabels.h>
+#include <omnirange/io/OptionsTable.h>
 #include <omnirange/io/RawlogWriter.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -54,6 +54,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 			throw std::runtime_error(o.robot_ini + ": cannot open robot ini");
 		try
 		{
+			requireNoRepeatedKeys(o.robot_ini);
 			robot.loadFromConfig(mrpt::config::CConfigFile(o.robot_ini));
 		}
 		catch (const std::invalid_argument& e)

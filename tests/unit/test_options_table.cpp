@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 using namespace omnirange;
 
@@ -83,4 +84,23 @@ TEST(OptionsTable, PrintedOptionsLoadBackEqual)
 	// Every field appears once: one line per key.
 	const std::string ini = p.asIni();
 	EXPECT_EQ(static_cast<std::size_t>(std::count(ini.begin(), ini.end(), '\n')), RangefinderParams::table().keys().size());
+}
+
+TEST(OptionsTable, ARepeatedKeyIsAnErrorNamingTheLine)
+{
+	const std::string path = testing::TempDir() + "repeated.ini";
+	std::ofstream(path) << "[rangefinder]\n; N twice\nN = 20\nthreshold = 0.1\n\n[other]\nN = 3\n[rangefinder]\nN = 5\n";
+	try
+	{
+		requireNoRepeatedKeys(path);
+		FAIL() << "a repeated key must not pass";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("repeated.ini:9: key 'N' repeats in [rangefinder] (first at line 3)"),
+				  std::string::npos)
+			<< e.what();
+	}
+	std::ofstream(path) << "[a]\nN = 1\n[b]\nN = 2\n";
+	EXPECT_NO_THROW(requireNoRepeatedKeys(path));  // the same key in two sections is fine
 }

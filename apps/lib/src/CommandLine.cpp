@@ -80,6 +80,7 @@ RangefinderParams loadRangefinderIni(const std::string& file, const std::string&
 	RangefinderParams p;
 	try
 	{
+		requireNoRepeatedKeys(file);
 		p.loadFromConfig(mrpt::config::CConfigFile(file), section);
 	}
 	catch (const std::invalid_argument& e)

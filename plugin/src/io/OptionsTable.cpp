@@ -7,6 +7,8 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <map>
 #include <sstream>
 
 namespace omnirange
@@ -69,6 +71,33 @@ std::string formatDouble(double v)
 	o.precision(10);
 	o << v;
 	return o.str();
+}
+
+void requireNoRepeatedKeys(const std::string& path)
+{
+	std::ifstream f(path);
+	if (!f) throw std::invalid_argument("cannot open ini file '" + path + "'");
+	std::map<std::string, int> seen;  // "section/key" -> line
+	std::string section;
+	int n = 0;
+	for (std::string line; std::getline(f, line);)
+	{
+		++n;
+		const std::string t = trimmed(line);
+		if (t.empty() || t[0] == ';' || t[0] == '#') continue;
+		if (t[0] == '[')
+		{
+			section = t.substr(1, t.find(']') == std::string::npos ? std::string::npos : t.find(']') - 1);
+			continue;
+		}
+		const auto eq = t.find('=');
+		if (eq == std::string::npos) continue;
+		const std::string key = trimmed(t.substr(0, eq));
+		const auto [it, fresh] = seen.emplace(section + "/" + key, n);
+		if (!fresh)
+			throw std::invalid_argument(path + ":" + std::to_string(n) + ": key '" + key + "' repeats in [" + section +
+										"] (first at line " + std::to_string(it->second) + ")");
+	}
 }
 
 std::vector<std::string> checkSectionKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,

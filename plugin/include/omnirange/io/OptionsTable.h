@@ -144,6 +144,11 @@ class OptionsTable
 	std::vector<std::pair<std::string, std::string>> renamed_;
 };
 
+/** Throws std::invalid_argument("FILE:LINE: ...") if a key appears twice in
+ * one section of the ini file `path` (MRPT's reader keeps the last one
+ * silently) or the file cannot be read. */
+void requireNoRepeatedKeys(const std::string& path);
+
 /** The parts of load() that do not depend on the struct: the section's
  * keys, each checked against `known` and `renamed`. Returns the keys present. */
 std::vector<std::string> checkSectionKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
