@@ -9,6 +9,8 @@
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -34,10 +36,7 @@ mrpt::maps::COccupancyGridMap2D loadGrid(const std::string& file)
 Experiment::Experiment(ExperimentConfig config)
 	: mrpt::system::COutputLogger("omnirange-experiment"), c_(std::move(config))
 {
-	out_ = fs::absolute(c_.output).string();
-	dataset_ = out_ + "/dataset/" + c_.name + ".rawlog";
-	histogram_ = out_ + "/floor.hist";
-	scanned_ = out_ + "/scanned.rawlog";
+	setFolder(fs::absolute(c_.output).string());
 	r_.has_check_region = c_.hasCheckRegion();
 	// The laser's missing returns are free space; the omnicam's are not (emptyLike()).
 	r_.sensors = {{kLaserLabel, "laser", c_.map_laser_ini, c_.icp_laser_ini, true, {}, {}, {}, 0, 0},
@@ -57,7 +56,45 @@ void Experiment::stage(const std::string& name, const std::function<void()>& bod
 	}
 }
 
+void Experiment::setFolder(const std::string& dir)
+{
+	out_ = dir;
+	dataset_ = out_ + "/dataset/" + c_.name + ".rawlog";
+	histogram_ = out_ + "/floor.hist";
+	scanned_ = out_ + "/scanned.rawlog";
+}
+
 Metrics Experiment::run()
+{
+	// Every stage writes into a fresh staging folder; the report folder is
+	// replaced only when all of them succeeded, so a failed run never leaves
+	// new data beside an old report.
+	const std::string report = fs::absolute(c_.output).lexically_normal().string();
+	const std::string staging = report + ".staging-" + std::to_string(::getpid());
+	fs::remove_all(staging);
+	setFolder(staging);
+	Metrics m;
+	try
+	{
+		m = runStages();
+	}
+	catch (const std::exception& e)
+	{
+		const std::string failed = report + ".failed";
+		fs::remove_all(failed);
+		fs::rename(staging, failed);
+		throw std::runtime_error(std::string(e.what()) + " (partial output in '" + failed + "'; '" + report +
+								 "' is as it was)");
+	}
+	const std::string old = report + ".old-" + std::to_string(::getpid());
+	if (fs::exists(report)) fs::rename(report, old);
+	fs::rename(staging, report);
+	fs::remove_all(old);
+	setFolder(report);
+	return m;
+}
+
+Metrics Experiment::runStages()
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	MRPT_LOG_INFO_STREAM("experiment " << c_.name << " from " << c_.ini_file << "; rangefinder options:\n"

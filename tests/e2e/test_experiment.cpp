@@ -2,6 +2,8 @@
 // icp-slam: its numbers must be within bounds a broken stage would miss.
 #include "Programs.h"
 
+#include <fstream>
+
 #include <mrpt/config/CConfigFile.h>
 
 using namespace omnirange::e2e;
@@ -63,4 +65,32 @@ TEST(Experiment, BadIniFailsBeforeAnyStage)
 	const RunResult none = run(app("omnirange-experiment") + " -q " + q(dir + "/none.ini"));
 	EXPECT_EQ(none.code, 1);
 	EXPECT_NE(none.out.find("cannot open experiment ini"), std::string::npos) << none.out;
+}
+
+TEST(Experiment, AFailedRunLeavesTheOldReportAsItWas)
+{
+	const std::string dir = workDir("experiment_staging");
+	const std::string report = dir + "/report";
+	RunResult r = run(app("omnirange-experiment") + " -q " + q(kSource + "/ini/maze.ini") + " -n 40 -o " + q(report));
+	ASSERT_EQ(r.code, 0) << r.out;
+	const RunResult before = run("md5sum " + q(report + "/report.md") + " " + q(report + "/metrics.ini") + " " +
+								 q(report + "/dataset/maze.rawlog"));
+	// The same run, but observations2map given an empty configuration: it
+	// builds no map and the maps stage fails after simulate, train and scan wrote.
+	const std::string ini = kSource + "/ini/tmp-staging.ini";
+	std::ofstream(dir + "/empty.ini") << "";
+	ASSERT_EQ(run("sed 's#^map_omni_ini = .*#map_omni_ini = " + dir + "/empty.ini#' " + q(kSource + "/ini/maze.ini") +
+				  " > " + q(ini)).code,
+			  0);
+	r = run(app("omnirange-experiment") + " -q " + q(ini) + " -n 30 -o " + q(report));
+	fs::remove(ini);
+	EXPECT_EQ(r.code, 1) << r.out;
+	EXPECT_NE(r.out.find("maps with ground-truth poses"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("is as it was"), std::string::npos) << r.out;
+	const RunResult after = run("md5sum " + q(report + "/report.md") + " " + q(report + "/metrics.ini") + " " +
+								q(report + "/dataset/maze.rawlog"));
+	EXPECT_EQ(after.out, before.out);
+	EXPECT_TRUE(fs::exists(report + ".failed/dataset/maze.rawlog"));  // what the failed run made, for a look
+	for (const auto& e : fs::directory_iterator(dir))
+		EXPECT_EQ(e.path().string().find(".staging-"), std::string::npos) << e.path();
 }

@@ -60,10 +60,14 @@ class Experiment : public mrpt::system::COutputLogger
 {
    public:
 	explicit Experiment(ExperimentConfig config);
-	/** Runs every stage; a failed stage throws std::runtime_error naming it. */
+	/** Runs every stage into a staging folder beside the report folder, and
+	 * replaces the report folder with it when all succeeded; a failed stage
+	 * throws std::runtime_error naming it, leaving the report folder as it was. */
 	Metrics run();
 
    private:
+	void setFolder(const std::string& dir);
+	Metrics runStages();
 	void stage(const std::string& name, const std::function<void()>& body);
 	void simulate();
 	void train();
