@@ -1,9 +1,13 @@
 #include "omnirange/io/AtomicWrite.h"
 
+#include <fcntl.h>
 #include <opencv2/imgcodecs.hpp>
 #include <unistd.h>
+#include <zlib.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
@@ -18,6 +22,7 @@ void writeAtomically(
 	try
 	{
 		write(tmp);
+		syncToDisk(tmp, path);
 	}
 	catch (...)
 	{
@@ -29,6 +34,30 @@ void writeAtomically(
 		std::remove(tmp.c_str());
 		throw std::runtime_error("cannot rename temporary file to '" + path + "'");
 	}
+}
+
+void syncToDisk(const std::string& path, const std::string& what)
+{
+	const int fd = ::open(path.c_str(), O_RDONLY);
+	const bool ok = fd >= 0 && ::fsync(fd) == 0;
+	if (fd >= 0) ::close(fd);
+	if (!ok) throw std::runtime_error("cannot write '" + what + "' to disk: " + std::strerror(errno));
+}
+
+void requireWholeGzipFile(const std::string& path, const std::string& what)
+{
+	gzFile f = ::gzopen(path.c_str(), "rb");
+	if (!f) throw std::runtime_error("cannot read back '" + what + "'");
+	std::vector<char> buf(1 << 16);
+	int n = 0;
+	while ((n = ::gzread(f, buf.data(), static_cast<unsigned>(buf.size()))) > 0)
+	{
+	}
+	int err = Z_OK;
+	::gzerror(f, &err);
+	const bool closed = ::gzclose_r(f) == Z_OK;
+	const bool whole = n == 0 && (err == Z_OK || err == Z_STREAM_END) && closed;
+	if (!whole) throw std::runtime_error("'" + what + "' did not reach the disk whole (is the disk full?)");
 }
 
 void writeFileAtomically(const std::string& path, const std::string& bytes)

@@ -1,5 +1,7 @@
 #include "omnirange/io/RawlogWriter.h"
 
+#include "omnirange/io/AtomicWrite.h"
+
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <opencv2/imgcodecs.hpp>
@@ -47,7 +49,15 @@ RawlogWriter::~RawlogWriter()
 
 void RawlogWriter::write(const mrpt::serialization::CSerializable& obj)
 {
-	mrpt::serialization::archiveFrom(*out_) << obj;
+	try
+	{
+		mrpt::serialization::archiveFrom(*out_) << obj;
+	}
+	catch (const std::exception&)
+	{
+		// MRPT's message is a stack trace that does not name the file.
+		throw std::runtime_error("cannot write rawlog '" + path_ + "' (is the disk full?)");
+	}
 	++count_;
 }
 
@@ -71,6 +81,10 @@ mrpt::img::CImage RawlogWriter::externalImage(
 void RawlogWriter::commit()
 {
 	out_->close();
+	// CFileGZOutputStream::close() reports nothing: read the file back, so a
+	// flush that failed (a full disk) is found before the file is renamed.
+	requireWholeGzipFile(tmp_path_, path_);
+	syncToDisk(tmp_path_, path_);
 	if (has_images_)
 	{
 		fs::remove_all(images_);

@@ -12,11 +12,18 @@ class Mat;
 
 namespace omnirange
 {
-/** Calls `write(tmp_path)` and renames tmp_path to `path` when it returns.
+/** Calls `write(tmp_path)`, syncs it to disk and renames it to `path`.
  * If `write` throws, the temporary file is removed and the error rethrown;
  * an existing `path` is left untouched. */
 void writeAtomically(
 	const std::string& path, const std::function<void(const std::string&)>& write);
+
+/** fsync()s the file `path`; throws std::runtime_error naming `what` if it fails. */
+void syncToDisk(const std::string& path, const std::string& what);
+
+/** Reads the gzip file `path` to its end; throws std::runtime_error naming
+ * `what` unless it is whole (a write that failed leaves it cut short). */
+void requireWholeGzipFile(const std::string& path, const std::string& what);
 
 /** Writes `bytes` to `path` atomically; throws std::runtime_error naming the
  * file on any I/O failure. */
