@@ -37,6 +37,8 @@ Route loadRoute(const std::string& path)
 		}
 		if (tok.size() != 2) throw fail("expected 'x y' in metres");
 		const Vec2 p{xy[0], xy[1]};
+		if (!(std::abs(p.x) <= kMaxWorldCoordinate && std::abs(p.y) <= kMaxWorldCoordinate))
+			throw fail("a waypoint beyond " + std::to_string(static_cast<int>(kMaxWorldCoordinate)) + " m from the origin");
 		if (!r.waypoints.empty() && (p - r.waypoints.back()).norm() < 1e-6)
 			throw fail("waypoint repeats the previous one");
 		r.waypoints.push_back(p);

@@ -8,6 +8,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -74,6 +75,9 @@ class Parser
 			w_.hi = {fl.num("xmax"), fl.num("ymax")};
 			if (!(w_.hi.x > w_.lo.x && w_.hi.y > w_.lo.y))
 				throw error("bounds need xmax > xmin and ymax > ymin");
+			if (!(std::max({std::abs(w_.lo.x), std::abs(w_.lo.y), std::abs(w_.hi.x), std::abs(w_.hi.y)}) <=
+				  kMaxWorldCoordinate))
+				throw error("bounds beyond " + std::to_string(static_cast<int>(kMaxWorldCoordinate)) + " m from the origin");
 			have_bounds_ = true;
 		}
 		else if (cmd == "floor")
@@ -185,6 +189,10 @@ class Parser
 	{
 		const double z0 = fl.num("z0", 0.0), z1 = fl.num("z1");
 		if (z0 < 0 || !(z1 > z0)) throw error("need 0 <= z0 < z1");
+		for (const Vec2& c : {fp.lo(), fp.hi()})
+			if (!(std::abs(c.x) <= kMaxWorldCoordinate && std::abs(c.y) <= kMaxWorldCoordinate))
+				throw error("the solid reaches beyond " + std::to_string(static_cast<int>(kMaxWorldCoordinate)) +
+							" m from the origin");
 		w_.solids.push_back({fp, z0, z1, material(fl), line_});
 	}
 

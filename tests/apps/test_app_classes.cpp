@@ -228,3 +228,28 @@ TEST(AppClasses, ACutImageIsAnErrorNamingTheFile)
 	}
 	EXPECT_FALSE(fs::exists(s.scan.output));
 }
+
+TEST(AppClasses, AHistogramOfAnotherFloorIsWarnedAbout)
+{
+	const std::string dir = workDir("other_floor");
+	// A floor of pure magenta: nothing in the factory looks like it.
+	ColourHistogram magenta;
+	const std::uint8_t bgr[3] = {255, 0, 255};
+	for (int i = 0; i < 100; ++i) magenta.addPixel(bgr);
+	ColourModel(magenta).save(dir + "/magenta.hist");
+	ScanApp::Options s;
+	s.ini = kIni;
+	s.histogram = dir + "/magenta.hist";
+	s.scan.input = kSample;
+	s.scan.output = dir + "/out.rawlog";
+	s.verbosity = mrpt::system::LVL_WARN;
+	ScanApp app(s);
+	std::string warned;
+	app.logRegisterCallback([&](std::string_view msg, mrpt::system::VerbosityLevel level, std::string_view,
+								mrpt::Clock::time_point) {
+		if (level == mrpt::system::LVL_WARN) warned += std::string(msg);
+	});
+	const auto r = app.run();
+	EXPECT_LT(r.hits, r.rays / 50);
+	EXPECT_NE(warned.find("magenta.hist"), std::string::npos) << warned;
+}

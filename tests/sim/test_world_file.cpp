@@ -140,3 +140,28 @@ TEST(Route, TrajectoryDrivesAndTurns)
 	EXPECT_NEAR(poses.back().yaw, std::acos(0.0), 1e-9);
 	EXPECT_GT(poses.back().y, 1.7);
 }
+
+TEST(WorldFile, FarAwaySolidsAndWaypointsAreErrorsNotMemory)
+{
+	// Once: bad_alloc for the maps of a world 2000 km wide; a hang for a waypoint at 1e300.
+	const auto far = test::writeFile("far.world", "omnirange-world 1\nbox x=1e6 y=0 w=1 d=1 z1=1 material=brick\n");
+	try
+	{
+		loadWorld(far);
+		FAIL() << "a solid 1000 km away must not load";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("far.world:2:"), std::string::npos) << e.what();
+	}
+	const auto route = test::writeFile("far.route", "0 0\n1e300 0\n");
+	try
+	{
+		loadRoute(route);
+		FAIL() << "a waypoint at 1e300 m must not load";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("far.route:2:"), std::string::npos) << e.what();
+	}
+}

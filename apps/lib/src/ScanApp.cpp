@@ -40,8 +40,14 @@ RawlogScanSummary ScanApp::run()
 	const Rangefinder rf(params, ColourModel::load(o_.histogram));
 	Progress progress("objects read");
 	const auto s = scanRawlog(rf, o_.scan, progressAt(o_.verbosity, progress));
-	MRPT_LOG_INFO_FMT("%zu images scanned, %.1f %% of rays hit, %zu objects -> %s", s.images,
-					  100.0 * s.hits / std::max<std::size_t>(1, s.rays), s.objects, o_.scan.output.c_str());
+	const double hit = 100.0 * s.hits / std::max<std::size_t>(1, s.rays);
+	MRPT_LOG_INFO_FMT("%zu images scanned, %.1f %% of rays hit, %zu objects -> %s", s.images, hit, s.objects,
+					  o_.scan.output.c_str());
+	// Almost no hit at all is what a histogram trained on another floor, in
+	// other light or with another camera gives: worth saying, not an error.
+	if (hit < 2.0)
+		MRPT_LOG_WARN_FMT("only %.1f %% of the rays hit anything: was '%s' trained on this floor, light and camera?",
+						  hit, o_.histogram.c_str());
 	return s;
 }
 

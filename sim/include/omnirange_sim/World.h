@@ -69,6 +69,11 @@ class World
 	std::vector<std::vector<int>> grid_;  // solids overlapping each cell
 };
 
+/** [m] the largest |x| or |y| a world or route may use: the maps and the
+ * renderer's shadow grid grow with the extent (a solid 1e6 m away once
+ * asked for more memory than there is). */
+constexpr double kMaxWorldCoordinate = 1000.0;
+
 /** Reads a world file; throws std::runtime_error "FILE:LINE: message". */
 World loadWorld(const std::string& path);
 
