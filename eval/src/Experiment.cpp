@@ -4,6 +4,7 @@
 #include "omnirange_eval/Figures.h"
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/Temporaries.h>
 #include <omnirange/io/RawlogScan.h>
 
 #include <mrpt/io/CFileGZInputStream.h>
@@ -72,6 +73,7 @@ Metrics Experiment::run()
 	const std::string report = fs::absolute(c_.output).lexically_normal().string();
 	const std::string staging = report + ".staging-" + std::to_string(::getpid());
 	fs::remove_all(staging);
+	temporaries::add(staging);
 	setFolder(staging);
 	Metrics m;
 	try
@@ -80,12 +82,14 @@ Metrics Experiment::run()
 	}
 	catch (const std::exception& e)
 	{
+		temporaries::forget(staging);
 		const std::string failed = report + ".failed";
 		fs::remove_all(failed);
 		fs::rename(staging, failed);
 		throw std::runtime_error(std::string(e.what()) + " (partial output in '" + failed + "'; '" + report +
 								 "' is as it was)");
 	}
+	temporaries::forget(staging);
 	const std::string old = report + ".old-" + std::to_string(::getpid());
 	if (fs::exists(report)) fs::rename(report, old);
 	fs::rename(staging, report);

@@ -1,10 +1,13 @@
 #include "omnirange_eval/ExternalProgram.h"
 
+#include <omnirange/io/Temporaries.h>
+
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
@@ -25,6 +28,10 @@ std::string lastLine(const std::string& file)
 /** In the child: redirect, change folder, exec; never returns. */
 [[noreturn]] void execIn(const std::vector<char*>& args, const std::string& dir, const std::string& log_path)
 {
+	// The run blocks SIGINT and SIGTERM (Temporaries.h); the program must not inherit that.
+	sigset_t none;
+	sigemptyset(&none);
+	::sigprocmask(SIG_SETMASK, &none, nullptr);
 	const int in = ::open("/dev/null", O_RDONLY);
 	const int out = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
 	if (in < 0 || out < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(out, 2) < 0 ||
@@ -47,9 +54,15 @@ void runProgram(const std::vector<std::string>& argv, const std::string& dir, co
 	const pid_t pid = ::fork();
 	if (pid < 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(errno));
 	if (pid == 0) execIn(args, dir, log_path);
+	temporaries::setChild(pid);  // an interrupt ends it before removing its folder
 	int status = 0;
 	while (::waitpid(pid, &status, 0) < 0)
-		if (errno != EINTR) throw std::runtime_error("lost " + argv[0] + ": " + std::strerror(errno));
+		if (errno != EINTR)
+		{
+			temporaries::setChild(0);
+			throw std::runtime_error("lost " + argv[0] + ": " + std::strerror(errno));
+		}
+	temporaries::setChild(0);
 	if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
 	const std::string how = WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
 											  : "signal " + std::to_string(WTERMSIG(status));

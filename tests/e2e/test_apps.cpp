@@ -124,3 +124,21 @@ TEST(Apps, AccuracyOfTheFactorySample)
 	expectCleanFailure(none, "no LASER observation had a partner labelled OMNISCAN within 0.1 s");
 	EXPECT_FALSE(fs::exists(dir + "/none_table.md"));
 }
+
+TEST(Apps, AnInterruptedRunLeavesNoTemporaries)
+{
+	// SIGINT in the middle of a whole-route simulation and of an experiment.
+	const std::string dir = workDir("interrupted");
+	RunResult r = run("timeout -s INT 2 " + app("omnirange-sim") + " -q -w " + q(kSource + "/worlds/factory.world") +
+					  " -r " + q(kSource + "/worlds/factory.route") + " -o " + q(dir + "/sim.rawlog"));
+	EXPECT_NE(r.code, 0) << r.out;  // it was interrupted, not finished
+	r = run("timeout -s INT 4 " + app("omnirange-experiment") + " -q " + q(kSource + "/ini/maze.ini") + " -o " +
+			q(dir + "/report"));
+	EXPECT_NE(r.code, 0) << r.out;
+	for (const auto& e : fs::recursive_directory_iterator(dir))
+	{
+		EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos) << e.path();
+		EXPECT_EQ(e.path().string().find(".staging-"), std::string::npos) << e.path();
+	}
+	EXPECT_FALSE(fs::exists(dir + "/sim.rawlog"));
+}

@@ -1,6 +1,7 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange/core/Rangefinder.h>
+#include <omnirange/io/Temporaries.h>
 
 #include <mrpt/config/CConfigFile.h>
 
@@ -57,6 +58,7 @@ void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv)
 
 int runApp(const std::string& name, const std::function<void()>& body)
 {
+	temporaries::removeOnInterrupt();
 	try
 	{
 		body();

@@ -1,5 +1,7 @@
 #include "omnirange/io/AtomicWrite.h"
 
+#include "omnirange/io/Temporaries.h"
+
 #include <fcntl.h>
 #include <opencv2/imgcodecs.hpp>
 #include <unistd.h>
@@ -19,6 +21,7 @@ void writeAtomically(
 {
 	const std::string tmp =
 		path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
+	temporaries::add(tmp);
 	try
 	{
 		write(tmp);
@@ -27,8 +30,10 @@ void writeAtomically(
 	catch (...)
 	{
 		std::remove(tmp.c_str());
+		temporaries::forget(tmp);
 		throw;
 	}
+	temporaries::forget(tmp);
 	if (std::rename(tmp.c_str(), path.c_str()) != 0)
 	{
 		std::remove(tmp.c_str());

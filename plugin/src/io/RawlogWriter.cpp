@@ -1,6 +1,7 @@
 #include "omnirange/io/RawlogWriter.h"
 
 #include "omnirange/io/AtomicWrite.h"
+#include "omnirange/io/Temporaries.h"
 
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
@@ -34,12 +35,18 @@ RawlogWriter::RawlogWriter(const std::string& path, int gz_level)
 	  tmp_images_(images_ + ".tmp-" + std::to_string(::getpid())),
 	  out_(std::make_unique<mrpt::io::CFileGZOutputStream>())
 {
+	temporaries::add(tmp_path_);
+	temporaries::add(tmp_images_);
 	if (!out_->open(tmp_path_, gz_level))
+	{
+		temporaries::forget(tmp_path_), temporaries::forget(tmp_images_);
 		throw std::runtime_error("cannot write rawlog '" + path + "'");
+	}
 }
 
 RawlogWriter::~RawlogWriter()
 {
+	temporaries::forget(tmp_path_), temporaries::forget(tmp_images_);
 	if (committed_) return;
 	out_.reset();
 	std::error_code ec;

@@ -1,0 +1,21 @@
+#pragma once
+// The temporary files and folders a run has made and not yet renamed into
+// place. An interrupted run (SIGINT, SIGTERM) removes them before it ends,
+// so it leaves no NAME.tmp-PID files or half-filled image folders behind.
+
+#include <string>
+
+namespace omnirange::temporaries
+{
+/** Remembers `path` (a file or a folder) until forget(path). */
+void add(const std::string& path);
+void forget(const std::string& path);
+/** The program a run has started and waits for (0: none): an interrupt
+ * ends it first, so it writes nothing into a folder being removed. */
+void setChild(int pid);
+/** Removes every remembered path (at an interrupt). */
+void removeAll();
+/** On SIGINT or SIGTERM: removeAll(), then end by that signal as before. */
+void removeOnInterrupt();
+
+}  // namespace omnirange::temporaries
