@@ -1,6 +1,8 @@
 #pragma once
 // Small worlds written by the tests into a temporary folder.
 
+#include <omnirange_sim/RobotParams.h>
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -33,6 +35,14 @@ inline std::string roomWorld()
 		   "floor material=concrete\n"
 		   "box x=2.5 y=0 w=1.0 d=4 z1=2 material=paint_red\n"
 		   "box x=0 y=2.0 w=1.5 d=1.0 z1=2 material=paint_blue\n";
+}
+
+/** The stock robot without sensor noise: images that tests can compare pixel by pixel. */
+inline RobotParams quietRobot()
+{
+	RobotParams r;
+	r.omnicam.noise_sigma = 0;
+	return r;
 }
 
 }  // namespace omnirange::sim::test

@@ -19,13 +19,6 @@ using namespace omnirange::sim;
 
 namespace
 {
-RobotParams quietRobot()
-{
-	RobotParams r;
-	r.omnicam.noise_sigma = 0;
-	return r;
-}
-
 /** Mean absolute horizontal gradient: how sharp an image is. */
 double sharpness(const cv::Mat& bgr)
 {
@@ -46,13 +39,13 @@ cv::Scalar floorPatch(const OmniRenderer& r, const cv::Mat& img, double x, doubl
 TEST(CameraEffects, BlurSoftensAndVignettingDarkensTheRim)
 {
 	const World w = loadWorld(test::writeFile("room.world", test::roomWorld()));
-	RobotParams robot = quietRobot();
+	RobotParams robot = test::quietRobot();
 	const cv::Mat sharp = OmniRenderer(w, robot).render({0, 0, 0}, 1);
 	robot.omnicam.effects.blur_sigma = 1.5;
 	const cv::Mat blurred = OmniRenderer(w, robot).render({0, 0, 0}, 1);
 	EXPECT_LT(sharpness(blurred), 0.8 * sharpness(sharp));
 
-	robot = quietRobot();
+	robot = test::quietRobot();
 	robot.omnicam.effects.vignetting = 0.4;
 	const OmniRenderer r(w, robot);
 	const cv::Mat vignetted = r.render({0, 0, 0}, 1);
@@ -118,7 +111,7 @@ TEST(CameraEffects, JpegImagesCarryFourTwoZeroChroma)
 TEST(SceneRealism, TilesShowGroutAndOcclusionDarkensTheFootOfWalls)
 {
 	const std::string base = test::roomWorld();
-	RobotParams robot = quietRobot();
+	RobotParams robot = test::quietRobot();
 	const World plain = loadWorld(test::writeFile("plain.world", base));
 	const World dark = loadWorld(test::writeFile("ao.world", base + "light occlusion=0.5 occlusion_radius=0.2\n"));
 	const OmniRenderer rp(plain, robot), ro(dark, robot);

@@ -10,13 +10,6 @@ using namespace omnirange::sim;
 
 namespace
 {
-RobotParams quietRobot()
-{
-	RobotParams r;
-	r.omnicam.noise_sigma = 0;
-	return r;
-}
-
 /** Radius [px] of the first pixel, walking out from the centre along the
  * robot's bearing, whose colour is closer to `wall` than to the floor. */
 double firstWallRadius(const cv::Mat& img, const omnirange::OmniCameraModel& cam, double bearing,
@@ -36,7 +29,7 @@ double firstWallRadius(const cv::Mat& img, const omnirange::OmniCameraModel& cam
 TEST(OmniRenderer, WallsAppearAtTheRadiusTheMirrorModelPredicts)
 {
 	const World w = loadWorld(test::writeFile("room.world", test::roomWorld()));
-	const RobotParams robot = quietRobot();
+	const RobotParams robot = test::quietRobot();
 	const OmniRenderer r(w, robot);
 	const cv::Mat img = r.render({0, 0, 0}, 1);
 	const auto& cam = r.trueCamera();
@@ -66,9 +59,9 @@ TEST(OmniRenderer, WallsAppearAtTheRadiusTheMirrorModelPredicts)
 TEST(OmniRenderer, MisalignedMirrorMovesTheWholeImage)
 {
 	const World w = loadWorld(test::writeFile("room.world", test::roomWorld()));
-	RobotParams shifted = quietRobot();
+	RobotParams shifted = test::quietRobot();
 	shifted.omnicam.centre_offset_u = 6;
-	const cv::Mat a = OmniRenderer(w, quietRobot()).render({0, 0, 0}, 1);
+	const cv::Mat a = OmniRenderer(w, test::quietRobot()).render({0, 0, 0}, 1);
 	const cv::Mat b = OmniRenderer(w, shifted).render({0, 0, 0}, 1);
 	// Column u of the aligned image is column u + 6 of the shifted one.
 	const double diff = cv::norm(a(cv::Rect(200, 200, 600, 368)), b(cv::Rect(206, 200, 600, 368)), cv::NORM_L1);
@@ -96,7 +89,7 @@ TEST(OmniRenderer, DeterministicForASeedAndNoisy)
 TEST(OmniRenderer, RobotBodyAtTheCentreAndBlackBeyondTheRim)
 {
 	const World w = loadWorld(test::writeFile("room.world", test::roomWorld()));
-	const OmniRenderer r(w, quietRobot());
+	const OmniRenderer r(w, test::quietRobot());
 	const cv::Mat img = r.render({0, 0, 0}, 1);
 	const cv::Vec3b centre = img.at<cv::Vec3b>(384, 512);
 	EXPECT_GT(centre[2], 100);  // the red robot
