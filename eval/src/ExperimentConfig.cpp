@@ -76,16 +76,7 @@ void validate(ExperimentConfig& c)
 /** The inputs of later stages, checked now: the robot, the world, the route. */
 void checkSimulatorInputs(const ExperimentConfig& c)
 {
-	sim::RobotParams robot;
-	try
-	{
-		requireNoRepeatedKeys(c.robot);
-		robot.loadFromConfig(mrpt::config::CConfigFile(c.robot));
-	}
-	catch (const std::invalid_argument& e)
-	{
-		throw std::runtime_error(c.robot + ": " + e.what());
-	}
+	const auto robot = sim::RobotParams::loadFile(c.robot);
 	const auto world = sim::loadWorld(c.world);
 	sim::checkRouteClear(sim::loadRoute(c.route), world, robot.robot.clearance, robot.omnicam.camera.h);
 }

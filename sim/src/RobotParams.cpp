@@ -1,8 +1,9 @@
 #include "omnirange_sim/RobotParams.h"
 
-#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CConfigFile.h>
 
 #include <cmath>
+#include <filesystem>
 
 namespace omnirange::sim
 {
@@ -85,6 +86,22 @@ void RobotParams::loadFromConfig(const mrpt::config::CConfigFileBase& c)
 	section(OdometrySimParams::table(), odometry, "odometry");
 	section(RobotBodyParams::table(), robot, "robot");
 	validate();
+}
+
+RobotParams RobotParams::loadFile(const std::string& path)
+{
+	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(path + ": cannot open robot ini");
+	RobotParams r;
+	try
+	{
+		requireNoRepeatedKeys(path);
+		r.loadFromConfig(mrpt::config::CConfigFile(path));
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(path + ": " + e.what());
+	}
+	return r;
 }
 
 void RobotParams::validate() const

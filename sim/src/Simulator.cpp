@@ -7,7 +7,6 @@
 
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/SensorLabels.h>
-#include <omnirange/io/OptionsTable.h>
 #include <omnirange/io/RawlogWriter.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -46,22 +45,12 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	if (o.max_frames < 0) throw std::invalid_argument("max_frames must be >= 0 (0: the whole route)");
 	if (!(o.map_resolution > 0)) throw std::invalid_argument("map resolution must be > 0 m");
 
-	// 1. Inputs: robot, world, route; all checked before anything is written.
-	RobotParams robot;
-	if (!o.robot_ini.empty())
-	{
-		if (!std::filesystem::exists(o.robot_ini))
-			throw std::runtime_error(o.robot_ini + ": cannot open robot ini");
-		try
-		{
-			requireNoRepeatedKeys(o.robot_ini);
-			robot.loadFromConfig(mrpt::config::CConfigFile(o.robot_ini));
-		}
-		catch (const std::invalid_argument& e)
-		{
-			throw std::runtime_error(o.robot_ini + ": " + e.what());
-		}
-	}
+	// 1. Inputs: robot, world, route; all checked before anything is written,
+	//    and none of them is an output.
+	const std::string base = stemOf(o.output);
+	requireOutputsAreNotInputs({o.output, base + "_truemap.png", base + "_truemap.gridmap.gz"},
+							   {o.world_file, o.route_file, o.robot_ini});
+	RobotParams robot = o.robot_ini.empty() ? RobotParams{} : RobotParams::loadFile(o.robot_ini);
 	if (!o.image_format.empty())
 	{
 		robot.omnicam.format = o.image_format;
@@ -126,7 +115,6 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 
 	// 3. The true map, as an MRPT grid map and a PNG.
 	const auto grid = trueMap(world, o.map_resolution, robot.omnicam.camera.h);
-	const std::string base = stemOf(o.output);
 	writeAtomically(base + "_truemap.gridmap.gz", [&](const std::string& tmp) {
 		mrpt::io::CFileGZOutputStream f;
 		if (!f.open(tmp)) throw std::runtime_error("cannot write '" + base + "_truemap.gridmap.gz'");

@@ -71,6 +71,12 @@ TEST(SimulatorApp, ImpossibleFrameAndThreadCountsAreRefused)
 	o.threads = 70000;  // once crashed at exit
 	EXPECT_THROW(sim.run(o), std::invalid_argument);
 	EXPECT_FALSE(fs::exists(o.output));
+	// An output onto an input (here the world file, once destroyed) is refused before any work.
+	o.threads = 2;
+	o.world_file = test::writeFile("own.world", test::roomWorld());
+	o.output = o.world_file;
+	EXPECT_THROW(sim.run(o), std::runtime_error);
+	EXPECT_EQ(loadWorld(o.world_file).solids.size(), 2u);
 }
 
 TEST(SimulatorApp, BadInputLeavesNoOutput)

@@ -93,20 +93,6 @@ RangefinderParams loadRangefinderIni(const std::string& file, const std::string&
 	return p;
 }
 
-void requireOutputsAreNotInputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs)
-{
-	namespace fs = std::filesystem;
-	for (const auto& out : outputs)
-		for (const auto& in : inputs)
-		{
-			if (out.empty() || in.empty()) continue;
-			std::error_code ec;
-			const bool same = (fs::exists(out) && fs::exists(in) && fs::equivalent(out, in, ec)) ||
-				fs::weakly_canonical(out, ec) == fs::weakly_canonical(in, ec);
-			if (same) throw std::runtime_error("the output '" + out + "' is the input '" + in + "': refusing to overwrite it");
-		}
-}
-
 Progress* progressAt(mrpt::system::VerbosityLevel level, Progress& progress)
 {
 	return level <= mrpt::system::LVL_INFO ? &progress : nullptr;

@@ -2,6 +2,7 @@
 
 #include "omnirange_apps/CommandLine.h"
 
+#include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/Progress.h>
 
 namespace omnirange::app
@@ -35,7 +36,8 @@ ScanApp::ScanApp(Options o) : mrpt::system::COutputLogger("omnirange-scan"), o_(
 
 RawlogScanSummary ScanApp::run()
 {
-	requireOutputsAreNotInputs({o_.scan.output}, {o_.scan.input, o_.ini, o_.histogram});
+	// The rawlog input scanRawlog checks itself; these are the app's own inputs.
+	requireOutputsAreNotInputs({o_.scan.output}, {o_.ini, o_.histogram});
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	const Rangefinder rf(params, ColourModel::load(o_.histogram));
 	Progress progress("objects read");

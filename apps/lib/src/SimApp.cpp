@@ -29,12 +29,6 @@ SimApp::Options SimApp::parse(int argc, const char* const* argv)
 
 sim::SimSummary SimApp::run()
 {
-	const auto& s0 = o_.sim;
-	const std::string stem = s0.output.size() > 7 && s0.output.compare(s0.output.size() - 7, 7, ".rawlog") == 0
-		? s0.output.substr(0, s0.output.size() - 7)
-		: s0.output;
-	requireOutputsAreNotInputs({s0.output, stem + "_truemap.png", stem + "_truemap.gridmap.gz"},
-							   {s0.world_file, s0.route_file, s0.robot_ini});
 	sim::Simulator sim;
 	sim.setMinLoggingLevel(o_.verbosity);
 	Progress progress("frames");

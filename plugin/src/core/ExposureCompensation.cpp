@@ -58,9 +58,8 @@ void CompensatedClassifier::classify(const std::uint8_t* bgr, const std::int32_t
 {
 	// Through the base one pixel at a time, from a small buffer of compensated colours.
 	constexpr int kRun = 16;
+	static constexpr std::int32_t kIndex[kRun] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 	std::uint8_t buf[3 * kRun];
-	std::int32_t idx[kRun];
-	for (int i = 0; i < kRun; ++i) idx[i] = i;
 	for (int from = 0; from < count; from += kRun)
 	{
 		const int n = std::min(kRun, count - from);
@@ -69,7 +68,7 @@ void CompensatedClassifier::classify(const std::uint8_t* bgr, const std::int32_t
 			const std::uint8_t* p = bgr + 3 * static_cast<std::size_t>(pixels[from + k]);
 			for (int c = 0; c < 3; ++c) buf[3 * k + c] = lut_[c][p[c]];
 		}
-		base_.classify(buf, idx, n, out + from);
+		base_.classify(buf, kIndex, n, out + from);
 	}
 }
 

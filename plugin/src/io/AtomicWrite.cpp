@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
@@ -39,6 +40,20 @@ void writeAtomically(
 		std::remove(tmp.c_str());
 		throw std::runtime_error("cannot rename temporary file to '" + path + "'");
 	}
+}
+
+void requireOutputsAreNotInputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs)
+{
+	namespace fs = std::filesystem;
+	for (const auto& out : outputs)
+		for (const auto& in : inputs)
+		{
+			if (out.empty() || in.empty()) continue;
+			std::error_code ec;
+			const bool same = (fs::exists(out) && fs::exists(in) && fs::equivalent(out, in, ec)) ||
+				fs::weakly_canonical(out, ec) == fs::weakly_canonical(in, ec);
+			if (same) throw std::runtime_error("the output '" + out + "' is the input '" + in + "': refusing to overwrite it");
+		}
 }
 
 void syncToDisk(const std::string& path, const std::string& what)

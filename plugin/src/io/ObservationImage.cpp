@@ -5,7 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+#include <string_view>
 #include <vector>
 #include <stdexcept>
 
@@ -15,27 +15,29 @@ namespace
 {
 /** Why the bytes of an image file are not a whole JPEG or PNG, or "". A cut
  * file would otherwise decode with grey rows and only a libjpeg warning. */
-std::string incompleteImage(const std::string& b)
+std::string incompleteImage(const std::vector<unsigned char>& bytes)
 {
+	const std::string_view b(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 	const auto ends_with_within = [&](const std::string& marker, std::size_t tail) {
 		const std::size_t from = b.size() > tail ? b.size() - tail : 0;
 		return b.find(marker, from) != std::string::npos;
 	};
 	if (b.size() >= 2 && static_cast<unsigned char>(b[0]) == 0xFF && static_cast<unsigned char>(b[1]) == 0xD8)
 		return ends_with_within("\xFF\xD9", 64) ? "" : "truncated: no JPEG end-of-image marker";
-	if (b.size() >= 8 && b.compare(1, 3, "PNG") == 0) return ends_with_within("IEND", 16) ? "" : "truncated: no PNG end chunk";
+	if (b.size() >= 8 && b.substr(1, 3) == "PNG") return ends_with_within("IEND", 16) ? "" : "truncated: no PNG end chunk";
 	return "";
 }
 
 cv::Mat readImageFile(const std::string& file, const std::string& label)
 {
-	std::ifstream f(file, std::ios::binary);
-	const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-	if (!f.good() && !f.eof()) throw std::runtime_error("image '" + file + "' of " + label + " is unreadable");
+	std::ifstream f(file, std::ios::binary | std::ios::ate);
+	std::vector<unsigned char> bytes(f ? static_cast<std::size_t>(f.tellg()) : 0);
+	f.seekg(0);
+	if (!f || !f.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
+		throw std::runtime_error("image '" + file + "' of " + label + " is unreadable");
 	if (const std::string why = incompleteImage(bytes); !why.empty())
 		throw std::runtime_error("image '" + file + "' of " + label + " is " + why);
-	const std::vector<unsigned char> buf(bytes.begin(), bytes.end());
-	return buf.empty() ? cv::Mat() : cv::imdecode(buf, cv::IMREAD_COLOR);
+	return bytes.empty() ? cv::Mat() : cv::imdecode(bytes, cv::IMREAD_COLOR);
 }
 }  // namespace
 

@@ -1,5 +1,6 @@
 #include "omnirange/io/RawlogScan.h"
 
+#include "omnirange/io/AtomicWrite.h"
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/RawlogProcessor.h"
 #include "omnirange/io/RawlogWriter.h"
@@ -66,10 +67,8 @@ void writeBatch(const Batch& b, RawlogWriter* writer, RawlogScanSummary& sum)
 
 RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, Progress* progress)
 {
-	namespace fs = std::filesystem;
 	if (o.threads < 1 || o.threads > 256) throw std::invalid_argument("threads must be within [1, 256]");
-	if (!o.decode_only && fs::exists(o.output) && fs::exists(o.input) && fs::equivalent(o.input, o.output))
-		throw std::invalid_argument("the output must not be the input rawlog");
+	if (!o.decode_only) requireOutputsAreNotInputs({o.output}, {o.input});
 	cv::setNumThreads(o.threads);
 
 	RawlogProcessor loop(o.input);

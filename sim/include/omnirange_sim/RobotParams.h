@@ -82,6 +82,9 @@ struct RobotParams
 	 * key checked (angles in degrees: keys NAME_deg). Throws
 	 * std::invalid_argument naming the section and key. */
 	void loadFromConfig(const mrpt::config::CConfigFileBase& cfg);
+	/** The robot ini file `path`, checked whole (a repeated key too); throws
+	 * std::runtime_error naming the file. */
+	static RobotParams loadFile(const std::string& path);
 	void validate() const;
 };
 

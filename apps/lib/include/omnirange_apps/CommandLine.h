@@ -48,11 +48,6 @@ int runApp(const std::string& name, const std::function<void()>& body);
 RangefinderParams loadRangefinderIni(const std::string& file, const std::string& section,
 									 mrpt::system::COutputLogger& log);
 
-/** Throws std::runtime_error, before any work, if an output is one of the
- * inputs (the same file, also through links or another spelling): an input
- * is never overwritten. Empty paths are ignored. */
-void requireOutputsAreNotInputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
-
 /** `progress` when `level` shows progress (INFO or more), else nullptr. */
 Progress* progressAt(mrpt::system::VerbosityLevel level, Progress& progress);
 
