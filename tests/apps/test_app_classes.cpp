@@ -8,6 +8,13 @@
 #include <omnirange_apps/TrainApp.h>
 #include <omnirange_eval/ExperimentConfig.h>
 
+#include <omnirange/io/RawlogReader.h>
+
+#include <mrpt/obs/CObservationImage.h>
+#include <mrpt/obs/CSensoryFrame.h>
+
+#include "../common/SensoryFrameFormat.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -227,6 +234,64 @@ TEST(AppClasses, ACutImageIsAnErrorNamingTheFile)
 		EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
 	}
 	EXPECT_FALSE(fs::exists(s.scan.output));
+
+	// Asked to, the scan skips it, names it and scans the other 19.
+	s.scan.skip_bad_images = true;
+	const RawlogScanSummary skipped = ScanApp(s).run();
+	EXPECT_EQ(skipped.images, 19u);
+	EXPECT_EQ(skipped.skipped, 1u);
+	ASSERT_EQ(skipped.skipped_reasons.size(), 1u);
+	EXPECT_NE(skipped.skipped_reasons[0].find(cut.filename().string()), std::string::npos);
+	EXPECT_EQ(skipped.rays, 19u * 360);
+}
+
+TEST(AppClasses, ASensoryFrameRawlogIsTrainedScannedAndScoredInItsOwnFormat)
+{
+	const std::string dir = workDir("sensory_frames");
+	ASSERT_EQ(test::writeSensoryFrameFormat(kSample, dir + "/sf.rawlog"), 20);
+
+	TrainApp::Options t;
+	t.ini = kIni;
+	t.output = dir + "/sf.hist";
+	t.training.input = dir + "/sf.rawlog";
+	t.verbosity = mrpt::system::LVL_ERROR;
+	EXPECT_EQ(TrainApp(t).run().pairs, 20);
+
+	// The same histogram scans both formats; the scores must be the same.
+	const auto scanAndScore = [&](const std::string& in, const std::string& name) {
+		ScanApp::Options s;
+		s.ini = kIni;
+		s.histogram = t.output;
+		s.scan.input = in;
+		s.scan.output = dir + "/" + name + ".rawlog";
+		s.verbosity = mrpt::system::LVL_ERROR;
+		EXPECT_EQ(ScanApp(s).run().images, 20u);
+		AccuracyApp::Options a;
+		a.input = s.scan.output;
+		a.output = dir + "/" + name + "_acc";
+		a.verbosity = mrpt::system::LVL_ERROR;
+		return AccuracyApp(a).run();
+	};
+	const auto sf = scanAndScore(dir + "/sf.rawlog", "sf_scanned");
+	const auto obs = scanAndScore(kSample, "obs_scanned");
+	EXPECT_EQ(sf.frames, 20);
+	EXPECT_EQ(sf.stats.compared, obs.stats.compared);
+	EXPECT_DOUBLE_EQ(sf.stats.meanAbs(), obs.stats.meanAbs());
+
+	// The output keeps the format: each scan inside its image's frame.
+	RawlogReader reader(dir + "/sf_scanned.rawlog");
+	int frames_with_both = 0, bare = 0;
+	while (const auto obj = reader.next())
+	{
+		if (std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) ++bare;
+		const auto frame = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj);
+		if (!frame) continue;
+		const auto image = frame->getObservationBySensorLabel("OMNICAM");
+		const auto scan = frame->getObservationBySensorLabel("OMNISCAN");
+		if (image && scan && image->timestamp == scan->timestamp) ++frames_with_both;
+	}
+	EXPECT_EQ(frames_with_both, 20);
+	EXPECT_EQ(bare, 0);
 }
 
 TEST(AppClasses, AHistogramOfAnotherFloorIsWarnedAbout)

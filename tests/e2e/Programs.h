@@ -34,6 +34,10 @@ inline RunResult run(const std::string& cmd)
 	return r;
 }
 
+inline std::string q(const std::string& s);
+/** The same, run in folder `dir`. */
+inline RunResult run(const std::string& cmd, const std::string& dir) { return run("cd " + q(dir) + " && " + cmd); }
+
 inline std::string app(const std::string& name) { return "'" + kApps + "/" + name + "'"; }
 
 /** A fresh folder for one test. */

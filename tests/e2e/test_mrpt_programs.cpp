@@ -3,6 +3,8 @@
 // plugin.
 #include "Programs.h"
 
+#include "../common/SensoryFrameFormat.h"
+
 #include <cmath>
 
 using namespace omnirange::e2e;
@@ -47,6 +49,31 @@ TEST(MrptPrograms, IcpSlamMapsTheOmniscans)
 	EXPECT_NEAR(std::hypot(last[1], last[2]), 0.4 * 7.6, 0.6);
 	EXPECT_LT(std::abs(last[3]), 0.1);
 	EXPECT_TRUE(fs::exists(dir + "/icp_slam_omniscan/_finalmaps_.txt_mrpt__maps__COccupancyGridMap2D_00.png"));
+}
+
+TEST(MrptPrograms, IcpSlamMapsASensoryFrameRawlogScannedInItsOwnFormat)
+{
+	// The actions/sensory-frames format, scanned: icp-slam reads the
+	// odometry from the actions and the omnicam scans from the frames.
+	const std::string dir = workDir("icp_slam_sf");
+	ASSERT_EQ(omnirange::test::writeSensoryFrameFormat(kSource + "/rawlogs/factory-sample.rawlog", dir + "/sf.rawlog"), 20);
+	const std::string ini = kSource + "/ini/factory.ini";
+	const RunResult t = run(app("omnirange-train") + " -q -i sf.rawlog -c " + q(ini) + " -o f.hist", dir);
+	ASSERT_EQ(t.code, 0) << t.out;
+	const RunResult s = run(app("omnirange-scan") + " -q -i sf.rawlog -c " + q(ini) + " -H f.hist -o scanned.rawlog", dir);
+	ASSERT_EQ(s.code, 0) << s.out;
+	const RunResult info = run("rawlog-edit --info -i scanned.rawlog", dir);
+	ASSERT_EQ(info.code, 0) << info.out;
+	EXPECT_EQ(labelCount(info.out, "OMNISCAN"), 20) << info.out;
+	const RunResult keep = run("rawlog-edit --keep-label OMNISCAN -i scanned.rawlog -o only.rawlog -w", dir);
+	ASSERT_EQ(keep.code, 0) << keep.out;
+	const RunResult icp = run("icp-slam " + q(kSource + "/ini/icp-slam-omniscan.ini") + " only.rawlog", dir);
+	ASSERT_EQ(icp.code, 0) << icp.out;
+	const auto path = readTable(dir + "/icp_slam_omniscan/log_estimated_path.txt");
+	ASSERT_GE(path.size(), 20u);
+	const auto& last = path.back();
+	EXPECT_NEAR(std::hypot(last[1], last[2]), 0.4 * 7.6, 0.6);
+	EXPECT_LT(std::abs(last[3]), 0.1);
 }
 
 TEST(MrptPrograms, RawlogGrabberRunsTheSensorPlugin)

@@ -20,11 +20,15 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images to scan", false, s.omni_label, "LABEL", cmd);
 	TCLAP::ValueArg<int> threads("j", "threads", "threads decoding and scanning images", false, s.threads, "N", cmd);
 	TCLAP::SwitchArg decode_only("", "decode-only", "only read and decode the images, write nothing (to time decoding alone)", cmd);
+	TCLAP::SwitchArg skip_bad("", "skip-bad-images",
+							  "skip a missing, cut or undecodable image (no scan for it; each named, and counted) instead of stopping",
+							  cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	o.ini = ini.getValue(), o.section = section.getValue(), o.histogram = hist.getValue();
 	s.input = in.getValue(), s.output = out.getValue(), s.omni_label = omni.getValue();
 	s.threads = threads.getValue(), s.decode_only = decode_only.getValue();
+	s.skip_bad_images = skip_bad.getValue();
 	o.verbosity = verbosity.level();
 	return o;
 }
@@ -42,6 +46,9 @@ RawlogScanSummary ScanApp::run()
 	const Rangefinder rf(params, ColourModel::load(o_.histogram));
 	Progress progress("objects read");
 	const auto s = scanRawlog(rf, o_.scan, progressAt(o_.verbosity, progress));
+	for (const auto& why : s.skipped_reasons) MRPT_LOG_WARN_FMT("skipped: %s", why.c_str());
+	if (s.skipped > 0)
+		MRPT_LOG_WARN_FMT("%zu of %zu images skipped as bad", s.skipped, s.skipped + s.images);
 	const double hit = 100.0 * s.hits / std::max<std::size_t>(1, s.rays);
 	MRPT_LOG_INFO_FMT("%zu images scanned, %.1f %% of rays hit, %zu objects -> %s", s.images, hit, s.objects,
 					  o_.scan.output.c_str());

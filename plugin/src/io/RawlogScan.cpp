@@ -5,6 +5,8 @@
 #include "omnirange/io/RawlogProcessor.h"
 #include "omnirange/io/RawlogWriter.h"
 
+#include <mrpt/obs/CSensoryFrame.h>
+
 #include <opencv2/core/utility.hpp>
 
 #include <exception>
@@ -44,23 +46,46 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only)
 	});
 }
 
-/** Writes the batch's objects, each image's scan right after the object that holds it. */
-void writeBatch(const Batch& b, RawlogWriter* writer, RawlogScanSummary& sum)
+/** Writes the batch's objects with each image's scan: inside the image's
+ * sensory frame, or right after the image in the observations-only format. */
+void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanSummary& sum)
 {
 	std::size_t k = 0;
 	for (std::size_t i = 0; i < b.objects.size(); ++i)
 	{
-		if (writer) writer->write(*b.objects[i]);
+		std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
 		for (; k < b.images.size() && b.after[k] == i; ++k)
 		{
-			if (b.errors[k]) std::rethrow_exception(b.errors[k]);
+			if (b.errors[k])
+			{
+				if (!skip_bad) std::rethrow_exception(b.errors[k]);
+				try
+				{
+					std::rethrow_exception(b.errors[k]);
+				}
+				catch (const std::exception& e)
+				{
+					++sum.skipped;
+					sum.skipped_reasons.emplace_back(e.what());
+				}
+				continue;
+			}
 			++sum.images;
-			if (!writer) continue;
+			if (!b.scans[k]) continue;  // decode only
 			const auto& scan = *b.scans[k];
-			writer->write(scan);
 			for (std::size_t r = 0; r < scan.getScanSize(); ++r) sum.hits += scan.getScanRangeValidity(r);
 			sum.rays += scan.getScanSize();
+			scans.push_back(b.scans[k]);
 		}
+		if (!writer) continue;
+		if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(b.objects[i]))
+		{
+			for (const auto& scan : scans) sf->insert(scan);
+			writer->write(*sf);
+			continue;
+		}
+		writer->write(*b.objects[i]);
+		for (const auto& scan : scans) writer->write(*scan);
 	}
 }
 }  // namespace
@@ -83,17 +108,23 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	Batch b;
 	const auto flush = [&] {
 		processBatch(b, rf, o.decode_only);
-		writeBatch(b, writer ? &*writer : nullptr, sum);
+		writeBatch(b, writer ? &*writer : nullptr, o.skip_bad_images, sum);
 		b = Batch{};
 	};
-	loop.onObject([&](const mrpt::serialization::CSerializable::Ptr& obj) { b.objects.push_back(obj); });
+	// A batch ends only between objects: a sensory frame may hold several images.
+	loop.onObject([&](const mrpt::serialization::CSerializable::Ptr& obj) {
+		if (b.images.size() >= batch_images) flush();
+		b.objects.push_back(obj);
+	});
 	loop.on<mrpt::obs::CObservationImage>(o.omni_label, [&](const mrpt::obs::CObservationImage::Ptr& image) {
 		b.after.push_back(b.objects.size() - 1);
 		b.images.push_back(image);
-		if (b.images.size() >= batch_images) flush();
 	});
 	loop.run(progress);
 	flush();
+	if (sum.images == 0 && sum.skipped > 0)
+		throw std::runtime_error("every " + o.omni_label + " image in '" + o.input + "' was bad; the first: " +
+								 sum.skipped_reasons.front());
 	if (sum.images == 0)
 		throw std::runtime_error("no " + o.omni_label + " image in '" + o.input + "' (" + loop.describeLabels() + ")");
 	if (writer)

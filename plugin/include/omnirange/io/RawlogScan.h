@@ -8,6 +8,7 @@
 #include <omnirange/io/SensorLabels.h>
 
 #include <string>
+#include <vector>
 
 namespace omnirange
 {
@@ -22,6 +23,9 @@ struct RawlogScanOptions
 	/** Read and decode only: no scan, nothing written (the baseline the
 	 * benchmark compares against). */
 	bool decode_only{false};
+	/** A missing, cut or undecodable image is skipped (no scan for it, counted
+	 * in the summary and named in `skipped_names`) instead of stopping the run. */
+	bool skip_bad_images{false};
 };
 
 struct RawlogScanSummary
@@ -29,10 +33,14 @@ struct RawlogScanSummary
 	std::size_t images{0};  ///< images scanned (or decoded)
 	std::size_t objects{0};  ///< objects written
 	std::size_t rays{0}, hits{0};  ///< rays produced, and of them valid
+	std::size_t skipped{0};  ///< bad images skipped (skip_bad_images only)
+	std::vector<std::string> skipped_reasons;  ///< why, one line per skipped image
 };
 
-/** Throws std::runtime_error naming the file or image on any bad input; the
- * output then does not exist. `progress` counts the objects read. */
+/** In the observations-only format each scan is written right after its
+ * image; in the actions/sensory-frames format it goes into the image's frame,
+ * so the output keeps the input's format. Throws std::runtime_error naming
+ * the file or image on any bad input; the output then does not exist. `progress` counts the objects read. */
 RawlogScanSummary scanRawlog(const Rangefinder& rangefinder, const RawlogScanOptions& options,
 							 Progress* progress = nullptr);
 
