@@ -59,6 +59,11 @@ mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 		if (in_->getPosition() == before) return nullptr;
 		throw fail("it ends inside an object");
 	}
+	catch (const std::bad_alloc&)
+	{
+		// MRPT sizes a string or vector from the file before reading it.
+		throw fail("a length in it asks for more memory than there is");
+	}
 	catch (const std::exception& e)
 	{
 		const std::string what = e.what();
