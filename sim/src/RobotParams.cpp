@@ -95,6 +95,7 @@ RobotParams RobotParams::loadFile(const std::string& path)
 	try
 	{
 		requireNoRepeatedKeys(path);
+		requireOnlySections(path, {"omnicam", "laser", "odometry", "robot"});
 		r.loadFromConfig(mrpt::config::CConfigFile(path));
 	}
 	catch (const std::invalid_argument& e)

@@ -189,11 +189,18 @@ class Parser
 	{
 		const double z0 = fl.num("z0", 0.0), z1 = fl.num("z1");
 		if (z0 < 0 || !(z1 > z0)) throw error("need 0 <= z0 < z1");
+		addSolid(fp, z0, z1, material(fl));
+	}
+
+	/** Every solid (a statement's, a plan's cells, a grid map's) comes in
+	 * here: the one place that keeps the world within its size limit. */
+	void addSolid(const Footprint& fp, double z0, double z1, int material)
+	{
 		for (const Vec2& c : {fp.lo(), fp.hi()})
 			if (!(std::abs(c.x) <= kMaxWorldCoordinate && std::abs(c.y) <= kMaxWorldCoordinate))
 				throw error("the solid reaches beyond " + std::to_string(static_cast<int>(kMaxWorldCoordinate)) +
 							" m from the origin");
-		w_.solids.push_back({fp, z0, z1, material(fl), line_});
+		w_.solids.push_back({fp, z0, z1, material, line_});
 	}
 
 	void wall(const Fields& fl)
@@ -286,11 +293,11 @@ class Parser
 						{x0 + cell * 0.5 * (c + e), y0 - cell * (r + 0.5)}, cell * (e - c), cell, 0.0);
 					if (L.gap0 > 0)
 					{
-						w_.solids.push_back({fp, L.z0, L.gap0, L.material, line_});
-						w_.solids.push_back({fp, L.gap1, L.z1, L.material, line_});
+						addSolid(fp, L.z0, L.gap0, L.material);
+						addSolid(fp, L.gap1, L.z1, L.material);
 					}
 					else
-						w_.solids.push_back({fp, L.z0, L.z1, L.material, line_});
+						addSolid(fp, L.z0, L.z1, L.material);
 				}
 				c = e;
 			}
@@ -340,8 +347,7 @@ class Parser
 				while (e < grid.getSizeX() && occ(e)) ++e;
 				const double cx = grid.getXMin() + res * 0.5 * (x + e);
 				const double cy = grid.getYMin() + res * (y + 0.5);
-				w_.solids.push_back(
-					{Footprint::box({cx, cy}, res * (e - x), res, 0.0), z0, z1, m, line_});
+				addSolid(Footprint::box({cx, cy}, res * (e - x), res, 0.0), z0, z1, m);
 				x = e;
 			}
 		if (!have_bounds)

@@ -154,6 +154,12 @@ TEST(WorldFile, FarAwaySolidsAndWaypointsAreErrorsNotMemory)
 	{
 		EXPECT_NE(std::string(e.what()).find("far.world:2:"), std::string::npos) << e.what();
 	}
+	// The same through a plan (found by the world fuzz target: a plan's cells
+	// once skipped the check, and the world's index asked for 504 GB).
+	const auto far_plan = test::writeFile(
+		"far_plan.world", "omnirange-world 1\nmaterial name=m rgb=1,2,3\nlegend char=# material=m z1=1\n"
+						  "plan x0=1e9 y0=0 cell=0.3\n#\nend\n");
+	EXPECT_THROW(loadWorld(far_plan), std::runtime_error);
 	const auto route = test::writeFile("far.route", "0 0\n1e300 0\n");
 	try
 	{

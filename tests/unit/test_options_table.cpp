@@ -95,7 +95,7 @@ TEST(OptionsTable, ARepeatedKeyIsAnErrorNamingTheLine)
 		requireNoRepeatedKeys(path);
 		FAIL() << "a repeated key must not pass";
 	}
-	catch (const std::invalid_argument& e)
+	catch (const std::runtime_error& e)
 	{
 		EXPECT_NE(std::string(e.what()).find("repeated.ini:9: key 'N' repeats in [rangefinder] (first at line 3)"),
 				  std::string::npos)
@@ -103,4 +103,23 @@ TEST(OptionsTable, ARepeatedKeyIsAnErrorNamingTheLine)
 	}
 	std::ofstream(path) << "[a]\nN = 1\n[b]\nN = 2\n";
 	EXPECT_NO_THROW(requireNoRepeatedKeys(path));  // the same key in two sections is fine
+}
+
+TEST(OptionsTable, AnUnknownSectionIsAnErrorNamingTheLine)
+{
+	const std::string path = testing::TempDir() + "sections.ini";
+	std::ofstream(path) << "[omnicam]\nfov_deg = 1\n\n; a comment [not a section]\n[lazer]\nfov_deg = 180\n";
+	try
+	{
+		requireOnlySections(path, {"omnicam", "laser"});
+		FAIL() << "a misspelt section must not pass";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("sections.ini:5: unknown section [lazer] (this file has [omnicam], [laser])"),
+				  std::string::npos)
+			<< e.what();
+	}
+	std::ofstream(path) << "[laser]\nfov_deg = 1\n";
+	EXPECT_NO_THROW(requireOnlySections(path, {"omnicam", "laser"}));
 }

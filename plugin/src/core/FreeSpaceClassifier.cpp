@@ -10,7 +10,7 @@
 namespace omnirange
 {
 FreeSpaceClassifier::FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio)
-	: binner_(model.floor.binner()), free_(binner_.binCount(), 0)
+	: binner_(model.floor.binner()), free_(binner_.binCount(), 0), needed_(binner_.binCount(), 0.0f)
 {
 	if (!(threshold >= 0.0 && threshold <= 1.0))
 		throw std::invalid_argument(
@@ -25,14 +25,25 @@ FreeSpaceClassifier::FreeSpaceClassifier(const ColourModel& model, double thresh
 	const bool two_class = model.hasObstacles() && obstacle_ratio > 0;
 	for (std::uint32_t b = 0; b < binner_.binCount(); ++b)
 	{
-		const double p = hist.probability(b);
-		free_[b] = p >= threshold && (!two_class || p >= obstacle_ratio * model.obstacles.probability(b));  // eq. (5)
+		const double need = two_class ? std::max(threshold, obstacle_ratio * model.obstacles.probability(b)) : threshold;
+		needed_[b] = static_cast<float>(need);
+		free_[b] = hist.probability(b) >= need;  // eq. (5)
 	}
 }
 
 std::size_t FreeSpaceClassifier::freeBinCount() const
 {
 	return static_cast<std::size_t>(std::count(free_.begin(), free_.end(), 1));
+}
+
+FreeSpaceClassifier FreeSpaceClassifier::alsoFreeUnder(const std::vector<double>& floor_probability) const
+{
+	if (floor_probability.size() != free_.size())
+		throw std::invalid_argument("alsoFreeUnder: one probability per bin is needed");
+	FreeSpaceClassifier out(*this);
+	for (std::size_t b = 0; b < free_.size(); ++b)
+		out.free_[b] |= static_cast<std::uint8_t>(floor_probability[b] > 0 && floor_probability[b] >= needed_[b]);
+	return out;
 }
 
 }  // namespace omnirange

@@ -26,6 +26,13 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 			 "bring each image's floor just beyond the base back to its colour in training before classifying "
 			 "(needs a histogram file that records it)",
 			 [](P& p) -> auto& { return p.exposure_compensation; })
+		.add("floor_adaptation", "bool",
+			 "also call free the colours of the floor just beyond the base in recent images (no laser needed; "
+			 "omnirange-scan and the sensor, in image order)",
+			 [](P& p) -> auto& { return p.floor_adaptation; })
+		.add("adaptation_memory", "images",
+			 "with floor_adaptation: how many images a floor colour seen once takes to fade to 1/e, in [1, 1e6]",
+			 [](P& p) -> auto& { return p.adaptation_memory; })
 		.add("sensor_label", "-", "sensorLabel of the produced CObservation2DRangeScan",
 			 [](P& p) -> auto& { return p.sensor_label; })
 		.addPose("the omnicam's pose on the robot: the scan's sensorPose (pose_z defaults to h when absent)",
@@ -61,6 +68,7 @@ void RangefinderParams::validate() const
 	require(obstacle_ratio >= 0.0 && obstacle_ratio <= 1000.0, "obstacle_ratio must be within [0, 1000]");
 	require(!sensor_label.empty(), "sensor_label is empty");
 	require(std_error >= 0, "std_error must be >= 0 m");
+	require(adaptation_memory >= 1.0 && adaptation_memory <= 1e6, "adaptation_memory must be within [1, 1e6] images");
 }
 
 std::string RangefinderParams::asIni() const { return table().print(*this); }
@@ -82,8 +90,9 @@ Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& col
 {
 }
 
-RangeScan Rangefinder::process(const cv::Mat& bgr) const
+RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapted) const
 {
+	const PixelClassifier& classifier = adapted ? *adapted : static_cast<const PixelClassifier&>(classifier_);
 	scanner_.checkImage(bgr);
 	RangeScan out;
 	// 0. Light: see the image as if in training's light, through the floor
@@ -94,11 +103,11 @@ RangeScan Rangefinder::process(const cv::Mat& bgr) const
 	if (compensate_)
 	{
 		const cv::Mat img = bgr.isContinuous() ? bgr : bgr.clone();
-		const CompensatedClassifier seen(classifier_, compensatingGains(reference_, ring_.medianColour(img)));
+		const CompensatedClassifier seen(classifier, compensatingGains(reference_, ring_.medianColour(img)));
 		out.rays = scanner_.scan(img, seen);
 	}
 	else
-		out.rays = scanner_.scan(bgr, classifier_);
+		out.rays = scanner_.scan(bgr, classifier);
 	// 4. Reject the rays that disagree with both their neighbours.
 	out.outliers = rejectOutliers(out.rays, p_.outliers);
 	return out;

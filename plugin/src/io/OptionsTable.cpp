@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -73,11 +74,15 @@ std::string formatDouble(double v)
 	return o.str();
 }
 
-void requireNoRepeatedKeys(const std::string& path)
+namespace
+{
+/** Calls `visit(section, key, line)` for every key line of the ini file, and
+ * `visit(section, "", line)` for every section header. */
+void forEachIniLine(const std::string& path,
+					const std::function<void(const std::string&, const std::string&, int)>& visit)
 {
 	std::ifstream f(path);
-	if (!f) throw std::invalid_argument("cannot open ini file '" + path + "'");
-	std::map<std::string, int> seen;  // "section/key" -> line
+	if (!f) throw std::runtime_error("cannot open ini file '" + path + "'");
 	std::string section;
 	int n = 0;
 	for (std::string line; std::getline(f, line);)
@@ -88,16 +93,36 @@ void requireNoRepeatedKeys(const std::string& path)
 		if (t[0] == '[')
 		{
 			section = t.substr(1, t.find(']') == std::string::npos ? std::string::npos : t.find(']') - 1);
+			visit(section, "", n);
 			continue;
 		}
 		const auto eq = t.find('=');
-		if (eq == std::string::npos) continue;
-		const std::string key = trimmed(t.substr(0, eq));
+		if (eq != std::string::npos) visit(section, trimmed(t.substr(0, eq)), n);
+	}
+}
+}  // namespace
+
+void requireNoRepeatedKeys(const std::string& path)
+{
+	std::map<std::string, int> seen;  // "section/key" -> line
+	forEachIniLine(path, [&](const std::string& section, const std::string& key, int n) {
+		if (key.empty()) return;
 		const auto [it, fresh] = seen.emplace(section + "/" + key, n);
 		if (!fresh)
-			throw std::invalid_argument(path + ":" + std::to_string(n) + ": key '" + key + "' repeats in [" + section +
-										"] (first at line " + std::to_string(it->second) + ")");
-	}
+			throw std::runtime_error(path + ":" + std::to_string(n) + ": key '" + key + "' repeats in [" + section +
+									 "] (first at line " + std::to_string(it->second) + ")");
+	});
+}
+
+void requireOnlySections(const std::string& path, const std::vector<std::string>& known)
+{
+	forEachIniLine(path, [&](const std::string& section, const std::string& key, int n) {
+		if (!key.empty() || std::find(known.begin(), known.end(), section) != known.end()) return;
+		std::string all;
+		for (const auto& k : known) all += (all.empty() ? "[" : ", [") + k + "]";
+		throw std::runtime_error(path + ":" + std::to_string(n) + ": unknown section [" + section + "] (this file has " +
+								 all + ")");
+	});
 }
 
 std::vector<std::string> checkSectionKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,

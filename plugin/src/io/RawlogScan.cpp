@@ -1,5 +1,6 @@
 #include "omnirange/io/RawlogScan.h"
 
+#include "omnirange/core/FloorAdaptation.h"
 #include "omnirange/io/AtomicWrite.h"
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/RawlogProcessor.h"
@@ -27,17 +28,39 @@ struct Batch
 	std::vector<std::exception_ptr> errors;
 };
 
-/** Decodes (and scans) the batch's images in parallel. */
-void processBatch(Batch& b, const Rangefinder& rf, bool decode_only)
+/** Decodes (and scans) the batch's images in parallel. With `adaptation`,
+ * the floor is learned from each decoded image in file order first, and each
+ * image is scanned with what was learned up to and including it: the result
+ * does not depend on the number of threads. */
+void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdaptation* adaptation)
 {
-	b.scans.assign(b.images.size(), nullptr);
-	b.errors.assign(b.images.size(), nullptr);
+	const int n = static_cast<int>(b.images.size());
+	b.scans.assign(n, nullptr);
+	b.errors.assign(n, nullptr);
+	std::vector<cv::Mat> decoded(n);
 	const auto& cam = rf.params().camera;
-	cv::parallel_for_(cv::Range(0, static_cast<int>(b.images.size())), [&](const cv::Range& r) {
+	const auto scan = [&](int k, const PixelClassifier* classifier) {
+		b.scans[k] = rf.toObservation(rf.process(decoded[k], classifier), b.images[k]->timestamp);
+	};
+	cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& r) {
 		for (int k = r.start; k < r.end; ++k) try
 			{
-				const cv::Mat bgr = decodeImage(*b.images[k], cam);
-				if (!decode_only) b.scans[k] = rf.toObservation(rf.process(bgr), b.images[k]->timestamp);
+				decoded[k] = decodeImage(*b.images[k], cam);
+				if (!decode_only && !adaptation) scan(k, nullptr);
+			}
+			catch (...)
+			{
+				b.errors[k] = std::current_exception();
+			}
+	});
+	if (decode_only || !adaptation) return;
+	std::vector<std::optional<FreeSpaceClassifier>> classifiers(n);
+	for (int k = 0; k < n; ++k)
+		if (!b.errors[k]) adaptation->learn(decoded[k]), classifiers[k] = adaptation->classifier();
+	cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& r) {
+		for (int k = r.start; k < r.end; ++k) try
+			{
+				if (!b.errors[k]) scan(k, &*classifiers[k]);
 			}
 			catch (...)
 			{
@@ -104,10 +127,12 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 		writer->linkImagesTo(imagesDirFor(o.input));
 	}
 	const std::size_t batch_images = 8 * static_cast<std::size_t>(o.threads);
+	std::optional<FloorAdaptation> adaptation;
+	if (rf.params().floor_adaptation) adaptation.emplace(rf, rf.params().adaptation_memory);
 	RawlogScanSummary sum;
 	Batch b;
 	const auto flush = [&] {
-		processBatch(b, rf, o.decode_only);
+		processBatch(b, rf, o.decode_only, adaptation ? &*adaptation : nullptr);
 		writeBatch(b, writer ? &*writer : nullptr, o.skip_bad_images, sum);
 		b = Batch{};
 	};

@@ -6,6 +6,7 @@
 #include <mrpt/hwdrivers/CCameraSensor.h>
 #include <mrpt/obs/CObservationImage.h>
 
+#include <optional>
 #include <stdexcept>
 
 namespace omnirange
@@ -42,6 +43,8 @@ void COmniRangefinderSensor::loadConfig_sensorSpecific(
 void COmniRangefinderSensor::initialize()
 {
 	rangefinder_ = std::make_unique<Rangefinder>(params_, ColourModel::load(histogram_file_));
+	if (params_.floor_adaptation)
+		adaptation_ = std::make_unique<FloorAdaptation>(*rangefinder_, params_.adaptation_memory);
 	MRPT_LOG_INFO_STREAM("histogram " << histogram_file_ << ", rangefinder options:\n" << params_.asIni());
 	camera_->initialize();
 }
@@ -61,7 +64,9 @@ void COmniRangefinderSensor::doProcess()
 	// Keep the image inside the observation: a replayed frame's external file
 	// is not beside the rawlog being grabbed.
 	img->image = mrpt::img::CImage(bgr, mrpt::img::DEEP_COPY);
-	auto scan = rangefinder_->toObservation(rangefinder_->process(bgr), img->timestamp);
+	std::optional<FreeSpaceClassifier> adapted;
+	if (adaptation_) adaptation_->learn(bgr), adapted = adaptation_->classifier();
+	auto scan = rangefinder_->toObservation(rangefinder_->process(bgr, adapted ? &*adapted : nullptr), img->timestamp);
 	MRPT_LOG_DEBUG_STREAM("frame scanned: " << scan->getScanSize() << " rays");
 	appendObservations({img, scan});
 }

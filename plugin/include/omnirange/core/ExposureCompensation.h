@@ -31,6 +31,8 @@ class FloorRing
 
 	/** Median B, G, R of the ring's pixels in an 8-bit BGR image of the camera's size. */
 	std::array<double, 3> medianColour(const cv::Mat& bgr) const;
+	/** The ring's pixels, as row * image width + column. */
+	const std::vector<std::int32_t>& pixels() const { return pixels_; }
 
    private:
 	std::vector<std::int32_t> pixels_;  // row * width + col

@@ -42,9 +42,15 @@ class FreeSpaceClassifier final : public PixelClassifier
 	/** Number of bins classified free. */
 	std::size_t freeBinCount() const;
 
+	/** A copy in which a bin is also free when `floor_probability[bin]`
+	 * (another estimate of P(colour | floor), e.g. the recent floor's,
+	 * FloorAdaptation.h) passes the same test as the trained one. */
+	FreeSpaceClassifier alsoFreeUnder(const std::vector<double>& floor_probability) const;
+
    private:
 	ColourBinner binner_;
 	std::vector<std::uint8_t> free_;  // per bin: 1 free, 0 not
+	std::vector<float> needed_;  // per bin: the P(colour | floor) it takes to be free
 };
 
 }  // namespace omnirange

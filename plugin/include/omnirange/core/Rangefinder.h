@@ -43,6 +43,10 @@ struct RangefinderParams
 	 * change of exposure but breaks where the robot stands in a shadow and
 	 * looks into light (docs/results.md measures both). */
 	bool exposure_compensation{false};
+	/** Adapt to the floor seen around the base in recent images
+	 * (FloorAdaptation.h); off by default (docs/results.md measures it). */
+	bool floor_adaptation{false};
+	double adaptation_memory{50.0};  ///< [images] with floor_adaptation
 	std::string sensor_label{kOmniscanLabel};  ///< label of the produced scans
 	/** The omnicam's pose on the robot, which becomes the scan's sensorPose
 	 * (MRPT's pose_* keys). pose_z defaults to camera h. */
@@ -81,8 +85,9 @@ class Rangefinder
 	const FreeSpaceClassifier& classifier() const { return classifier_; }
 	const PolarScanner& scanner() const { return scanner_; }
 
-	/** One decoded BGR image of the camera's size -> one scan. */
-	RangeScan process(const cv::Mat& bgr) const;
+	/** One decoded BGR image of the camera's size -> one scan. `adapted`:
+	 * classify with it instead of the trained classifier (FloorAdaptation). */
+	RangeScan process(const cv::Mat& bgr, const PixelClassifier* adapted = nullptr) const;
 
 	/** The scan as an MRPT observation: S rays over 2 pi (S-1)/S, ray i at
 	 * scanline i's bearing, valid only where status is Hit. */

@@ -144,10 +144,14 @@ class OptionsTable
 	std::vector<std::pair<std::string, std::string>> renamed_;
 };
 
-/** Throws std::invalid_argument("FILE:LINE: ...") if a key appears twice in
+/** Throws std::runtime_error("FILE:LINE: ...") if a key appears twice in
  * one section of the ini file `path` (MRPT's reader keeps the last one
  * silently) or the file cannot be read. */
 void requireNoRepeatedKeys(const std::string& path);
+/** Throws std::runtime_error("FILE:LINE: ...") at a section not in `known`:
+ * for files read by this project alone, where a misspelt section would
+ * otherwise leave all its keys at their defaults. */
+void requireOnlySections(const std::string& path, const std::vector<std::string>& known);
 
 /** The parts of load() that do not depend on the struct: the section's
  * keys, each checked against `known` and `renamed`. Returns the keys present. */

@@ -1,0 +1,53 @@
+#pragma once
+// Adapting to new light or a new floor without a laser (the paper's future
+// work, for the small robot that never has one). The floor just outside the
+// robot's base is floor nearly always; its colours, image after image, form
+// a second estimate of P(colour | floor) that forgets slowly. A colour is
+// free when the trained histogram says so (eq. (5)) or when it makes up as
+// large a share of the recent floor as eq. (5) asks of the trained one (and,
+// with the two-class model, beats the obstacles by the same ratio).
+//
+// Only pixels near the ring's median colour are learned, so an obstacle that
+// touches a few directions of the ring (the robot passing a wall) is not
+// learned as floor; one that fills most of it would be (docs/method.md
+// measures what that costs). Images must come in the order they were taken.
+
+#include <omnirange/core/ExposureCompensation.h>
+#include <omnirange/core/FreeSpaceClassifier.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace cv
+{
+class Mat;
+}
+
+namespace omnirange
+{
+class Rangefinder;
+
+class FloorAdaptation
+{
+   public:
+	/** Adapts `rangefinder`'s trained classifier; `memory` [images] is how
+	 * many images a colour seen once takes to fade to 1/e. */
+	FloorAdaptation(const Rangefinder& rangefinder, double memory);
+
+	/** Learns the floor ring of the next image (8-bit BGR, the camera's size). */
+	void learn(const cv::Mat& bgr);
+	/** The trained classifier with the recent floor's colours also free. */
+	FreeSpaceClassifier classifier() const;
+
+	std::size_t imagesLearned() const { return images_; }
+
+   private:
+	const Rangefinder& rf_;
+	FloorRing ring_;
+	double keep_;  // per image, the weight old counts keep
+	std::vector<double> counts_;  // per bin, decayed
+	double total_{0};
+	std::size_t images_{0};
+};
+
+}  // namespace omnirange

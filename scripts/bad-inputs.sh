@@ -1,0 +1,178 @@
+#!/usr/bin/env bash
+# Runs the apps on a list of bad inputs, as a careless or hostile user would
+# give them, and prints a markdown table of what each did (docs/robustness.md
+# holds its last output). A case passes when the app ends within 60 s with
+# exit code 1 or 2, one line on stderr, no output file left and every input
+# unchanged, or, for the few inputs that are legal but odd, exit 0 with the
+# warning asked for. Exits 1 if any case does not pass.
+#
+#   scripts/bad-inputs.sh BUILD_DIR [WORK_DIR]
+set -uo pipefail
+src="$(cd "$(dirname "$0")/.." && pwd)"
+build="$(cd "${1:?usage: bad-inputs.sh BUILD_DIR [WORK_DIR]}" && pwd)"
+work="${2:-$(mktemp -d)}"
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+apps="$build/apps"
+sample="$src/rawlogs/factory-sample.rawlog"
+ini="$src/ini/factory.ini"
+
+# --- fixtures -----------------------------------------------------------
+"$apps/omnirange-train" -q -i "$sample" -c "$ini" -o floor.hist || exit 1
+cp "$sample" s.rawlog && cp -r "$src/rawlogs/factory-sample_Images" s_Images
+cp "$ini" f.ini
+head -c 20000 "$sample" > cut.rawlog
+: > empty.rawlog
+head -c 5000 /dev/urandom > random.rawlog
+mkdir -p cutimg_Images && cp s.rawlog cutimg.rawlog
+cp s_Images/* cutimg_Images/ && f=$(ls cutimg_Images | sort | sed -n 5p)
+truncate -s 30000 "cutimg_Images/$f"
+cp s.rawlog noimages.rawlog
+head -c 3000 floor.hist > cut.hist
+printf 'not a histogram at all' > text.hist
+mkdir -p readonly && chmod 555 readonly
+ln -sf s.rawlog link-to-input.rawlog
+cp "$src/worlds/factory.world" w.world && cp "$src/worlds/factory.route" w.route
+printf 'omnirange-world 1\nname far\nbounds xmin=-5 ymin=-5 xmax=5 ymax=5\nfloor material=concrete\nmaterial name=concrete rgb=150,148,142\nbox x=1000000 y=0 w=1 d=1 z1=1 material=concrete\n' > far.world
+printf '0 0\n1e300 0\n' > far.route
+printf 'omnirange-world 1\nbox x=1 y=\n' > broken.world
+printf '0 0\n1 abc\n' > broken.route
+
+# ini variants: key=value replaces the key in [rangefinder]; +LINE appends one.
+variant() {  # variant NAME EDIT
+  local name="$1" edit="$2"
+  if [[ "$edit" == +* ]]; then
+    awk -v line="${edit#+}" '{print} /^\[rangefinder\]/{print line}' "$ini" > "$name.ini"
+  else
+    local key="${edit%%=*}" value="${edit#*=}"
+    awk -v key="$key" -v value="$value" '
+      /^\[/ {in_rf = ($0 == "[rangefinder]")}
+      in_rf && $1 == key && $2 == "=" {print key " = " value; next}
+      {print}' "$ini" > "$name.ini"
+  fi
+}
+variant thr_abc 'threshold=abc'
+variant thr_comma 'threshold=0,075'
+variant n_suffix 'N=20abc'
+variant h_unit 'h=0.931m'
+variant scan_frac 'scanlines=360.7'
+variant mirrored_maybe 'mirrored=maybe'
+variant dup '+N = 30'
+variant pose_nan 'pose_x=nan'
+variant tol_inf 'outlier_abs_tol=inf'
+variant n_huge 'N=2147483647'
+variant k_huge 'K=2147483647'
+variant width_huge 'outlier_max_width=2147483647'
+variant scan_huge 'scanlines=1e9'
+variant r_abc 'R=abc'
+variant r_neg 'R=-5'
+variant unknown '+thresold = 0.1'
+variant width_small 'image_width=640'
+variant empty_value 'threshold='
+printf '[laser]\nfov = 180\n' > renamed_robot.ini
+printf '[lazer]\nfov_deg = 90\n' > misspelt_robot.ini
+
+# --- running ------------------------------------------------------------
+declare -a inputs_sums
+problems=0
+n=0
+echo "| # | bad input | app | exit | stderr (first line) | lines | output left | inputs kept | verdict |"
+echo "|---|---|---|---|---|---|---|---|---|"
+# case DESCRIPTION EXPECT(error|warn:TEXT|ok) OUTPUT -- COMMAND...
+run_case() {
+  local what="$1" expect="$2" out="$3"; shift 4
+  n=$((n + 1))
+  rm -rf "$out" "${out%.rawlog}_Images"
+  local before after
+  before=$(md5sum s.rawlog f.ini floor.hist w.world w.route 2>/dev/null | md5sum)
+  timeout 60 "$@" >stdout.txt 2>stderr.txt
+  local code=$?
+  after=$(md5sum s.rawlog f.ini floor.hist w.world w.route 2>/dev/null | md5sum)
+  local lines first left kept verdict="pass"
+  lines=$(grep -c . stderr.txt)
+  first=$(grep -m1 . stderr.txt | cut -c1-150 | sed 's/|/\\|/g')
+  [[ "$expect" == warn:* ]] && first="(warning) $(grep -h -m1 "${expect#warn:}" stdout.txt stderr.txt | cut -c1-150)"
+  left="no"; [ -e "$out" ] && left="yes"
+  kept="yes"; [ "$before" == "$after" ] || kept="NO"
+  case "$expect" in
+    error) { [ $code -eq 1 ] || [ $code -eq 2 ]; } && [ "$lines" -eq 1 ] && [ "$left" == "no" ] || verdict="PROBLEM" ;;
+    warn:*) [ $code -eq 0 ] && cat stdout.txt stderr.txt | grep -q "${expect#warn:}" || verdict="PROBLEM" ;;
+  esac
+  [ "$kept" == "yes" ] || verdict="PROBLEM"
+  [ $code -eq 124 ] && verdict="PROBLEM (hang)"
+  [ $code -gt 128 ] && verdict="PROBLEM (signal $((code - 128)))"
+  [ "$verdict" == "pass" ] || problems=$((problems + 1))
+  local app; app=$(basename "$1")
+  echo "| $n | $what | $app | $code | ${first:-} | $lines | $left | $kept | $verdict |"
+}
+
+scan() { run_case "$1" "$2" out.rawlog -- "$apps/omnirange-scan" -q "${@:3}"; }
+S=(-i s.rawlog -c f.ini -H floor.hist -o out.rawlog)
+
+scan "rawlog missing" error -i nothing.rawlog -c f.ini -H floor.hist -o out.rawlog
+scan "rawlog is a folder" error -i s_Images -c f.ini -H floor.hist -o out.rawlog
+scan "rawlog cut at 20 kB" error -i cut.rawlog -c f.ini -H floor.hist -o out.rawlog
+scan "rawlog empty" error -i empty.rawlog -c f.ini -H floor.hist -o out.rawlog
+scan "rawlog of random bytes" error -i random.rawlog -c f.ini -H floor.hist -o out.rawlog
+scan "rawlog without its images folder" error -i noimages.rawlog -c f.ini -H floor.hist -o out.rawlog
+scan "one JPEG cut short" error -i cutimg.rawlog -c f.ini -H floor.hist -o out.rawlog
+run_case "one JPEG cut short, --skip-bad-images" "warn:skipped" out.rawlog -- "$apps/omnirange-scan" -i cutimg.rawlog -c f.ini -H floor.hist -o out.rawlog --skip-bad-images
+scan "no image under the label" error "${S[@]}" --omni-label NOSUCH
+scan "image size other than the ini's" error -i s.rawlog -c width_small.ini -H floor.hist -o out.rawlog
+scan "histogram missing" error -i s.rawlog -c f.ini -H none.hist -o out.rawlog
+scan "histogram is /dev/zero" error -i s.rawlog -c f.ini -H /dev/zero -o out.rawlog
+scan "histogram cut short" error -i s.rawlog -c f.ini -H cut.hist -o out.rawlog
+scan "histogram is text" error -i s.rawlog -c f.ini -H text.hist -o out.rawlog
+run_case "output is the input rawlog" error s.rawlog.none -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o s.rawlog
+run_case "output is the histogram" error floor.hist.none -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o floor.hist
+run_case "output is the ini" error f.ini.none -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o f.ini
+run_case "output is a link to the input" error link.none -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o link-to-input.rawlog
+run_case "output folder does not exist" error nofolder/out.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o nofolder/out.rawlog
+run_case "output folder is a file" error f.ini/out.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o f.ini/out.rawlog
+# (root writes into read-only folders: that case only means something for other users)
+[ "$(id -u)" -ne 0 ] && run_case "output folder read-only" error readonly/out.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o readonly/out.rawlog
+run_case "disk full (file size limit 20 kB)" error out.rawlog -- bash -c 'trap "" XFSZ; ulimit -f 20; exec "$@"' _ "$apps/omnirange-scan" -q "${S[@]}"
+for v in thr_abc thr_comma n_suffix h_unit scan_frac mirrored_maybe dup pose_nan tol_inf n_huge k_huge width_huge scan_huge r_abc r_neg unknown empty_value; do
+  edit=$(diff "$ini" "$v.ini" | grep '^>' | sed 's/^> //')
+  scan "ini: \`$edit\`" error -i s.rawlog -c "$v.ini" -H floor.hist -o out.rawlog
+done
+scan "ini missing" error -i s.rawlog -c none.ini -H floor.hist -o out.rawlog
+scan "ini section missing" error "${S[@]}" -s nosection
+scan "threads -j 0" error "${S[@]}" -j 0
+scan "threads -j 70000" error "${S[@]}" -j 70000
+scan "unknown option" error "${S[@]}" --frobnicate
+
+train() { run_case "$1" "$2" "$3" -- "$apps/omnirange-train" -q "${@:4}"; }
+printf '' > nolaser.txt
+train "histogram output is the input rawlog" error s.rawlog.none -i s.rawlog -c f.ini -o s.rawlog
+train "histogram output is the ini" error f.ini.none -i s.rawlog -c f.ini -o f.ini
+train "no laser under the label" error t.hist -i s.rawlog -c f.ini -o t.hist --laser-label NOSUCH
+train "bins 0" error t.hist -i s.rawlog -c f.ini -o t.hist --bins 0
+train "bins 100000" error t.hist -i s.rawlog -c f.ini -o t.hist --bins 100000
+train "colour space XYZ" error t.hist -i s.rawlog -c f.ini -o t.hist --colour-space XYZ
+train "--figures-frame past the end" error t.hist -i s.rawlog -c f.ini -o t.hist --figures t --figures-frame 500
+train "--every -3" error t.hist -i s.rawlog -c f.ini -o t.hist --every -3
+
+sim() { run_case "$1" "$2" o.rawlog -- "$apps/omnirange-sim" -q -o o.rawlog "${@:3}"; }
+run_case "output is the world file" error w.world.none -- "$apps/omnirange-sim" -q -w w.world -r w.route -o w.world -n 2
+sim "world: a solid 1000 km away" error -w far.world -r w.route -n 2
+sim "route: a waypoint at 1e300" error -w w.world -r far.route -n 2
+sim "world: a line cut short" error -w broken.world -r w.route -n 2
+sim "route: a word for a number" error -w w.world -r broken.route -n 2
+sim "frames -n -1" error -w w.world -r w.route -n -1
+sim "threads -j 70000" error -w w.world -r w.route -n 2 -j 70000
+sim "robot ini with a renamed key (fov)" error -w w.world -r w.route -n 2 -c renamed_robot.ini
+sim "robot ini with a misspelt section" error -w w.world -r w.route -n 2 -c misspelt_robot.ini
+
+run_case "accuracy: rawlog without scans" error acc_table.md -- "$apps/omnirange-accuracy" -q -i s.rawlog -o acc
+"$apps/omnirange-scan" -q "${S[@]}" && mv out.rawlog scanned.rawlog
+run_case "accuracy: --first past the end" error acc_table.md -- "$apps/omnirange-accuracy" -q -i scanned.rawlog -o acc --first 100000
+run_case "calibrate: histogram of another floor" error cal.ini -- "$apps/omnirange-calibrate" -q -i s.rawlog -c f.ini -H text.hist
+mkdir -p exp && cp -r "$src/ini" exp/ini && ln -sf "$src/worlds" exp/worlds
+awk '{print} /^\[experiment\]/{print "unknown_key = 1"}' "$ini" > exp/ini/exp_bad.ini
+run_case "experiment: unknown key" error report -- "$apps/omnirange-experiment" -q exp/ini/exp_bad.ini -o report
+run_case "experiment: ini missing" error report -- "$apps/omnirange-experiment" -q none.ini -o report
+
+chmod 755 readonly
+echo
+echo "$n cases, $problems problems"
+[ $problems -eq 0 ]
