@@ -10,6 +10,7 @@
 
 #include <omnirange/io/RawlogReader.h>
 
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
@@ -292,6 +293,47 @@ TEST(AppClasses, ASensoryFrameRawlogIsTrainedScannedAndScoredInItsOwnFormat)
 	}
 	EXPECT_EQ(frames_with_both, 20);
 	EXPECT_EQ(bare, 0);
+}
+
+TEST(AppClasses, FloorAdaptationScansTheSameWithAnyNumberOfThreads)
+{
+	const std::string dir = workDir("adaptation_threads");
+	{
+		std::ifstream in(kIni);
+		std::ofstream out(dir + "/adapt.ini");
+		for (std::string line; std::getline(in, line);)
+			out << line << "\n" << (line == "[rangefinder]" ? "floor_adaptation = true\nadaptation_memory = 3\n" : "");
+	}
+	// A floor of pure magenta: only what adaptation learns is free.
+	ColourHistogram magenta;
+	const std::uint8_t bgr[3] = {255, 0, 255};
+	for (int i = 0; i < 100; ++i) magenta.addPixel(bgr);
+	const std::string hist = dir + "/magenta.hist";
+	ColourModel(magenta).save(hist);
+	const auto ranges = [&](int threads) {
+		ScanApp::Options s;
+		s.ini = dir + "/adapt.ini";
+		s.histogram = hist;
+		s.scan.input = kSample;
+		s.scan.output = dir + "/j" + std::to_string(threads) + ".rawlog";
+		s.scan.threads = threads;
+		s.verbosity = mrpt::system::LVL_ERROR;
+		EXPECT_EQ(ScanApp(s).run().images, 20u);
+		std::vector<float> all;
+		RawlogReader reader(s.scan.output);
+		while (const auto obj = reader.next())
+			if (const auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obj))
+				if (scan->sensorLabel == "OMNISCAN")
+					for (std::size_t i = 0; i < scan->getScanSize(); ++i)
+						all.push_back(scan->getScanRangeValidity(i) ? scan->getScanRange(i) : -1.0f);
+		return all;
+	};
+	const auto one = ranges(1), three = ranges(3);
+	ASSERT_EQ(one.size(), 20u * 360);
+	EXPECT_EQ(one, three);
+	// The images are scanned in batches of 8 (one thread) or 24 (three): the
+	// same result says each image saw what was learned up to it, no more.
+	EXPECT_GT(std::count_if(one.begin(), one.end(), [](float r) { return r > 0; }), 20 * 360 / 4);
 }
 
 TEST(AppClasses, AHistogramOfAnotherFloorIsWarnedAbout)
