@@ -14,6 +14,8 @@
 
 #include "FuzzInput.h"
 
+#include <omnirange/io/MemoryLimit.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -159,6 +161,9 @@ int main(int argc, char** argv)
 		std::cerr << "usage: " << argv[0] << " [--mutations N] [--seed S] [--max-len BYTES] CORPUS...\n";
 		return 2;
 	}
+	// As in the apps: memory that grows element by element (a deque sized
+	// from a corrupt length) ends in bad_alloc, not in the OOM killer.
+	omnirange::capAddressSpaceAtHalfTheMemory();
 	long slow = 0;
 	const auto timed = [&](const Bytes& b) {
 		if (!keep_last.empty()) std::ofstream(keep_last, std::ios::binary | std::ios::trunc) << b;

@@ -31,12 +31,34 @@ cmake --build build-fuzz -j2 --target "${targets[@]/#/fuzz_}"
 # libFuzzer's own malloc limit is set above that.
 export ASAN_OPTIONS="allocator_may_return_null=1:max_allocation_size_mb=2048"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# Two things MRPT does with a corrupt rawlog end a libFuzzer run and cannot be
+# changed here (docs/robustness.md): it decodes a JPEG stored inside the
+# rawlog with libjpeg's default error handler, which calls exit(); and it
+# grows containers element by element to a length read from the file, past
+# libFuzzer's memory limit (the apps cap their address space and report it).
+# The rawlog target therefore runs in fork mode and goes on past them; each
+# input it kept is replayed, and only other kinds fail this script.
 for t in "${targets[@]}"; do
-  mkdir -p "build-fuzz/found/$t"
+  mkdir -p "build-fuzz/found/$t" "build-fuzz/artifacts/$t"
+  rm -f "build-fuzz/artifacts/$t"/*
   echo "== fuzz_$t for $seconds s"
+  extra=()
+  [ "$t" = rawlog ] && extra=(-fork=1 -ignore_crashes=1)
   status=0
   "build-fuzz/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -malloc_limit_mb=4096 \
-    -print_final_stats=1 "build-fuzz/found/$t" "build-fuzz/fuzz/corpus/$t" >"build-fuzz/fuzz_$t.log" 2>&1 || status=$?
-  grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|==[0-9]+==ERROR|SUMMARY)" "build-fuzz/fuzz_$t.log" || true
-  [ $status -eq 0 ] || { echo "fuzz_$t found a problem: build-fuzz/fuzz_$t.log"; exit 1; }
+    -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$t/" "${extra[@]}" \
+    "build-fuzz/found/$t" "build-fuzz/fuzz/corpus/$t" >"build-fuzz/fuzz_$t.log" 2>&1 || status=$?
+  grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|==[0-9]+==ERROR|SUMMARY)|#[0-9]+: .*exec/s" \
+    "build-fuzz/fuzz_$t.log" | tail -3 || true
+  jpeg=0; length=0; other=0
+  for a in "build-fuzz/artifacts/$t"/*; do
+    [ -e "$a" ] || continue
+    replay=$("build-fuzz/fuzz/fuzz_$t" -rss_limit_mb=4096 -malloc_limit_mb=4096 "$a" 2>&1 || true)
+    if grep -q "libjpeg" <<<"$replay"; then jpeg=$((jpeg + 1))
+    elif grep -q "out-of-memory" <<<"$replay" && grep -q "mrpt::" <<<"$replay"; then length=$((length + 1))
+    else other=$((other + 1)); echo "problem: $a"; fi
+  done
+  echo "inputs kept: $jpeg ended in libjpeg's exit(), $length grew an MRPT container past the memory limit, $other other"
+  if [ "$t" != rawlog ] && [ $status -ne 0 ]; then echo "fuzz_$t found a problem: build-fuzz/fuzz_$t.log"; exit 1; fi
+  [ $other -eq 0 ] || { echo "fuzz_$t found a problem: build-fuzz/fuzz_$t.log"; exit 1; }
 done

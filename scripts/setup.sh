@@ -10,6 +10,7 @@ packages=(
   libopencv-dev libopencv-contrib-dev libeigen3-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool x11-apps imagemagick bc
+  libwxgtk3.2-dev
 )
 missing=()
 for p in "${packages[@]}"; do

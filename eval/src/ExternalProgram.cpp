@@ -1,5 +1,6 @@
 #include "omnirange_eval/ExternalProgram.h"
 
+#include <omnirange/io/MemoryLimit.h>
 #include <omnirange/io/Temporaries.h>
 
 #include <fcntl.h>
@@ -32,6 +33,7 @@ std::string lastLine(const std::string& file)
 	sigset_t none;
 	sigemptyset(&none);
 	::sigprocmask(SIG_SETMASK, &none, nullptr);
+	restoreAddressSpaceLimit();  // the apps cap their own (MemoryLimit.h), not MRPT's programs
 	const int in = ::open("/dev/null", O_RDONLY);
 	const int out = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
 	if (in < 0 || out < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(out, 2) < 0 ||

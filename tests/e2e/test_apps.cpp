@@ -142,3 +142,17 @@ TEST(Apps, AnInterruptedRunLeavesNoTemporaries)
 	}
 	EXPECT_FALSE(fs::exists(dir + "/sim.rawlog"));
 }
+
+TEST(Apps, ACorruptJpegInsideARawlogEndsTheRunWithoutTemporaries)
+{
+	// Found by fuzzing: MRPT decodes a JPEG stored in a rawlog with libjpeg's
+	// default error handler, which calls exit() on corrupt data. The run
+	// cannot go on, but it must leave nothing behind and name the rawlog.
+	const std::string dir = workDir("corrupt_embedded_jpeg");
+	const std::string in = kSource + "/tests/data/corrupt-embedded-jpeg.rawlog";
+	const RunResult r = run(app("omnirange-scan") + " -q -i " + q(in) + " -c " + q(kSource + "/ini/factory.ini") +
+							" -H " + q(kSource + "/fuzz/corpus/histogram/one_class_rgb4.hist") + " -o out.rawlog", dir);
+	EXPECT_EQ(r.code, 1) << r.out;
+	EXPECT_NE(r.out.find("corrupt-embedded-jpeg.rawlog"), std::string::npos) << r.out;
+	EXPECT_TRUE(fs::is_empty(dir)) << r.out;
+}

@@ -5,16 +5,21 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <fstream>
 #include <string>
 
 namespace omnirange::sim::test
 {
+/** A folder of this process's own: ctest runs tests in parallel processes,
+ * and two writing "room.world" into one folder would race. */
 inline std::string tempDir()
 {
 	static const std::string d = [] {
-		std::string p = testing::TempDir() + "omnirange_sim_tests";
-		std::system(("mkdir -p '" + p + "'").c_str());
+		const std::string p = testing::TempDir() + "omnirange_sim_tests/" + std::to_string(::getpid());
+		std::filesystem::create_directories(p);
 		return p;
 	}();
 	return d;

@@ -1,6 +1,7 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange/core/Rangefinder.h>
+#include <omnirange/io/MemoryLimit.h>
 #include <omnirange/io/Temporaries.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -59,6 +60,8 @@ void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv)
 int runApp(const std::string& name, const std::function<void()>& body)
 {
 	temporaries::removeOnInterrupt();
+	temporaries::removeAtExit(name);
+	capAddressSpaceAtHalfTheMemory();
 	try
 	{
 		body();

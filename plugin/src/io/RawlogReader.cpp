@@ -1,6 +1,7 @@
 #include "omnirange/io/RawlogReader.h"
 
 #include "omnirange/io/RawlogWriter.h"
+#include "omnirange/io/Temporaries.h"
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -18,6 +19,7 @@ RawlogReader::RawlogReader(const std::string& path)
 	if (!std::filesystem::is_regular_file(path) || !in_->open(path))
 		throw std::runtime_error("cannot open rawlog '" + path + "'");
 	mrpt::img::CImage::setImagesPathBase(imagesDirFor(path));
+	temporaries::setActivity("reading rawlog '" + path + "'");
 }
 
 RawlogReader::~RawlogReader() = default;

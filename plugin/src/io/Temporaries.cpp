@@ -5,6 +5,9 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <csignal>
 #include <filesystem>
 #include <mutex>
@@ -15,17 +18,30 @@ namespace omnirange::temporaries
 {
 namespace
 {
+// Never destroyed: the exit() handler below may run after the statics'
+// destructors would have.
 std::mutex& lock()
 {
-	static std::mutex m;
-	return m;
+	static auto* m = new std::mutex;
+	return *m;
 }
 std::set<std::string>& paths()
 {
-	static std::set<std::string> p;
-	return p;
+	static auto* p = new std::set<std::string>;
+	return *p;
 }
 std::atomic<pid_t> child{0};
+std::string& program()
+{
+	static auto* p = new std::string;
+	return *p;
+}
+std::string& activity()
+{
+	static auto* a = new std::string;
+	return *a;
+}
+
 
 /** Other threads may still be adding files (a folder is not empty when its
  * last entry goes): try again a few times. */
@@ -33,6 +49,18 @@ void removeWhileOthersWrite(const std::string& p)
 {
 	std::error_code ec;
 	for (int attempt = 0; attempt < 20 && std::filesystem::exists(p, ec); ++attempt) std::filesystem::remove_all(p, ec);
+}
+
+void atExit()
+{
+	// Another thread may hold the lock while exit() runs: do not wait for it long.
+	std::unique_lock<std::mutex> g(lock(), std::defer_lock);
+	for (int i = 0; i < 100 && !g.try_lock(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+	if (!g.owns_lock() || paths().empty()) return;  // a normal exit: everything was committed or removed
+	for (const auto& p : paths()) removeWhileOthersWrite(p);
+	paths().clear();
+	std::fprintf(stderr, "%s: error: ended by a library (its message is above) while %s; its unfinished outputs were removed\n",
+				 program().c_str(), activity().empty() ? "running" : activity().c_str());
 }
 }  // namespace
 
@@ -49,6 +77,19 @@ void forget(const std::string& path)
 }
 
 void setChild(int pid) { child.store(pid); }
+
+void removeAtExit(const std::string& name)
+{
+	program() = name;
+	static const bool registered = (std::atexit(atExit), true);
+	(void)registered;
+}
+
+void setActivity(const std::string& what)
+{
+	const std::lock_guard<std::mutex> g(lock());
+	activity() = what;
+}
 
 void removeAll()
 {

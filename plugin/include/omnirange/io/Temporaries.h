@@ -17,5 +17,11 @@ void setChild(int pid);
 void removeAll();
 /** On SIGINT or SIGTERM: removeAll(), then end by that signal as before. */
 void removeOnInterrupt();
+/** At exit() too: a library that ends the program from inside (libjpeg,
+ * through MRPT, on a corrupt JPEG stored in a rawlog) leaves no temporaries,
+ * and "PROGRAM: error: ..." names what the run was doing (setActivity()). */
+void removeAtExit(const std::string& program);
+/** What the run is doing, for that message: "reading rawlog 'X'". */
+void setActivity(const std::string& what);
 
 }  // namespace omnirange::temporaries

@@ -1,0 +1,327 @@
+#include "TunerFrame.h"
+
+#include <omnirange/train/BirdsEyeView.h>
+
+#include <mrpt/gui/WxUtils.h>
+#include <mrpt/img/CImage.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include <wx/busyinfo.h>
+#include <wx/button.h>
+#include <wx/progdlg.h>
+#include <wx/sizer.h>
+#include <wx/statusbr.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+
+using namespace omnirange;
+
+namespace
+{
+constexpr int kImageWidth = 768;  // the omnicam image is shown at this width
+constexpr int kPlotSize = 340, kSmall = 168;
+constexpr double kDeg = 57.29577951308232;
+
+wxBitmap toBitmap(const cv::Mat& bgr, int width)
+{
+	cv::Mat shown = bgr;
+	if (bgr.cols != width)
+		cv::resize(bgr, shown, cv::Size(width, bgr.rows * width / bgr.cols), 0, 0, cv::INTER_AREA);
+	const std::unique_ptr<wxBitmap> b(mrpt::gui::MRPTImage2wxBitmap(mrpt::img::CImage(shown, mrpt::img::DEEP_COPY)));
+	return *b;
+}
+}  // namespace
+
+TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int first_frame)
+	: wxFrame(nullptr, wxID_ANY, "omnirange-tuner: " + session.options().rawlog),
+	  s_(session),
+	  save_to_(std::move(save_to)),
+	  play_(this)
+{
+	auto* panel = new wxPanel(this);
+	auto* main = new wxBoxSizer(wxHORIZONTAL);
+	auto* left = new wxBoxSizer(wxVERTICAL);
+	image_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kImageWidth, kImageWidth * 3 / 4));
+	left->Add(image_, 0, wxALL, 4);
+	auto* nav = new wxBoxSizer(wxHORIZONTAL);
+	auto* prev = new wxButton(panel, wxID_ANY, "<", wxDefaultPosition, wxSize(36, -1));
+	auto* next = new wxButton(panel, wxID_ANY, ">", wxDefaultPosition, wxSize(36, -1));
+	auto* play = new wxButton(panel, wxID_ANY, "Play");
+	slider_ = new wxSlider(panel, wxID_ANY, 0, 0, std::max(1, s_.frames() - 1));
+	frame_label_ = new wxStaticText(panel, wxID_ANY, "frame 0 / 0");
+	nav->Add(prev, 0, wxALL, 2);
+	nav->Add(play, 0, wxALL, 2);
+	nav->Add(next, 0, wxALL, 2);
+	nav->Add(slider_, 1, wxALL | wxEXPAND, 2);
+	nav->Add(frame_label_, 0, wxALL | wxALIGN_CENTER_VERTICAL, 4);
+	left->Add(nav, 0, wxEXPAND);
+	main->Add(left, 0);
+
+	auto* right = new wxBoxSizer(wxVERTICAL);
+	plot_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kPlotSize, kPlotSize));
+	right->Add(new wxStaticText(panel, wxID_ANY,
+								"scan from above (1 m circles): omnicam hit green, no hit yellow, too close red, "
+								"outlier magenta; laser cyan; truth white"),
+			   0, wxALL, 2);
+	right->Add(plot_, 0, wxALL, 2);
+	auto* smalls = new wxBoxSizer(wxHORIZONTAL);
+	birdseye_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kSmall, kSmall));
+	colours_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kSmall, kSmall));
+	smalls->Add(birdseye_, 0, wxALL, 2);
+	smalls->Add(colours_, 0, wxALL, 2);
+	right->Add(new wxStaticText(panel, wxID_ANY, "bird's-eye view (eqs. 1-3)  |  colours called floor"), 0, wxALL, 2);
+	right->Add(smalls, 0);
+	frame_score_ = new wxStaticText(panel, wxID_ANY, "");
+	right->Add(frame_score_, 0, wxALL, 4);
+	buildControls(panel, right);
+	main->Add(right, 1, wxEXPAND);
+	panel->SetSizer(main);
+	auto* frame_sizer = new wxBoxSizer(wxVERTICAL);
+	frame_sizer->Add(panel, 1, wxEXPAND);
+	SetSizerAndFit(frame_sizer);
+	CreateStatusBar();
+
+	prev->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { setFrame(frame_ - 1); });
+	next->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { setFrame(frame_ + 1); });
+	play->Bind(wxEVT_BUTTON, [this, play](wxCommandEvent&) {
+		if (play_.IsRunning()) play_.Stop(), play->SetLabel("Play");
+		else play_.Start(150), play->SetLabel("Stop");
+	});
+	Bind(wxEVT_TIMER, [this](wxTimerEvent&) { setFrame(frame_ + 1 < s_.frames() ? frame_ + 1 : 0); });
+	slider_->Bind(wxEVT_SLIDER, [this](wxCommandEvent&) { setFrame(slider_->GetValue()); });
+	Bind(wxEVT_CHAR_HOOK, &TunerFrame::onKey, this);
+
+	controlsFromParams();
+	setFrame(std::clamp(first_frame, 0, s_.frames() - 1));
+}
+
+void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
+{
+	auto* grid = new wxFlexGridSizer(4, 4, 4);
+	const auto label = [&](const char* text) { grid->Add(new wxStaticText(p, wxID_ANY, text), 0, wxALIGN_CENTER_VERTICAL); };
+	const auto spin = [&](const char* text, int lo, int hi) {
+		label(text);
+		auto* c = new wxSpinCtrl(p, wxID_ANY, "", wxDefaultPosition, wxSize(130, -1), wxSP_ARROW_KEYS, lo, hi);
+		grid->Add(c);
+		c->Bind(wxEVT_SPINCTRL, [this](wxSpinEvent&) { onParamsChanged(); });
+		return c;
+	};
+	const auto real = [&](const char* text, double lo, double hi, double inc, int digits) {
+		label(text);
+		auto* c = new wxSpinCtrlDouble(p, wxID_ANY, "", wxDefaultPosition, wxSize(130, -1), wxSP_ARROW_KEYS, lo, hi,
+									   lo, inc);
+		c->SetDigits(digits);
+		grid->Add(c);
+		c->Bind(wxEVT_SPINCTRLDOUBLE, [this](wxSpinDoubleEvent&) { onParamsChanged(); });
+		return c;
+	};
+	n_ = spin("N [px]", 1, 200);
+	k_ = spin("K [px]", 0, 50);
+	threshold_ = real("threshold", 0.0, 1.0, 0.0025, 4);
+	label("boundary");
+	boundary_ = new wxChoice(p, wxID_ANY);
+	boundary_->Append("midpoint"), boundary_->Append("subpixel");
+	grid->Add(boundary_);
+	label("outlier filter");
+	outliers_ = new wxChoice(p, wxID_ANY);
+	outliers_->Append("none"), outliers_->Append("spike");
+	grid->Add(outliers_);
+	cx_ = real("cx [px]", 0, 20000, 0.5, 1);
+	cy_ = real("cy [px]", 0, 20000, 0.5, 1);
+	r_ = real("R [px]", 1, 20000, 0.5, 1);
+	azimuth_ = real("forward [deg]", -360, 360, 1, 1);
+	label("mirrored");
+	mirrored_ = new wxCheckBox(p, wxID_ANY, "");
+	grid->Add(mirrored_);
+	for (wxChoice* c : {boundary_, outliers_}) c->Bind(wxEVT_CHOICE, [this](wxCommandEvent&) { onParamsChanged(); });
+	mirrored_->Bind(wxEVT_CHECKBOX, [this](wxCommandEvent&) { onParamsChanged(); });
+	sizer->Add(grid, 0, wxALL, 4);
+
+	auto* shows = new wxBoxSizer(wxHORIZONTAL);
+	const std::vector<std::pair<const char*, bool*>> boxes = {
+		{"free", &overlay_.classification}, {"scanlines", &overlay_.scanlines}, {"rays", &overlay_.rays},
+		{"K-rejected", &overlay_.candidates}, {"laser", &overlay_.laser},    {"truth", &overlay_.truth},
+		{"set-up", &overlay_.camera}};
+	for (const auto& [name, flag] : boxes)
+	{
+		auto* box = new wxCheckBox(p, wxID_ANY, name);
+		box->SetValue(*flag);
+		box->Bind(wxEVT_CHECKBOX, [this, flag = flag, box](wxCommandEvent&) {
+			*flag = box->GetValue();
+			refresh();
+		});
+		shows->Add(box, 0, wxALL, 2);
+	}
+	sizer->Add(shows, 0, wxALL, 2);
+
+	auto* actions = new wxBoxSizer(wxHORIZONTAL);
+	auto* score = new wxButton(p, wxID_ANY, "Score all frames");
+	auto* train = new wxButton(p, wxID_ANY, "Train histogram here");
+	auto* save = new wxButton(p, wxID_ANY, "Save ini (Ctrl+S)");
+	score->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { scoreAll(); });
+	train->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { this->train(); });
+	save->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { this->save(); });
+	for (auto* b : {score, train, save}) actions->Add(b, 0, wxALL, 2);
+	sizer->Add(actions, 0, wxALL, 2);
+	sizer->Add(new wxStaticText(p, wxID_ANY,
+								"keys: Left/Right frame, Home/End first/last, [ and ] halve/double the threshold, "
+								"Ctrl+S save"),
+			   0, wxALL, 4);
+}
+
+void TunerFrame::controlsFromParams()
+{
+	updating_ = true;
+	const RangefinderParams& p = s_.params();
+	n_->SetValue(p.scanner.filter.N);
+	k_->SetValue(p.scanner.filter.K);
+	threshold_->SetValue(p.threshold);
+	boundary_->SetSelection(p.scanner.boundary_model == BoundaryModel::Midpoint ? 0 : 1);
+	outliers_->SetSelection(p.outliers.outlier_filter == OutlierFilterKind::None ? 0 : 1);
+	cx_->SetValue(p.camera.cx);
+	cy_->SetValue(p.camera.cy);
+	r_->SetValue(p.camera.R);
+	azimuth_->SetValue(p.camera.forward_azimuth * kDeg);
+	mirrored_->SetValue(p.camera.mirrored);
+	updating_ = false;
+}
+
+void TunerFrame::onParamsChanged()
+{
+	if (updating_) return;
+	RangefinderParams p = s_.params();
+	p.scanner.filter.N = n_->GetValue();
+	p.scanner.filter.K = k_->GetValue();
+	p.threshold = threshold_->GetValue();
+	p.scanner.boundary_model = boundary_->GetSelection() == 0 ? BoundaryModel::Midpoint : BoundaryModel::Subpixel;
+	p.outliers.outlier_filter = outliers_->GetSelection() == 0 ? OutlierFilterKind::None : OutlierFilterKind::Spike;
+	p.camera.cx = cx_->GetValue();
+	p.camera.cy = cy_->GetValue();
+	p.camera.R = r_->GetValue();
+	p.camera.forward_azimuth = azimuth_->GetValue() / kDeg;
+	p.camera.mirrored = mirrored_->GetValue();
+	try
+	{
+		s_.setParams(p);
+	}
+	catch (const std::exception& e)
+	{
+		status(wxString::FromUTF8(e.what()), true);
+		return;
+	}
+	refresh();
+}
+
+void TunerFrame::setFrame(int k)
+{
+	frame_ = std::clamp(k, 0, s_.frames() - 1);
+	slider_->SetValue(frame_);
+	frame_label_->SetLabel(wxString::Format("frame %d / %d", frame_, s_.frames() - 1));
+	SetTitle(wxString::Format("omnirange-tuner: frame %d / %d of %s", frame_, s_.frames() - 1, s_.options().rawlog));
+	refresh();
+}
+
+void TunerFrame::refresh()
+{
+	if (!s_.hasColours())
+	{
+		image_->SetBitmap(toBitmap(s_.image(frame_), kImageWidth));
+		return status("no histogram: train one on this rawlog (button) or start with -H FILE");
+	}
+	const auto t0 = std::chrono::steady_clock::now();
+	tuner::FrameScan scan;
+	try
+	{
+		scan = s_.scan(frame_);
+	}
+	catch (const std::exception& e)
+	{
+		status(wxString::FromUTF8(e.what()), true);
+		return;
+	}
+	const Rangefinder& rf = s_.rangefinder();
+	image_->SetBitmap(toBitmap(tuner::drawOmniOverlay(scan, rf, overlay_), kImageWidth));
+	plot_->SetBitmap(toBitmap(tuner::drawScanPlot(scan, s_.params(), kPlotSize), kPlotSize));
+	birdseye_->SetBitmap(toBitmap(BirdsEyeView(rf.camera(), kSmall, 2 * s_.params().scanner.max_range / kSmall).render(scan.bgr), kSmall));
+	colours_->SetBitmap(toBitmap(tuner::drawFloorColours(s_.colours(), rf.classifier(), cv::Size(kSmall, kSmall)), kSmall));
+	const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+	const int hits = scan.scan.count(RayStatus::Hit), rays = static_cast<int>(scan.scan.rays.size());
+	wxString score = wxString::Format("hits %d of %d rays", hits, rays);
+	if (!scan.laser_pairs.empty())
+	{
+		const auto a = tuner::agreementOf(scan.laser_pairs);
+		score += wxString::Format("; against the laser: mean abs %.3f m over %zu rays", a.mean_abs, a.compared);
+	}
+	frame_score_->SetLabel(score);
+	status(wxString::Format("frame %d: scan %.1f ms, update %.1f ms", frame_, scan.scan_ms, ms));
+	Layout();
+}
+
+void TunerFrame::onKey(wxKeyEvent& e)
+{
+	const wxWindow* focus = wxWindow::FindFocus();
+	const bool typing = dynamic_cast<const wxSpinCtrl*>(focus) || dynamic_cast<const wxSpinCtrlDouble*>(focus) ||
+						(focus && focus->GetParent() && dynamic_cast<const wxSpinCtrlDouble*>(focus->GetParent()));
+	const int key = e.GetKeyCode();
+	if (e.ControlDown() && (key == 'S' || key == 's')) return save();
+	if (!typing)
+	{
+		if (key == WXK_RIGHT) return setFrame(frame_ + 1);
+		if (key == WXK_LEFT) return setFrame(frame_ - 1);
+		if (key == WXK_HOME) return setFrame(0);
+		if (key == WXK_END) return setFrame(s_.frames() - 1);
+		if (key == ']' || key == '[')
+		{
+			threshold_->SetValue(std::clamp(threshold_->GetValue() * (key == ']' ? 2.0 : 0.5), 0.0, 1.0));
+			return onParamsChanged();
+		}
+	}
+	e.Skip();
+}
+
+void TunerFrame::save()
+{
+	try
+	{
+		s_.saveIni(save_to_);
+		status("saved [" + s_.options().section + "] to " + save_to_);
+	}
+	catch (const std::exception& e)
+	{
+		status(wxString::FromUTF8(e.what()), true);
+	}
+}
+
+void TunerFrame::scoreAll()
+{
+	if (!s_.hasColours()) return status("no histogram yet: train one first", true);
+	wxProgressDialog progress("omnirange-tuner", "scanning every frame", s_.frames(), this, wxPD_APP_MODAL | wxPD_AUTO_HIDE);
+	const auto a = s_.scoreAll([&](int done, int) { progress.Update(done); });
+	status(wxString::Format("whole rawlog: mean abs %.4f m over %zu rays of %d frames with a laser", a.mean_abs,
+							a.compared, a.frames));
+	refresh();
+}
+
+void TunerFrame::train()
+{
+	const std::string out = std::filesystem::path(save_to_).replace_extension(".hist").string();
+	try
+	{
+		wxBusyInfo busy("training the floor's colours on this rawlog...", this);
+		const auto r = s_.train(out);
+		status(wxString::Format("trained on %d pairs, %zu floor pixels -> %s", r.used, r.pixels, out));
+	}
+	catch (const std::exception& e)
+	{
+		return status(wxString::FromUTF8(e.what()), true);
+	}
+	refresh();
+}
+
+void TunerFrame::status(const wxString& text, bool error)
+{
+	GetStatusBar()->SetStatusText(error ? "error: " + text : text);
+}

@@ -1,0 +1,52 @@
+#pragma once
+// omnirange-tuner's window: a thin view over tuner::TunerSession. Every
+// control change re-scans the frame and redraws (tuner/Overlays.h draws).
+
+#include <omnirange_tuner/Overlays.h>
+#include <omnirange_tuner/TunerSession.h>
+
+#include <wx/checkbox.h>
+#include <wx/choice.h>
+#include <wx/frame.h>
+#include <wx/slider.h>
+#include <wx/spinctrl.h>
+#include <wx/statbmp.h>
+#include <wx/stattext.h>
+#include <wx/timer.h>
+
+#include <string>
+#include <vector>
+
+class TunerFrame : public wxFrame
+{
+   public:
+	/** `save_to`: the ini that Save (Ctrl+S) writes the [section] keys into. */
+	TunerFrame(omnirange::tuner::TunerSession& session, std::string save_to, int first_frame);
+
+   private:
+	void buildControls(wxWindow* parent, wxSizer* sizer);
+	void controlsFromParams();
+	void onParamsChanged();
+	void setFrame(int k);
+	void refresh();
+	void onKey(wxKeyEvent& e);
+	void save();
+	void scoreAll();
+	void train();
+	void status(const wxString& text, bool error = false);
+
+	omnirange::tuner::TunerSession& s_;
+	std::string save_to_;
+	omnirange::tuner::OverlayOptions overlay_;
+	int frame_{0};
+	bool updating_{false};  // controls being set from the parameters
+
+	wxStaticBitmap *image_{}, *plot_{}, *birdseye_{}, *colours_{};
+	wxSlider* slider_{};
+	wxStaticText *frame_label_{}, *frame_score_{};
+	wxSpinCtrl *n_{}, *k_{};
+	wxSpinCtrlDouble *threshold_{}, *cx_{}, *cy_{}, *r_{}, *azimuth_{};
+	wxChoice *boundary_{}, *outliers_{};
+	wxCheckBox* mirrored_{};
+	wxTimer play_;
+};

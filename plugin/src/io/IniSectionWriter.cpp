@@ -1,0 +1,96 @@
+#include "omnirange/io/IniSectionWriter.h"
+
+#include "omnirange/io/AtomicWrite.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace omnirange
+{
+namespace
+{
+std::string trim(const std::string& s)
+{
+	const auto a = s.find_first_not_of(" \t\r");
+	if (a == std::string::npos) return "";
+	return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+}
+
+/** The section a "[name]" line opens, or "" if the line is no header. */
+std::string headerOf(const std::string& line)
+{
+	const std::string t = trim(line);
+	if (t.size() < 2 || t.front() != '[' || t.find(']') == std::string::npos) return "";
+	return trim(t.substr(1, t.find(']') - 1));
+}
+
+/** The key of a "key = value" line, or "" for comments and other lines. */
+std::string keyOf(const std::string& line)
+{
+	const std::string t = trim(line);
+	if (t.empty() || t[0] == ';' || t[0] == '#' || t[0] == '[') return "";
+	const auto eq = t.find('=');
+	return eq == std::string::npos ? "" : trim(t.substr(0, eq));
+}
+
+/** The line with its value replaced, its indentation kept. (MRPT's reader
+ * has no comments after a value: `;` and `#` start comment lines only.) */
+std::string withValue(const std::string& line, const std::string& key, const std::string& value)
+{
+	return line.substr(0, line.find_first_not_of(" \t")) + key + " = " + value;
+}
+}  // namespace
+
+void writeIniSection(const std::string& path, const std::string& section,
+					 const std::vector<std::pair<std::string, std::string>>& values)
+{
+	std::vector<std::string> lines;
+	if (std::filesystem::exists(path))
+	{
+		std::ifstream in(path);
+		if (!in) throw std::runtime_error("cannot read ini file '" + path + "'");
+		for (std::string l; std::getline(in, l);) lines.push_back(l);
+	}
+	std::map<std::string, std::string> pending(values.begin(), values.end());
+	std::string current;
+	int headers = 0;
+	std::ptrdiff_t insert_at = -1;  // after the section's last key (or its header)
+	for (std::size_t i = 0; i < lines.size(); ++i)
+	{
+		if (const std::string h = headerOf(lines[i]); !h.empty())
+		{
+			current = h;
+			if (current == section && ++headers > 1)
+				throw std::runtime_error(path + ":" + std::to_string(i + 1) + ": section [" + section + "] appears twice");
+			if (current == section) insert_at = static_cast<std::ptrdiff_t>(i);
+			continue;
+		}
+		if (current != section) continue;
+		const std::string key = keyOf(lines[i]);
+		if (key.empty()) continue;
+		insert_at = static_cast<std::ptrdiff_t>(i);
+		if (const auto it = pending.find(key); it != pending.end())
+		{
+			lines[i] = withValue(lines[i], key, it->second);
+			pending.erase(it);
+		}
+	}
+	std::vector<std::string> added;
+	for (const auto& [key, value] : values)
+		if (pending.count(key)) added.push_back(key + " = " + value);
+	if (insert_at < 0)
+	{
+		if (!lines.empty() && !trim(lines.back()).empty()) lines.emplace_back();
+		lines.push_back("[" + section + "]");
+		insert_at = static_cast<std::ptrdiff_t>(lines.size()) - 1;
+	}
+	lines.insert(lines.begin() + insert_at + 1, added.begin(), added.end());
+	std::ostringstream out;
+	for (const auto& l : lines) out << l << "\n";
+	writeFileAtomically(path, out.str());
+}
+
+}  // namespace omnirange

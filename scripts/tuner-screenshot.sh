@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# omnirange-tuner on the factory sample at frame 5 (histogram trained on the
+# sample, the ini's parameters), under Xvfb: the picture in docs/tuner.md.
+#   scripts/tuner-screenshot.sh OUT.png
+# Needs Debian's xvfb, xdotool, x11-apps and imagemagick, and a build in build/.
+set -euo pipefail
+src="$(cd "$(dirname "$0")/.." && pwd)"; apps="$src/build/apps"; out=$(realpath -m "$1")
+work=$(mktemp -d)
+"$apps/omnirange-train" -q -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -o "$work/f.hist"
+export DISPLAY=:96
+Xvfb :96 -screen 0 1600x1000x24 >/dev/null 2>&1 & xvfb=$!
+tuner=""
+trap 'kill $tuner $xvfb 2>/dev/null || true; rm -rf "$work"' EXIT
+sleep 2
+"$apps/omnirange-tuner" -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -H "$work/f.hist" -f 5 \
+  </dev/null >/dev/null 2>&1 & tuner=$!
+win=$(timeout 30 xdotool search --sync --onlyvisible --name "omnirange-tuner" | head -1)
+sleep 3
+eval "$(xdotool getwindowgeometry --shell "$win")"
+xwd -root -silent | /usr/bin/convert xwd:- -crop "${WIDTH}x${HEIGHT}+${X}+${Y}" +repage "$out"
+echo "screenshot: $out (${WIDTH}x${HEIGHT})"

@@ -1,0 +1,183 @@
+// The tuner without its window: a session over the factory sample scans
+// frames, follows parameter changes, trains, scores and saves the ini into a
+// user's file without losing its comments; the overlays show what the scan
+// found where it found it.
+#include <omnirange_tuner/Overlays.h>
+#include <omnirange_tuner/TunerSession.h>
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace omnirange;
+using namespace omnirange::tuner;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kSource = OMNIRANGE_SOURCE_DIR;
+const std::string kSample = kSource + "/rawlogs/factory-sample.rawlog";
+const std::string kIni = kSource + "/ini/factory.ini";
+
+std::string workDir(const std::string& name)
+{
+	const fs::path d = fs::temp_directory_path() / "omnirange_tuner" / name;
+	fs::remove_all(d);
+	fs::create_directories(d);
+	return d.string();
+}
+
+std::string read(const std::string& path)
+{
+	std::ifstream in(path);
+	std::stringstream s;
+	s << in.rdbuf();
+	return s.str();
+}
+
+/** A session on the sample with a histogram trained in it. */
+TunerSession trainedSession(const std::string& dir)
+{
+	SessionOptions o;
+	o.rawlog = kSample;
+	o.ini = kIni;
+	TunerSession s(o);
+	EXPECT_FALSE(s.hasColours());
+	const auto r = s.train(dir + "/f.hist");
+	EXPECT_EQ(r.used, 20);
+	EXPECT_TRUE(s.hasColours());
+	EXPECT_TRUE(fs::exists(dir + "/f.hist"));
+	return s;
+}
+
+int countColour(const cv::Mat& img, const cv::Scalar& c)
+{
+	int n = 0;
+	for (int v = 0; v < img.rows; ++v)
+		for (int u = 0; u < img.cols; ++u)
+		{
+			const auto& p = img.at<cv::Vec3b>(v, u);
+			n += p[0] == c[0] && p[1] == c[1] && p[2] == c[2];
+		}
+	return n;
+}
+}  // namespace
+
+TEST(TunerSession, FramesScansAndTheLaserAgreement)
+{
+	const std::string dir = workDir("frames");
+	TunerSession s = trainedSession(dir);
+	ASSERT_EQ(s.frames(), 20);
+	for (int k = 0; k < s.frames(); ++k) EXPECT_TRUE(s.frame(k).laser) << k;
+	const FrameScan f = s.scan(5);
+	EXPECT_EQ(f.index, 5);
+	EXPECT_EQ(f.scan.rays.size(), 360u);
+	EXPECT_GT(f.scan.count(RayStatus::Hit), 50);
+	const Agreement a = agreementOf(f.laser_pairs);
+	EXPECT_GT(a.compared, 40u);
+	EXPECT_LT(a.mean_abs, 0.1375);  // the paper's worst Table II figure
+	const Agreement all = s.scoreAll();
+	EXPECT_EQ(all.frames, 20);
+	EXPECT_LT(all.mean_abs, 0.1375);
+}
+
+TEST(TunerSession, ParameterChangesRescanAndImpossibleOnesAreRefused)
+{
+	const std::string dir = workDir("params");
+	TunerSession s = trainedSession(dir);
+	const int hits = s.scan(3).scan.count(RayStatus::Hit);
+	RangefinderParams p = s.params();
+	p.threshold = 1.0;  // no colour is that frequent: nothing is floor
+	s.setParams(p);
+	EXPECT_EQ(s.scan(3).scan.count(RayStatus::TooClose), 360);
+	RangefinderParams bad = s.params();
+	bad.scanner.filter.N = 0;
+	EXPECT_THROW(s.setParams(bad), std::invalid_argument);
+	EXPECT_EQ(s.params().scanner.filter.N, p.scanner.filter.N);  // the old ones stay
+	p.threshold = 0.075;
+	s.setParams(p);
+	EXPECT_EQ(s.scan(3).scan.count(RayStatus::Hit), hits);
+}
+
+TEST(TunerSession, SavingKeepsTheUsersCommentsAndOtherSections)
+{
+	const std::string dir = workDir("save");
+	TunerSession s = trainedSession(dir);
+	const std::string user = dir + "/user.ini";
+	fs::copy_file(kIni, user);
+	RangefinderParams p = s.params();
+	p.threshold = 0.0123;
+	p.scanner.filter.K = 5;
+	s.setParams(p);
+	s.saveIni(user);
+	RangefinderParams back;
+	back.loadFromConfig(mrpt::config::CConfigFile(user), "rangefinder");
+	EXPECT_DOUBLE_EQ(back.threshold, 0.0123);
+	EXPECT_EQ(back.scanner.filter.K, 5);
+	// Every comment line and the [experiment] section are as they were.
+	const auto comments = [](const std::string& text) {
+		std::istringstream in(text);
+		std::vector<std::string> out;
+		for (std::string l; std::getline(in, l);)
+			if (!l.empty() && l[0] == ';') out.push_back(l);
+		return out;
+	};
+	EXPECT_EQ(comments(read(user)), comments(read(kIni)));
+	const std::string before = read(kIni), after = read(user);
+	EXPECT_EQ(after.substr(0, after.find("[rangefinder]")), before.substr(0, before.find("[rangefinder]")));
+}
+
+TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOff)
+{
+	const std::string dir = workDir("overlays");
+	TunerSession s = trainedSession(dir);
+	const FrameScan f = s.scan(5);
+	const Rangefinder& rf = s.rangefinder();
+	OverlayOptions none;
+	none.classification = none.rays = none.candidates = none.laser = none.truth = none.camera = false;
+	const cv::Mat plain = drawOmniOverlay(f, rf, none);
+	EXPECT_EQ(cv::norm(plain, f.bgr, cv::NORM_INF), 0.0);
+
+	OverlayOptions rays = none;
+	rays.rays = true;
+	const cv::Mat with_rays = drawOmniOverlay(f, rf, rays);
+	// Every hit's end pixel is painted the hit colour.
+	int checked = 0;
+	for (const Ray& r : f.scan.rays)
+	{
+		if (r.status != RayStatus::Hit) continue;
+		const Pixel p = rf.camera().pixelFromPolar(r.bearing, r.hit_rho);
+		const auto& px = with_rays.at<cv::Vec3b>(static_cast<int>(std::lround(p.v)), static_cast<int>(std::lround(p.u)));
+		const bool hit_colour = px[0] == 0 && px[1] == 255 && px[2] == 0;
+		const bool other_status = px[1] == 255 || px[2] == 255;  // a neighbour's dot drawn over it
+		EXPECT_TRUE(hit_colour || other_status) << r.bearing;
+		++checked;
+	}
+	EXPECT_GT(checked, 50);
+
+	OverlayOptions laser = none;
+	laser.laser = true;
+	EXPECT_GT(countColour(drawOmniOverlay(f, rf, laser), colour::kLaser), 50);
+
+	OverlayOptions tint = none;
+	tint.classification = true;
+	const cv::Mat tinted = drawOmniOverlay(f, rf, tint);
+	// Just beyond the base ahead is free floor: tinted towards blue.
+	const Pixel ahead = rf.camera().pixelFromPolar(0.0, rf.params().scanner.base_radius + 5);
+	const cv::Vec3b a = tinted.at<cv::Vec3b>(static_cast<int>(ahead.v), static_cast<int>(ahead.u));
+	const cv::Vec3b b = f.bgr.at<cv::Vec3b>(static_cast<int>(ahead.v), static_cast<int>(ahead.u));
+	EXPECT_GT(a[0], b[0]);
+	EXPECT_LT(a[2], b[2]);
+
+	const cv::Mat plot = drawScanPlot(f, s.params(), 300);
+	EXPECT_GT(countColour(plot, colour::kHit), 50);
+	EXPECT_GT(countColour(plot, colour::kLaser), 20);
+	const cv::Mat swatches = drawFloorColours(s.colours(), rf.classifier(), cv::Size(160, 160));
+	EXPECT_GT(countColour(swatches, cv::Scalar(30, 30, 30)), 0);
+	EXPECT_LT(countColour(swatches, cv::Scalar(30, 30, 30)), 160 * 160);
+}

@@ -1,0 +1,55 @@
+// Writing one section into a person's ini: values replaced in place, new
+// keys at the section's end, every comment and other section kept.
+#include <omnirange/io/IniSectionWriter.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace omnirange;
+
+namespace
+{
+std::string read(const std::string& path)
+{
+	std::ifstream in(path);
+	std::stringstream s;
+	s << in.rdbuf();
+	return s.str();
+}
+std::string tmp(const std::string& name) { return testing::TempDir() + name; }
+}  // namespace
+
+TEST(IniSectionWriter, ReplacesInPlaceAddsAtTheSectionsEndAndKeepsTheRest)
+{
+	const std::string path = tmp("user.ini");
+	std::ofstream(path) << "; my robot\n[experiment]\nname = x\nN = 99\n\n[rangefinder]\n; [px] filter\n  N = 20\n"
+						   "threshold = 0.075\n\n; the end of rangefinder\n[other]\nK = 7\n";
+	writeIniSection(path, "rangefinder", {{"threshold", "0.01"}, {"N", "10"}, {"K", "4"}});
+	EXPECT_EQ(read(path),
+			  "; my robot\n[experiment]\nname = x\nN = 99\n\n[rangefinder]\n; [px] filter\n  N = 10\n"
+			  "threshold = 0.01\nK = 4\n\n; the end of rangefinder\n[other]\nK = 7\n");
+}
+
+TEST(IniSectionWriter, AppendsAMissingSectionAndCreatesAMissingFile)
+{
+	const std::string path = tmp("no_section.ini");
+	std::ofstream(path) << "[experiment]\nname = x";
+	writeIniSection(path, "rangefinder", {{"N", "10"}});
+	EXPECT_EQ(read(path), "[experiment]\nname = x\n\n[rangefinder]\nN = 10\n");
+	const std::string fresh = tmp("fresh.ini");
+	std::filesystem::remove(fresh);
+	writeIniSection(fresh, "rangefinder", {{"K", "2"}});
+	EXPECT_EQ(read(fresh), "[rangefinder]\nK = 2\n");
+}
+
+TEST(IniSectionWriter, ASectionTwiceIsAnErrorAndTheFileStays)
+{
+	const std::string path = tmp("twice.ini");
+	const std::string text = "[rangefinder]\nN = 1\n[rangefinder]\nK = 2\n";
+	std::ofstream(path) << text;
+	EXPECT_THROW(writeIniSection(path, "rangefinder", {{"N", "10"}}), std::runtime_error);
+	EXPECT_EQ(read(path), text);
+}

@@ -1,0 +1,105 @@
+#pragma once
+// What omnirange-tuner shows and changes, without a window: a rawlog's
+// omnicam frames with their laser (and true, where the simulator wrote it)
+// scans, the rangefinder's parameters and colour model, one frame scanned
+// and compared with its laser, the whole rawlog scored, a histogram trained,
+// and the [rangefinder] section saved into the user's ini. The GUI is a thin
+// view over this class; the tests drive it directly.
+
+#include <omnirange/core/Rangefinder.h>
+#include <omnirange/train/LaserComparison.h>
+#include <omnirange/train/RawlogTraining.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationImage.h>
+
+#include <opencv2/core.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace omnirange::tuner
+{
+struct SessionOptions
+{
+	std::string rawlog;
+	std::string ini;  ///< read for the camera and the parameters; saved into by saveIni()
+	std::string section{"rangefinder"};
+	std::string histogram;  ///< empty: train one with train() before scanning
+	std::string omni_label{kOmnicamLabel}, laser_label{kLaserLabel}, truth_label{kTruthLabel};
+	double max_dt{kDefaultMaxPairingDt};
+};
+
+/** One omnicam frame and what was taken with it. */
+struct Frame
+{
+	mrpt::obs::CObservationImage::Ptr image;
+	mrpt::obs::CObservation2DRangeScan::Ptr laser;  ///< null if none within max_dt
+	mrpt::obs::CObservation2DRangeScan::Ptr truth;  ///< null if the rawlog has none
+};
+
+/** One frame scanned with the current parameters. */
+struct FrameScan
+{
+	int index{-1};
+	cv::Mat bgr;  ///< the decoded image
+	RangeScan scan;
+	mrpt::obs::CObservation2DRangeScan::Ptr omni;  ///< the scan as MRPT sees it
+	std::vector<RangePair> laser_pairs, truth_pairs;  ///< empty without a laser / truth scan
+	double scan_ms{0};  ///< classify + search + filter, this frame
+};
+
+/** Mean absolute difference over the compared pairs (paper §IV-B). */
+struct Agreement
+{
+	std::size_t compared{0};
+	double mean_abs{0};
+	int frames{0};
+};
+Agreement agreementOf(const std::vector<RangePair>& pairs);
+
+class TunerSession
+{
+   public:
+	/** Reads the rawlog's frames (not their images), the ini and the
+	 * histogram; throws std::runtime_error naming what is wrong. */
+	explicit TunerSession(SessionOptions options);
+
+	int frames() const { return static_cast<int>(frames_.size()); }
+	const Frame& frame(int k) const { return frames_.at(k); }
+	const SessionOptions& options() const { return o_; }
+
+	const RangefinderParams& params() const { return params_; }
+	/** Validates and takes new parameters; throws std::invalid_argument
+	 * (the old ones stay) if they are impossible. */
+	void setParams(const RangefinderParams& params);
+	bool hasColours() const { return rf_ != nullptr; }
+	const ColourModel& colours() const { return colours_; }
+	const Rangefinder& rangefinder() const;
+
+	/** Frame k's image, decoded (the last one is kept). */
+	const cv::Mat& image(int k);
+	/** Scans frame k (0-based) with the current parameters. */
+	FrameScan scan(int k);
+	/** Every frame scanned and compared with its laser; `progress(done, total)`. */
+	Agreement scoreAll(const std::function<void(int, int)>& progress = {});
+	/** Trains the colour model on the open rawlog (its laser-labelled pairs)
+	 * with the current camera, saves it to `histogram` and uses it. */
+	RawlogTrainingResult train(const std::string& histogram, TrainingParams training = {});
+	/** Writes every [section] key with its current value into `ini` (the
+	 * session's own by default), keeping the file's comments and other sections. */
+	void saveIni(const std::string& ini = "") const;
+
+   private:
+	SessionOptions o_;
+	std::vector<Frame> frames_;
+	RangefinderParams params_;
+	ColourModel colours_;
+	std::unique_ptr<Rangefinder> rf_;
+	int cached_{-1};
+	cv::Mat cached_bgr_;
+};
+
+}  // namespace omnirange::tuner

@@ -1,0 +1,150 @@
+#include "omnirange_tuner/Overlays.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace omnirange::tuner
+{
+namespace
+{
+cv::Point at(const Pixel& p) { return {static_cast<int>(std::lround(p.u)), static_cast<int>(std::lround(p.v))}; }
+
+cv::Scalar statusColour(RayStatus s)
+{
+	switch (s)
+	{
+		case RayStatus::Hit: return colour::kHit;
+		case RayStatus::NoHit: return colour::kNoHit;
+		case RayStatus::TooClose: return colour::kTooClose;
+		case RayStatus::Outlier: return colour::kOutlier;
+	}
+	return colour::kHit;
+}
+
+/** Where each ray ends in the image [px from the centre]. */
+double endRho(const Ray& r, const Rangefinder& rf)
+{
+	switch (r.status)
+	{
+		case RayStatus::Hit:
+		case RayStatus::Outlier: return r.hit_rho;
+		case RayStatus::NoHit: return rf.scanner().maxRangeRho();
+		case RayStatus::TooClose: return rf.params().scanner.base_radius;
+	}
+	return r.hit_rho;
+}
+
+void tintFreePixels(cv::Mat& img, const Rangefinder& rf)
+{
+	const OmniCameraModel& cam = rf.camera();
+	const double inner = rf.params().scanner.base_radius, outer = rf.scanner().maxRangeRho();
+	const double cx = cam.params().cx, cy = cam.params().cy;
+	const int v0 = std::max(0, static_cast<int>(cy - outer)), v1 = std::min(img.rows - 1, static_cast<int>(cy + outer));
+	const int u0 = std::max(0, static_cast<int>(cx - outer)), u1 = std::min(img.cols - 1, static_cast<int>(cx + outer));
+	const cv::Vec3b blue(255, 0, 0);
+	for (int v = v0; v <= v1; ++v)
+		for (int u = u0; u <= u1; ++u)
+		{
+			const double rho = cam.rhoOfPixel({double(u), double(v)});
+			if (rho < inner || rho > outer) continue;
+			cv::Vec3b& px = img.at<cv::Vec3b>(v, u);
+			if (rf.classifier().isFree(&px[0]))
+				for (int c = 0; c < 3; ++c) px[c] = static_cast<std::uint8_t>((3 * px[c] + 2 * blue[c]) / 5);
+		}
+}
+}  // namespace
+
+cv::Mat drawOmniOverlay(const FrameScan& s, const Rangefinder& rf, const OverlayOptions& o)
+{
+	cv::Mat img = s.bgr.clone();
+	const OmniCameraModel& cam = rf.camera();
+	const double base = rf.params().scanner.base_radius, outer = rf.scanner().maxRangeRho();
+	if (o.classification) tintFreePixels(img, rf);
+	const int S = static_cast<int>(s.scan.rays.size());
+	if (o.scanlines)
+		for (int i = 0; i < S; i += std::max(1, o.scanline_step))
+			cv::line(img, at(cam.pixelFromPolar(s.scan.rays[i].bearing, base)),
+					 at(cam.pixelFromPolar(s.scan.rays[i].bearing, outer)), cv::Scalar(128, 128, 128), 1, cv::LINE_AA);
+	if (o.camera)
+	{
+		const cv::Point c(static_cast<int>(std::lround(cam.params().cx)), static_cast<int>(std::lround(cam.params().cy)));
+		cv::circle(img, c, static_cast<int>(std::lround(base)), colour::kCircle, 1, cv::LINE_AA);
+		cv::circle(img, c, static_cast<int>(std::lround(outer)), colour::kNoHit, 1, cv::LINE_AA);
+		cv::circle(img, c, static_cast<int>(std::lround(cam.horizonRho())), colour::kCircle, 1, cv::LINE_AA);
+		cv::arrowedLine(img, c, at(cam.pixelFromPolar(0.0, outer)), colour::kForward, 2, cv::LINE_AA, 0, 0.05);
+	}
+	if (o.laser)
+		for (const auto& p : s.laser_pairs)
+			if (p.status != PairStatus::LaserBeyondMaxRange)
+				cv::circle(img, at(cam.pixelFromPolar(p.bearing, cam.rhoFromDistance(p.laser))), 1, colour::kLaser, -1);
+	if (o.truth)
+		for (const auto& p : s.truth_pairs)
+			if (p.status != PairStatus::LaserBeyondMaxRange)
+				cv::circle(img, at(cam.pixelFromPolar(p.bearing, cam.rhoFromDistance(p.laser))), 1, colour::kTruth, -1);
+	for (const Ray& r : s.scan.rays)
+	{
+		if (o.candidates && r.search.last_rejected >= 0)
+			cv::circle(img, at(cam.pixelFromPolar(r.bearing, base + r.search.last_rejected)), 1,
+					   colour::kRejectedCandidate, -1);
+		if (o.rays) cv::circle(img, at(cam.pixelFromPolar(r.bearing, endRho(r, rf))), 2, statusColour(r.status), -1);
+	}
+	return img;
+}
+
+cv::Mat drawScanPlot(const FrameScan& s, const RangefinderParams& p, int size)
+{
+	cv::Mat img(size, size, CV_8UC3, cv::Scalar(30, 30, 30));
+	const double c = size / 2.0, scale = (size / 2.0 - 4) / (p.scanner.max_range + 0.3);
+	const auto to = [&](double bearing, double r) {
+		return cv::Point(static_cast<int>(std::lround(c - r * std::sin(bearing) * scale)),
+						 static_cast<int>(std::lround(c - r * std::cos(bearing) * scale)));
+	};
+	for (int m = 1; m <= static_cast<int>(p.scanner.max_range); ++m)
+		cv::circle(img, {int(c), int(c)}, static_cast<int>(std::lround(m * scale)), cv::Scalar(70, 70, 70), 1, cv::LINE_AA);
+	cv::circle(img, {int(c), int(c)}, static_cast<int>(std::lround(p.scanner.max_range * scale)), colour::kNoHit, 1,
+			   cv::LINE_AA);
+	cv::arrowedLine(img, {int(c), int(c)}, to(0.0, 0.5), colour::kForward, 2, cv::LINE_AA, 0, 0.3);
+	for (const auto& q : s.truth_pairs)
+		if (q.status != PairStatus::LaserBeyondMaxRange) cv::circle(img, to(q.bearing, q.laser), 1, colour::kTruth, -1);
+	for (const auto& q : s.laser_pairs)
+		if (q.status != PairStatus::LaserBeyondMaxRange) cv::circle(img, to(q.bearing, q.laser), 1, colour::kLaser, -1);
+	for (const Ray& r : s.scan.rays) cv::circle(img, to(r.bearing, r.range), 2, statusColour(r.status), -1);
+	return img;
+}
+
+cv::Mat drawFloorColours(const ColourModel& colours, const FreeSpaceClassifier& classifier, cv::Size size)
+{
+	// One representative colour per bin: the mean of a 32-level RGB grid's
+	// colours that fall in it (works for any colour space).
+	const ColourBinner& binner = classifier.binner();
+	std::map<std::uint32_t, std::array<double, 4>> sums;  // bin -> B, G, R, count
+	for (int b = 4; b < 256; b += 8)
+		for (int g = 4; g < 256; g += 8)
+			for (int r = 4; r < 256; r += 8)
+			{
+				const std::uint8_t bgr[3] = {std::uint8_t(b), std::uint8_t(g), std::uint8_t(r)};
+				auto& s = sums[binner.binOf(bgr)];
+				s[0] += b, s[1] += g, s[2] += r, s[3] += 1;
+			}
+	std::vector<std::pair<double, cv::Scalar>> free;  // floor probability, colour
+	for (const auto& [bin, s] : sums)
+	{
+		const std::uint8_t mean[3] = {std::uint8_t(s[0] / s[3]), std::uint8_t(s[1] / s[3]), std::uint8_t(s[2] / s[3])};
+		if (classifier.isFree(mean)) free.push_back({colours.floor.probability(bin), cv::Scalar(mean[0], mean[1], mean[2])});
+	}
+	std::sort(free.begin(), free.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+	cv::Mat img(size, CV_8UC3, cv::Scalar(30, 30, 30));
+	const int cell = 16, cols = std::max(1, size.width / cell);
+	for (std::size_t i = 0; i < free.size(); ++i)
+	{
+		const int x = static_cast<int>(i % cols) * cell, y = static_cast<int>(i / cols) * cell;
+		if (y + cell > size.height) break;
+		cv::rectangle(img, cv::Rect(x + 1, y + 1, cell - 2, cell - 2), free[i].second, cv::FILLED);
+	}
+	return img;
+}
+
+}  // namespace omnirange::tuner

@@ -1,0 +1,152 @@
+#include "omnirange_tuner/TunerSession.h"
+
+#include <omnirange/io/IniSectionWriter.h>
+#include <omnirange/io/ObservationImage.h>
+#include <omnirange/io/OptionsTable.h>
+#include <omnirange/io/RawlogProcessor.h>
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+
+namespace omnirange::tuner
+{
+Agreement agreementOf(const std::vector<RangePair>& pairs)
+{
+	Agreement a;
+	double sum = 0;
+	for (const auto& p : pairs)
+		if (p.status == PairStatus::Compared) sum += std::abs(p.difference()), ++a.compared;
+	a.mean_abs = a.compared ? sum / static_cast<double>(a.compared) : 0.0;
+	a.frames = 1;
+	return a;
+}
+
+TunerSession::TunerSession(SessionOptions options) : o_(std::move(options))
+{
+	if (!std::filesystem::is_regular_file(o_.ini)) throw std::runtime_error("cannot open ini file '" + o_.ini + "'");
+	try
+	{
+		requireNoRepeatedKeys(o_.ini);
+		params_.loadFromConfig(mrpt::config::CConfigFile(o_.ini), o_.section);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(o_.ini + ": " + e.what());
+	}
+
+	// The frames: every omnicam image, with the laser and true scans paired to it.
+	std::map<const mrpt::obs::CObservationImage*, std::size_t> index;
+	RawlogProcessor loop(o_.rawlog);
+	loop.on<mrpt::obs::CObservationImage>(o_.omni_label, [&](const mrpt::obs::CObservationImage::Ptr& image) {
+		index[image.get()] = frames_.size();
+		frames_.push_back({image, nullptr, nullptr});
+	});
+	using Scan = mrpt::obs::CObservation2DRangeScan;
+	using Image = mrpt::obs::CObservationImage;
+	loop.onPair<Image, Scan>(o_.omni_label, o_.laser_label, o_.max_dt,
+							 [&](const Image::Ptr& image, const Scan::Ptr& laser) {
+								 frames_[index.at(image.get())].laser = laser;
+							 });
+	loop.onPair<Image, Scan>(o_.omni_label, o_.truth_label, o_.max_dt,
+							 [&](const Image::Ptr& image, const Scan::Ptr& truth) {
+								 frames_[index.at(image.get())].truth = truth;
+							 });
+	loop.run();
+	if (frames_.empty())
+		throw std::runtime_error("no " + o_.omni_label + " image in '" + o_.rawlog + "' (" + loop.describeLabels() + ")");
+	if (!o_.histogram.empty())
+	{
+		colours_ = ColourModel::load(o_.histogram);
+		rf_ = std::make_unique<Rangefinder>(params_, colours_);
+	}
+}
+
+const Rangefinder& TunerSession::rangefinder() const
+{
+	if (!rf_) throw std::logic_error("no colour model yet: open a histogram or train one");
+	return *rf_;
+}
+
+void TunerSession::setParams(const RangefinderParams& params)
+{
+	params.validate();
+	if (params.camera.image_width != params_.camera.image_width ||
+		params.camera.image_height != params_.camera.image_height)
+		cached_ = -1;
+	auto rf = hasColours() ? std::make_unique<Rangefinder>(params, colours_) : nullptr;
+	params_ = params;
+	rf_ = std::move(rf);
+}
+
+const cv::Mat& TunerSession::image(int k)
+{
+	if (cached_ != k)
+	{
+		cached_bgr_ = decodeImage(*frames_.at(k).image, params_.camera);
+		cached_ = k;
+	}
+	return cached_bgr_;
+}
+
+FrameScan TunerSession::scan(int k)
+{
+	const Frame& f = frames_.at(k);
+	FrameScan out;
+	out.index = k;
+	out.bgr = image(k);
+	const auto t0 = std::chrono::steady_clock::now();
+	out.scan = rangefinder().process(out.bgr);
+	out.scan_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+	out.omni = rf_->toObservation(out.scan, f.image->timestamp);
+	if (f.laser) out.laser_pairs = pairScans(*f.laser, *out.omni);
+	// Against the truth nothing is excluded for being far off: it is the truth.
+	if (f.truth) out.truth_pairs = pairScans(*f.truth, *out.omni, 1e9);
+	return out;
+}
+
+Agreement TunerSession::scoreAll(const std::function<void(int, int)>& progress)
+{
+	Agreement all;
+	double sum = 0;
+	for (int k = 0; k < frames(); ++k)
+	{
+		if (progress) progress(k, frames());
+		if (!frames_[k].laser) continue;
+		const Agreement a = agreementOf(scan(k).laser_pairs);
+		sum += a.mean_abs * static_cast<double>(a.compared);
+		all.compared += a.compared;
+		++all.frames;
+	}
+	if (progress) progress(frames(), frames());
+	all.mean_abs = all.compared ? sum / static_cast<double>(all.compared) : 0.0;
+	return all;
+}
+
+RawlogTrainingResult TunerSession::train(const std::string& histogram, TrainingParams training)
+{
+	RawlogTrainingOptions o;
+	o.input = o_.rawlog;
+	o.omni_label = o_.omni_label;
+	o.laser_label = o_.laser_label;
+	o.max_dt = o_.max_dt;
+	o.training = training;
+	RawlogTrainingResult r = trainFromRawlog(params_, o);
+	r.model.save(histogram);
+	colours_ = r.model;
+	rf_ = std::make_unique<Rangefinder>(params_, colours_);
+	o_.histogram = histogram;
+	return r;
+}
+
+void TunerSession::saveIni(const std::string& ini) const
+{
+	std::vector<std::pair<std::string, std::string>> values;
+	for (const auto& f : RangefinderParams::table().fields()) values.emplace_back(f.info.key, f.print(params_));
+	writeIniSection(ini.empty() ? o_.ini : ini, o_.section, values);
+}
+
+}  // namespace omnirange::tuner
