@@ -157,13 +157,8 @@ void Experiment::learn(const RawlogTrainingOptions& o)
 	histogram_data_.save(histogram_);
 	writeFileAtomically(out_ + "/learned.ini", learnedIni(l));
 	r_.training_pairs = l.training_pairs;
-	char s[300];
-	std::snprintf(s, sizeof s,
-				  "colour space %s, threshold %g, obstacle_ratio %g, N %d, K %d (of %zu candidates, validated on %d "
-				  "held-aside pairs: `learned.ini`)",
-				  toString(l.best.space).c_str(), l.best.threshold, l.best.obstacle_ratio, l.best.N, l.best.K,
-				  l.tried.size(), l.validation_pairs);
-	r_.learned = s;
+	r_.learned = describe(l.best) + " (of " + std::to_string(l.tried.size()) + " candidates, validated on " +
+				 std::to_string(l.validation_pairs) + " held-aside pairs: `learned.ini`)";
 	// The figures of paper Fig. 1, from the first training pair.
 	RawlogTrainingOptions one = o;
 	one.max_frames = 1;

@@ -26,7 +26,7 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 		.add("train_every", "-", "train on every N-th image/scan pair", [](C& c) -> auto& { return c.train_every; })
 		.add("train_fraction", "-", "train on this first fraction of the route, score on the rest",
 			 [](C& c) -> auto& { return c.train_fraction; })
-		.add("learn", "bool", "learn colour space, threshold, obstacle_ratio, N and K against the laser",
+		.add("learn", "bool", "learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser",
 			 [](C& c) -> auto& { return c.learn; })
 		.addEnum("colour_space", "the histogram's colour space: RGB (the paper's), HSV or CHROMA",
 				 [](C& c) -> auto& { return c.colour_space; }, colourSpaceFromString)

@@ -141,6 +141,15 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	const RangefinderParams learned = loadRangefinderIni(t.learn_ini, "rangefinder", quiet);
 	EXPECT_GE(learned.threshold, 0.0025);
 	EXPECT_LE(learned.threshold, 0.1);
+	// The histogram written is the winner's: its bins are the ones the ini's
+	// comment names (13 or 26: the training's and twice as many).
+	const ColourModel model = ColourModel::load(t.output);
+	const int bins = model.floor.binsPerChannel();
+	EXPECT_TRUE(bins == 13 || bins == 26) << bins;
+	std::ifstream comment(t.learn_ini);
+	std::string head((std::istreambuf_iterator<char>(comment)), {});
+	EXPECT_NE(head.find(", " + std::to_string(bins) + " bins,"), std::string::npos) << head.substr(0, 400);
+	EXPECT_NE(head.find("512 candidates"), std::string::npos) << head.substr(0, 400);
 	ScanApp::Options s;
 	s.ini = t.learn_ini;
 	s.histogram = t.output;

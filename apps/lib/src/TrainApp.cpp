@@ -27,7 +27,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> space("", "colour-space", "RGB or HSV", false, toString(t.training.space), "SPACE", cmd);
 	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
 	TCLAP::ValueArg<double> band("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only", false, t.training.obstacle_band, "M", cmd);
-	TCLAP::ValueArg<std::string> learn("", "learn", "also learn colour space, threshold, obstacle_ratio, N and K against the laser on held-aside pairs, and write them to this ini", false, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> learn("", "learn", "also learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser on held-aside pairs, and write them to this ini", false, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> figures("", "figures", "write PREFIX_birdseye.png, PREFIX_laser.png, PREFIX_fused.png (paper Fig. 1)", false, "", "PREFIX", cmd);
 	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
 	VerbosityArgs verbosity(cmd);
@@ -72,10 +72,8 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 	const LearningResult l = learnParameters(params, o_.training, LearningOptions{}, progressAt(o_.verbosity, progress));
 	l.model.save(o_.output);
 	writeFileAtomically(o_.learn_ini, learnedIni(l, o_.section));
-	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: colour space %s, threshold %g, obstacle_ratio %g, N %d, "
-					  "K %d (mean error %.4f m) -> %s, %s",
-					  l.training_pairs, l.validation_pairs, toString(l.best.space).c_str(), l.best.threshold,
-					  l.best.obstacle_ratio, l.best.N, l.best.K, l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
+	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: %s (mean error %.4f m) -> %s, %s", l.training_pairs,
+					  l.validation_pairs, describe(l.best).c_str(), l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
 	RawlogTrainingResult r;
 	r.model = l.model;
 	r.used = l.training_pairs;

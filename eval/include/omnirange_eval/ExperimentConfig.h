@@ -24,7 +24,7 @@ struct ExperimentConfig
 	/** Train on the route's first part, this fraction of its frames, and
 	 * score on the rest (never on what was trained on). */
 	double train_fraction{0.2};
-	/** Learn colour space, Theta, obstacle_ratio, N and K against the laser
+	/** Learn colour space, bins, Theta, obstacle_ratio, N, K and the boundary model against the laser
 	 * on held-aside training pairs (ParameterLearning.h) instead of taking
 	 * [rangefinder]'s and colour_space. */
 	bool learn{false};

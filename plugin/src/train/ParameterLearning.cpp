@@ -24,9 +24,11 @@ struct Validation
 	CObservation2DRangeScan::Ptr laser;
 };
 
-/** Trains one histogram per colour space on the training pairs and keeps the held-aside ones. */
+using TrainerKey = std::pair<ColourSpace, int>;  // colour space, bins
+
+/** Trains one histogram per colour space and bin count on the training pairs and keeps the held-aside ones. */
 void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const LearningOptions& lo,
-			 std::map<ColourSpace, HistogramTrainer>& trainers, std::vector<Validation>& validation, int& trained,
+			 std::map<TrainerKey, HistogramTrainer>& trainers, std::vector<Validation>& validation, int& trained,
 			 Progress* progress)
 {
 	RawlogProcessor loop(o.input);
@@ -42,7 +44,7 @@ void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const 
 				if (static_cast<int>(validation.size()) < lo.max_validation_pairs) validation.push_back({bgr, laser});
 				return;
 			}
-			for (auto& [space, trainer] : trainers) trainer.add(bgr, *laser);
+			for (auto& [key, trainer] : trainers) trainer.add(bgr, *laser);
 			++trained;
 		});
 	loop.run(progress);
@@ -86,20 +88,26 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (lo.hold_out_every < 2) throw std::invalid_argument("hold_out_every must be >= 2");
 	const OmniCameraModel camera(start.camera);
 	const double base_range = camera.distanceFromRho(start.scanner.base_radius) + 0.05;
-	std::map<ColourSpace, HistogramTrainer> trainers;
+	std::vector<int> bins = lo.bins;
+	if (bins.empty()) bins = {o.training.bins, std::min(64, 2 * o.training.bins)};
+	std::sort(bins.begin(), bins.end());
+	bins.erase(std::unique(bins.begin(), bins.end()), bins.end());
+	std::map<TrainerKey, HistogramTrainer> trainers;
 	for (const ColourSpace space : lo.spaces)
-	{
-		TrainingParams tp = o.training;
-		tp.space = space;
-		trainers.emplace(space, HistogramTrainer(camera, start.sensor_pose, base_range, start.scanner.max_range, tp));
-	}
+		for (const int b : bins)
+		{
+			TrainingParams tp = o.training;
+			tp.space = space, tp.bins = b;
+			trainers.emplace(TrainerKey{space, b},
+							 HistogramTrainer(camera, start.sensor_pose, base_range, start.scanner.max_range, tp));
+		}
 	std::vector<Validation> validation;
 	LearningResult r;
 	collect(start, o, lo, trainers, validation, r.training_pairs, progress);
 	r.validation_pairs = static_cast<int>(validation.size());
 
 	r.best.score = 1e9;
-	for (const auto& [space, trainer] : trainers)
+	for (const auto& [key, trainer] : trainers)
 	{
 		const ColourModel model = trainer.model();
 		if (model.floor.empty()) continue;
@@ -107,28 +115,39 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 			for (const double ratio : lo.obstacle_ratios)
 				for (const int N : lo.Ns)
 					for (const int K : lo.Ks)
-					{
-						RangefinderParams p = start;
-						p.threshold = theta, p.obstacle_ratio = ratio, p.scanner.filter.N = N, p.scanner.filter.K = K;
-						const LearnedCandidate c{space, theta, ratio, N, K, score(Rangefinder(p, model), validation)};
-						r.tried.push_back(c);
-						if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
-					}
+						for (const BoundaryModel boundary : lo.boundary_models)
+						{
+							RangefinderParams p = start;
+							p.threshold = theta, p.obstacle_ratio = ratio, p.scanner.filter.N = N;
+							p.scanner.filter.K = K, p.scanner.boundary_model = boundary;
+							const LearnedCandidate c{key.first, key.second, theta, ratio, N, K, boundary,
+													 score(Rangefinder(p, model), validation)};
+							r.tried.push_back(c);
+							if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
+						}
 	}
 	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
 	return r;
 }
 
+std::string describe(const LearnedCandidate& c)
+{
+	char s[300];
+	std::snprintf(s, sizeof s, "colour space %s, %d bins, threshold %g, obstacle_ratio %g, N %d, K %d, %s boundary",
+				  toString(c.space).c_str(), c.bins, c.threshold, c.obstacle_ratio, c.N, c.K, toString(c.boundary).c_str());
+	return s;
+}
+
 std::string learnedIni(const LearningResult& r, const std::string& section)
 {
-	char head[600];
+	char head[700];
 	std::snprintf(head, sizeof head,
 				  "; Learned by omnirange-train --learn: %zu candidates scored against the laser on %d held-aside\n"
-				  "; image/laser pairs (histograms trained on %d others). The winner: colour space %s, threshold %g,\n"
-				  "; obstacle_ratio %g, N %d, K %d, mean error %.4f m. Train the histogram in that colour space\n"
+				  "; image/laser pairs (histograms trained on %d others). The winner: %s;\n"
+				  "; mean error %.4f m. Train the histogram in that colour space and with those bins\n"
 				  "; (the histogram file written with this ini is).\n[%s]\n",
-				  r.tried.size(), r.validation_pairs, r.training_pairs, toString(r.best.space).c_str(), r.best.threshold,
-				  r.best.obstacle_ratio, r.best.N, r.best.K, r.best.score, section.c_str());
+				  r.tried.size(), r.validation_pairs, r.training_pairs, describe(r.best).c_str(), r.best.score,
+				  section.c_str());
 	return head + r.params.asIni();
 }
 
