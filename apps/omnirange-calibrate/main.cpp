@@ -6,5 +6,8 @@
 int main(int argc, char** argv)
 {
 	using omnirange::app::CalibrateApp;
-	return omnirange::app::runApp("omnirange-calibrate", [&] { CalibrateApp(CalibrateApp::parse(argc, argv)).run(); });
+	return omnirange::app::runApp("omnirange-calibrate", [&] {
+		CalibrateApp app(CalibrateApp::parse(argc, argv));
+		app.options().checkerboards.empty() ? (void)app.run() : (void)app.runIntrinsics();
+	});
 }

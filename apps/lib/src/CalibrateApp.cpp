@@ -2,6 +2,7 @@
 
 #include "omnirange_apps/CommandLine.h"
 
+#include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/Progress.h>
 
 #include <cstdio>
@@ -12,11 +13,17 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 {
 	Options o;
 	auto& c = o.calibration;
-	TCLAP::CmdLine cmd("omnirange-calibrate: fit the mirror's R or alpha against a laser (paper §IV-D)", ' ', "0.1");
-	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with omnicam images and laser scans", true, "", "RAWLOG", cmd);
-	TCLAP::ValueArg<std::string> ini("c", "config", "ini with the rangefinder's parameters (a first guess of R or alpha)", true, "", "INI", cmd);
+	TCLAP::CmdLine cmd("omnirange-calibrate: fit the mirror's R or alpha against a laser (paper §IV-D); or, with "
+					   "--checkerboard, the camera's intrinsics (Mei's unified model) from checkerboard images",
+					   ' ', "0.1");
+	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with omnicam images and laser scans", false, "", "RAWLOG", cmd);
+	TCLAP::ValueArg<std::string> ini("c", "config", "ini with the rangefinder's parameters (a first guess of R or alpha)", false, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
-	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", true, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", false, "", "FILE", cmd);
+	TCLAP::MultiArg<std::string> boards("", "checkerboard", "an image of a checkerboard (repeat for each; >= 3 found needed)", false, "IMAGE", cmd);
+	TCLAP::ValueArg<std::string> board("", "board", "inner corners, COLUMNSxROWS", false, "8x6", "CxR", cmd);
+	TCLAP::ValueArg<double> square("", "square", "side of a board square [m]", false, o.board.square, "M", cmd);
+	TCLAP::ValueArg<std::string> out("o", "output", "with --checkerboard: write the intrinsics here (OpenCV YAML)", false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images", false, c.omni_label, "LABEL", cmd);
 	TCLAP::ValueArg<std::string> laser("", "laser-label", "label of the laser scans", false, c.laser_label, "LABEL", cmd);
 	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between an image and its scan [s]", false, c.max_dt, "S", cmd);
@@ -27,6 +34,11 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	c.input = in.getValue(), c.omni_label = omni.getValue(), c.laser_label = laser.getValue();
 	c.max_dt = max_dt.getValue(), c.every = every.getValue();
 	o.verbosity = verbosity.level();
+	o.checkerboards = boards.getValue(), o.intrinsics_output = out.getValue(), o.board.square = square.getValue();
+	if (std::sscanf(board.getValue().c_str(), "%dx%d", &o.board.columns, &o.board.rows) != 2)
+		throw std::invalid_argument("--board must be COLUMNSxROWS, e.g. 8x6, not '" + board.getValue() + "'");
+	if (o.checkerboards.empty() && (o.ini.empty() || o.histogram.empty() || c.input.empty()))
+		throw std::invalid_argument("against a laser, -i RAWLOG, -c INI and -H HISTOGRAM are all needed (or --checkerboard IMAGE...)");
 	return o;
 }
 
@@ -50,6 +62,22 @@ MirrorCalibration CalibrateApp::run()
 	std::printf("boundary: the laser's edge lies a median %+.2f px beyond the omnicam's "
 				"(suggested boundary_offset = %.2f with the ini's mirror%s)\n",
 				c.boundary_px, c.suggested_boundary_offset, c.clamped ? ", clamped to [-1, 1]" : "");
+	return c;
+}
+
+CheckerboardCalibration CalibrateApp::runIntrinsics()
+{
+	if (!o_.intrinsics_output.empty()) requireOutputsAreNotInputs({o_.intrinsics_output}, o_.checkerboards);
+	const CheckerboardCalibration c = calibrateFromCheckerboards(o_.checkerboards, o_.board);
+	for (const auto& i : c.images)
+		std::printf("%s: %s%s\n", i.file.c_str(), i.found ? ("board found (" + i.detector + ")").c_str() : "no board",
+					i.used ? (", reprojection " + std::to_string(i.rms).substr(0, 5) + " px").c_str() :
+							 (i.found ? ", not used by the calibration" : ""));
+	std::printf("boards found in %d of %zu images, %d used; RMS reprojection error %.3f px\n", c.found(),
+				c.images.size(), c.used(), c.rms);
+	std::printf("fx %.2f  fy %.2f  skew %.3f  cx %.2f  cy %.2f px;  xi %.4f;  k1 %.4f  k2 %.4f  p1 %.5f  p2 %.5f\n",
+				c.K(0, 0), c.K(1, 1), c.K(0, 1), c.K(0, 2), c.K(1, 2), c.xi, c.D[0], c.D[1], c.D[2], c.D[3]);
+	if (!o_.intrinsics_output.empty()) writeFileAtomically(o_.intrinsics_output, c.yaml());
 	return c;
 }
 

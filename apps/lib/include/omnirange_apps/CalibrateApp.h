@@ -1,7 +1,9 @@
 #pragma once
 // omnirange-calibrate: fit the mirror's R (paraboloid) or alpha (first-order
-// model) against a laser (paper §IV-D), and say where the boundary sits.
+// model) against a laser (paper §IV-D), and say where the boundary sits; or
+// the camera's intrinsics from checkerboard images (--checkerboard).
 
+#include <omnirange/train/CheckerboardCalibration.h>
 #include <omnirange/train/MirrorCalibration.h>
 
 #include <mrpt/system/COutputLogger.h>
@@ -15,14 +17,21 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	{
 		std::string ini, section{"rangefinder"}, histogram;
 		MirrorCalibrationOptions calibration;
+		std::vector<std::string> checkerboards;  ///< images: calibrate the intrinsics instead
+		CheckerboardOptions board;
+		std::string intrinsics_output;  ///< OpenCV YAML; empty: print only
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */
 	static Options parse(int argc, const char* const* argv);
 
 	explicit CalibrateApp(Options o);
+	const Options& options() const { return o_; }
 	/** Fits and prints the result on stdout. */
 	MirrorCalibration run();
+	/** With checkerboard images: calibrates the intrinsics, prints them and
+	 * each image's result, and writes the YAML file if asked. */
+	CheckerboardCalibration runIntrinsics();
 
    private:
 	Options o_;

@@ -1,0 +1,52 @@
+#pragma once
+// The camera's intrinsics from checkerboard images, in Mei's unified model
+// (OpenCV contrib's cv::omnidir: focal lengths, skew, principal point, xi and
+// radial/tangential distortion): what a user with a hyperbolic, parabolic or
+// fisheye-like omnicam and a printed board can measure before anything else.
+// Corners come from OpenCV's classic detector (sub-pixel refined) and, where
+// it fails (strongly curved boards near the mirror's rim), from its
+// sector-based detector.
+
+#include <opencv2/core.hpp>
+
+#include <string>
+#include <vector>
+
+namespace omnirange
+{
+struct CheckerboardOptions
+{
+	int columns{8}, rows{6};  ///< inner corners
+	double square{0.042};  ///< [m] side of a square
+	int max_iterations{300};
+};
+
+struct CheckerboardImage
+{
+	std::string file;
+	bool found{false};
+	std::string detector;  ///< "classic" or "sector-based" when found
+	bool used{false};  ///< kept by the calibration (cv::omnidir drops some it cannot initialise)
+	double rms{0};  ///< [px] this image's reprojection error, when used
+};
+
+struct CheckerboardCalibration
+{
+	std::vector<CheckerboardImage> images;
+	cv::Size image_size;
+	cv::Matx33d K;  ///< fx, skew, cx / fy, cy
+	double xi{0};
+	cv::Vec4d D;  ///< k1, k2, p1, p2
+	double rms{0};  ///< [px] over the used images
+	int found() const;
+	int used() const;
+	/** The result as OpenCV's YAML (the keys cv::omnidir users expect: camera_matrix, xi, distortion). */
+	std::string yaml() const;
+};
+
+/** Throws std::runtime_error naming the file if an image cannot be read or
+ * has another size than the first, and if fewer than 3 boards are found. */
+CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string>& files,
+												   const CheckerboardOptions& options = {});
+
+}  // namespace omnirange

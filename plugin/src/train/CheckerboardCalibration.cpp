@@ -1,0 +1,104 @@
+#include "omnirange/train/CheckerboardCalibration.h"
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/ccalib/omnidir.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace omnirange
+{
+int CheckerboardCalibration::found() const
+{
+	return static_cast<int>(std::count_if(images.begin(), images.end(), [](const auto& i) { return i.found; }));
+}
+
+int CheckerboardCalibration::used() const
+{
+	return static_cast<int>(std::count_if(images.begin(), images.end(), [](const auto& i) { return i.used; }));
+}
+
+std::string CheckerboardCalibration::yaml() const
+{
+	cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
+	fs << "image_width" << image_size.width << "image_height" << image_size.height;
+	fs << "camera_matrix" << cv::Mat(K) << "xi" << xi << "distortion" << cv::Mat(D) << "rms_px" << rms;
+	fs << "images_found" << found() << "images_used" << used();
+	return fs.releaseAndGetString();
+}
+
+CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string>& files, const CheckerboardOptions& o)
+{
+	if (o.columns < 2 || o.rows < 2 || !(o.square > 0)) throw std::invalid_argument("the board needs >= 2x2 inner corners and a square > 0 m");
+	const cv::Size pattern(o.columns, o.rows);
+	std::vector<cv::Vec3d> board;
+	for (int r = 0; r < o.rows; ++r)
+		for (int c = 0; c < o.columns; ++c) board.push_back({c * o.square, r * o.square, 0.0});
+
+	CheckerboardCalibration out;
+	std::vector<std::vector<cv::Vec3d>> object;
+	std::vector<std::vector<cv::Vec2d>> image;
+	std::vector<std::size_t> which;  // index in out.images of each board
+	for (const auto& file : files)
+	{
+		const cv::Mat gray = cv::imread(file, cv::IMREAD_GRAYSCALE);
+		if (gray.empty()) throw std::runtime_error("cannot read image '" + file + "'");
+		if (out.image_size.empty()) out.image_size = gray.size();
+		if (gray.size() != out.image_size)
+			throw std::runtime_error("image '" + file + "' has another size than the first image");
+		CheckerboardImage info;
+		info.file = file;
+		std::vector<cv::Point2f> corners;
+		if (cv::findChessboardCorners(gray, pattern, corners, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE))
+		{
+			cv::cornerSubPix(gray, corners, cv::Size(5, 5), cv::Size(-1, -1),
+							 cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 30, 0.01));
+			info.found = true, info.detector = "classic";
+		}
+		else if (cv::findChessboardCornersSB(gray, pattern, corners, cv::CALIB_CB_EXHAUSTIVE | cv::CALIB_CB_ACCURACY))
+			info.found = true, info.detector = "sector-based";
+		if (info.found)
+		{
+			object.push_back(board);
+			std::vector<cv::Vec2d> points;
+			for (const auto& p : corners) points.push_back({p.x, p.y});
+			image.push_back(points);
+			which.push_back(out.images.size());
+		}
+		out.images.push_back(info);
+	}
+	if (object.size() < 3)
+		throw std::runtime_error("the board was found in " + std::to_string(object.size()) + " of " +
+								 std::to_string(files.size()) + " images; calibration needs at least 3");
+
+	cv::Mat K, D, xi, idx;
+	std::vector<cv::Mat> rvecs, tvecs;
+	out.rms = cv::omnidir::calibrate(object, image, out.image_size, K, xi, D, rvecs, tvecs, 0,
+									 cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, o.max_iterations, 1e-8),
+									 idx);
+	out.K = cv::Matx33d(K);
+	out.xi = xi.at<double>(0);
+	out.D = cv::Vec4d(D);
+	// Per-image error of the boards the calibration kept (idx indexes `object`).
+	for (int k = 0; k < static_cast<int>(idx.total()); ++k)
+	{
+		const int b = idx.at<int>(k);
+		std::vector<cv::Vec2d> projected;
+		cv::omnidir::projectPoints(object[b], projected, rvecs[k], tvecs[k], K, out.xi, D);
+		double sum = 0;
+		for (std::size_t i = 0; i < projected.size(); ++i)
+		{
+			const cv::Vec2d d = projected[i] - image[b][i];
+			sum += d.dot(d);
+		}
+		auto& info = out.images[which[b]];
+		info.used = true;
+		info.rms = std::sqrt(sum / static_cast<double>(projected.size()));
+	}
+	return out;
+}
+
+}  // namespace omnirange
