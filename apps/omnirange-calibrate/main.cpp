@@ -8,6 +8,8 @@ int main(int argc, char** argv)
 	using omnirange::app::CalibrateApp;
 	return omnirange::app::runApp("omnirange-calibrate", [&] {
 		CalibrateApp app(CalibrateApp::parse(argc, argv));
-		app.options().checkerboards.empty() ? (void)app.run() : (void)app.runIntrinsics();
+		if (!app.options().rim_images.empty()) app.runRim();
+		if (!app.options().checkerboards.empty()) app.runIntrinsics();
+		if (app.options().rim_images.empty() && app.options().checkerboards.empty()) app.run();
 	});
 }

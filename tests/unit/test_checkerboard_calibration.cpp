@@ -5,6 +5,7 @@
 // and the principal point must agree with the reference the data's README
 // gives (measured with plain OpenCV: cx 643.7, cy 521.3, xi 1.443).
 #include <omnirange/train/CheckerboardCalibration.h>
+#include <omnirange/train/MirrorRim.h>
 
 #include <gtest/gtest.h>
 
@@ -37,6 +38,22 @@ TEST(CheckerboardCalibration, RealParaboloidImages)
 		EXPECT_LT(i.rms, 1.0) << i.file;
 	}
 	EXPECT_NE(c.yaml().find("camera_matrix"), std::string::npos);
+}
+
+TEST(MirrorRim, TheDiscsCentreIsThePrincipalPointWithin3Px)
+{
+	const std::string dir = std::string(OMNIRANGE_SOURCE_DIR) + "/../shared/data/real/mei-paraboloid";
+	if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no " << dir;
+	// Three images, no board needed: the reference principal point is the
+	// data's README's (plain OpenCV's calibration).
+	const MirrorRim rim =
+		detectMirrorRim({dir + "/img_para_001.pgm", dir + "/img_para_004.pgm", dir + "/img_para_008.pgm"});
+	EXPECT_NEAR(rim.cx, 643.7, 3.0);
+	EXPECT_NEAR(rim.cy, 521.3, 3.0);
+	EXPECT_GT(rim.radius, 300.0);  // the disc fills most of the 1024-px height
+	EXPECT_LT(rim.radius, 420.0);
+	EXPECT_LT(rim.ellipticity, 0.05);
+	EXPECT_THROW(detectMirrorRim({"/nonexistent.png"}), std::runtime_error);
 }
 
 TEST(CheckerboardCalibration, TooFewBoardsOrAnUnreadableImageIsAnError)

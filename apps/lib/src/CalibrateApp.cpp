@@ -21,6 +21,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
 	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", false, "", "FILE", cmd);
 	TCLAP::MultiArg<std::string> boards("", "checkerboard", "an image of a checkerboard (repeat for each; >= 3 found needed)", false, "IMAGE", cmd);
+	TCLAP::MultiArg<std::string> rims("", "rim", "an ordinary image: find the mirror's centre and rim radius (repeat; a few images)", false, "IMAGE", cmd);
 	TCLAP::ValueArg<std::string> board("", "board", "inner corners, COLUMNSxROWS", false, "8x6", "CxR", cmd);
 	TCLAP::ValueArg<double> square("", "square", "side of a board square [m]", false, o.board.square, "M", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "with --checkerboard: write the intrinsics here (OpenCV YAML)", false, "", "FILE", cmd);
@@ -35,10 +36,11 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	c.max_dt = max_dt.getValue(), c.every = every.getValue();
 	o.verbosity = verbosity.level();
 	o.checkerboards = boards.getValue(), o.intrinsics_output = out.getValue(), o.board.square = square.getValue();
+	o.rim_images = rims.getValue();
 	if (std::sscanf(board.getValue().c_str(), "%dx%d", &o.board.columns, &o.board.rows) != 2)
 		throw std::invalid_argument("--board must be COLUMNSxROWS, e.g. 8x6, not '" + board.getValue() + "'");
-	if (o.checkerboards.empty() && (o.ini.empty() || o.histogram.empty() || c.input.empty()))
-		throw std::invalid_argument("against a laser, -i RAWLOG, -c INI and -H HISTOGRAM are all needed (or --checkerboard IMAGE...)");
+	if (o.checkerboards.empty() && o.rim_images.empty() && (o.ini.empty() || o.histogram.empty() || c.input.empty()))
+		throw std::invalid_argument("against a laser, -i RAWLOG, -c INI and -H HISTOGRAM are all needed (or --checkerboard IMAGE... or --rim IMAGE...)");
 	return o;
 }
 
@@ -79,6 +81,14 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 				c.K(0, 0), c.K(1, 1), c.K(0, 1), c.K(0, 2), c.K(1, 2), c.xi, c.D[0], c.D[1], c.D[2], c.D[3]);
 	if (!o_.intrinsics_output.empty()) writeFileAtomically(o_.intrinsics_output, c.yaml());
 	return c;
+}
+
+MirrorRim CalibrateApp::runRim()
+{
+	const MirrorRim rim = detectMirrorRim(o_.rim_images);
+	std::printf("mirror disc: centre cx = %.1f px, cy = %.1f px; rim radius %.1f px; ellipticity %.3f (from %zu images)\n",
+				rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size());
+	return rim;
 }
 
 }  // namespace omnirange::app

@@ -1,10 +1,12 @@
 #pragma once
 // omnirange-calibrate: fit the mirror's R (paraboloid) or alpha (first-order
 // model) against a laser (paper §IV-D), and say where the boundary sits; or
-// the camera's intrinsics from checkerboard images (--checkerboard).
+// the camera's intrinsics from checkerboard images (--checkerboard); or the
+// mirror disc's centre and radius from ordinary images (--rim).
 
 #include <omnirange/train/CheckerboardCalibration.h>
 #include <omnirange/train/MirrorCalibration.h>
+#include <omnirange/train/MirrorRim.h>
 
 #include <mrpt/system/COutputLogger.h>
 
@@ -20,6 +22,7 @@ class CalibrateApp : public mrpt::system::COutputLogger
 		std::vector<std::string> checkerboards;  ///< images: calibrate the intrinsics instead
 		CheckerboardOptions board;
 		std::string intrinsics_output;  ///< OpenCV YAML; empty: print only
+		std::vector<std::string> rim_images;  ///< images: find the mirror's disc instead
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */
@@ -32,6 +35,8 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	/** With checkerboard images: calibrates the intrinsics, prints them and
 	 * each image's result, and writes the YAML file if asked. */
 	CheckerboardCalibration runIntrinsics();
+	/** With --rim images: finds and prints the mirror disc's centre and radius. */
+	MirrorRim runRim();
 
    private:
 	Options o_;
