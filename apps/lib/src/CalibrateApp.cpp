@@ -5,6 +5,7 @@
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/Progress.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace omnirange::app
@@ -64,6 +65,17 @@ MirrorCalibration CalibrateApp::run()
 	std::printf("boundary: the laser's edge lies a median %+.2f px beyond the omnicam's "
 				"(suggested boundary_offset = %.2f with the ini's mirror%s)\n",
 				c.boundary_px, c.suggested_boundary_offset, c.clamped ? ", clamped to [-1, 1]" : "");
+	const OrientationFit f = fitOrientation(rf, o_.calibration);
+	std::printf("orientation: forward_azimuth_deg = %.0f (spread %.1f deg over %d frames), mirrored = %s; "
+				"mean error %.3f m (the ini's %.0f deg, %s: %.3f m)\n",
+				f.forward_azimuth * 57.29577951308232, f.spread * 57.29577951308232, f.frames,
+				f.mirrored ? "true" : "false", f.error, params.camera.forward_azimuth * 57.29577951308232,
+				params.camera.mirrored ? "true" : "false", f.error_as_given);
+	const double turn = std::abs(std::remainder(f.forward_azimuth - params.camera.forward_azimuth, 6.283185307179586));
+	if (f.mirrored != params.camera.mirrored || turn > 1.5 / 57.29577951308232)
+		std::printf("the ini's orientation is off: set forward_azimuth_deg and mirrored as above and run again "
+					"(R, alpha and the boundary above were fitted with the ini's orientation)\n");
+	orientation_ = f;
 	return c;
 }
 

@@ -7,6 +7,7 @@
 #include <omnirange/train/CheckerboardCalibration.h>
 #include <omnirange/train/MirrorCalibration.h>
 #include <omnirange/train/MirrorRim.h>
+#include <omnirange/train/OrientationFit.h>
 
 #include <mrpt/system/COutputLogger.h>
 
@@ -37,9 +38,12 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	CheckerboardCalibration runIntrinsics();
 	/** With --rim images: finds and prints the mirror disc's centre and radius. */
 	MirrorRim runRim();
+	/** After run(): the camera's orientation fitted against the laser. */
+	const OrientationFit& orientation() const { return orientation_; }
 
    private:
 	Options o_;
+	OrientationFit orientation_;
 };
 
 }  // namespace omnirange::app
