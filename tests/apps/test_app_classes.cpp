@@ -121,6 +121,21 @@ TEST(AppClasses, CalibrateFindsTheCamerasOrientation)
 	EXPECT_LT(f.error, f.error_as_given);
 	EXPECT_LT(f.spread, 5 * M_PI / 180);
 	EXPECT_EQ(f.frames, 20);
+
+	// Saved into the ini: the orientation only (R was fitted with the wrong
+	// one); a second run with it saves R too, near the simulator's 192 px.
+	o.save_to = o.ini;
+	CalibrateApp(o).run();
+	mrpt::system::COutputLogger quiet("test");
+	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+	RangefinderParams saved = loadRangefinderIni(o.ini, "rangefinder", quiet);
+	EXPECT_NEAR(saved.camera.forward_azimuth, M_PI, 1e-9);
+	EXPECT_TRUE(saved.camera.mirrored);
+	std::ifstream first(o.ini);
+	EXPECT_EQ(std::string((std::istreambuf_iterator<char>(first)), {}).find("\nR = "), std::string::npos);
+	CalibrateApp(o).run();
+	saved = loadRangefinderIni(o.ini, "rangefinder", quiet);
+	EXPECT_NEAR(saved.camera.R, 192.0, 5.0);
 }
 
 TEST(AppClasses, CommandLinesFillTheOptions)

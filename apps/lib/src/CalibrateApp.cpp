@@ -3,6 +3,8 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/IniSectionWriter.h>
+#include <omnirange/io/OptionsTable.h>
 #include <omnirange/io/Progress.h>
 
 #include <cmath>
@@ -22,6 +24,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
 	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", false, "", "FILE", cmd);
 	TCLAP::MultiArg<std::string> boards("", "checkerboard", "an image of a checkerboard (repeat for each; >= 3 found needed)", false, "IMAGE", cmd);
+	TCLAP::ValueArg<std::string> save("", "save-to", "write what was found (orientation, then R or alpha and boundary_offset; cx, cy with --rim) into this ini's section, keeping the rest of the file", false, "", "INI", cmd);
 	TCLAP::MultiArg<std::string> rims("", "rim", "an ordinary image: find the mirror's centre and rim radius (repeat; a few images)", false, "IMAGE", cmd);
 	TCLAP::ValueArg<std::string> board("", "board", "inner corners, COLUMNSxROWS", false, "8x6", "CxR", cmd);
 	TCLAP::ValueArg<double> square("", "square", "side of a board square [m]", false, o.board.square, "M", cmd);
@@ -37,7 +40,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	c.max_dt = max_dt.getValue(), c.every = every.getValue();
 	o.verbosity = verbosity.level();
 	o.checkerboards = boards.getValue(), o.intrinsics_output = out.getValue(), o.board.square = square.getValue();
-	o.rim_images = rims.getValue();
+	o.rim_images = rims.getValue(), o.save_to = save.getValue();
 	if (std::sscanf(board.getValue().c_str(), "%dx%d", &o.board.columns, &o.board.rows) != 2)
 		throw std::invalid_argument("--board must be COLUMNSxROWS, e.g. 8x6, not '" + board.getValue() + "'");
 	if (o.checkerboards.empty() && o.rim_images.empty() && (o.ini.empty() || o.histogram.empty() || c.input.empty()))
@@ -76,6 +79,21 @@ MirrorCalibration CalibrateApp::run()
 		std::printf("the ini's orientation is off: set forward_azimuth_deg and mirrored as above and run again "
 					"(R, alpha and the boundary above were fitted with the ini's orientation)\n");
 	orientation_ = f;
+	if (!o_.save_to.empty())
+	{
+		constexpr double kDeg = 57.29577951308232;
+		std::vector<std::pair<std::string, std::string>> keys{
+			{"forward_azimuth_deg", formatDouble(std::round(f.forward_azimuth * kDeg))},
+			{"mirrored", f.mirrored ? "true" : "false"}};
+		// The mirror's fit is only worth keeping when it was made with the right orientation.
+		const bool orientation_ok = f.mirrored == params.camera.mirrored && turn <= 1.5 / kDeg;
+		if (orientation_ok && params.camera.mirror_model == MirrorModel::Paraboloid) keys.push_back({"R", formatDouble(c.R)});
+		if (orientation_ok && params.camera.mirror_model == MirrorModel::FirstOrder)
+			keys.push_back({"alpha", formatDouble(c.alpha)});
+		if (orientation_ok) keys.push_back({"boundary_offset", formatDouble(c.suggested_boundary_offset)});
+		writeIniSection(o_.save_to, o_.section, keys);
+		std::printf("wrote %zu keys into [%s] of %s\n", keys.size(), o_.section.c_str(), o_.save_to.c_str());
+	}
 	return c;
 }
 
@@ -100,6 +118,12 @@ MirrorRim CalibrateApp::runRim()
 	const MirrorRim rim = detectMirrorRim(o_.rim_images);
 	std::printf("mirror disc: centre cx = %.1f px, cy = %.1f px; rim radius %.1f px; ellipticity %.3f (from %zu images)\n",
 				rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size());
+	if (!o_.save_to.empty())
+	{
+		writeIniSection(o_.save_to, o_.section, {{"cx", formatDouble(std::round(rim.cx * 10) / 10)},
+												 {"cy", formatDouble(std::round(rim.cy * 10) / 10)}});
+		std::printf("wrote cx, cy into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
+	}
 	return rim;
 }
 

@@ -24,6 +24,7 @@ class CalibrateApp : public mrpt::system::COutputLogger
 		CheckerboardOptions board;
 		std::string intrinsics_output;  ///< OpenCV YAML; empty: print only
 		std::vector<std::string> rim_images;  ///< images: find the mirror's disc instead
+		std::string save_to;  ///< ini to write what was found into (its [section]); empty: print only
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */
