@@ -14,6 +14,7 @@
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
+#include "../common/FactorySample.h"
 #include "../common/SensoryFrameFormat.h"
 
 #include <gtest/gtest.h>
@@ -29,17 +30,11 @@ namespace fs = std::filesystem;
 
 namespace
 {
-const std::string kSource = OMNIRANGE_SOURCE_DIR;
-const std::string kSample = kSource + "/rawlogs/factory-sample.rawlog";
-const std::string kIni = kSource + "/ini/factory.ini";
+using test::kIni;
+using test::kSample;
+using test::kSource;
 
-std::string workDir(const std::string& name)
-{
-	const fs::path d = fs::temp_directory_path() / "omnirange_apps" / name;
-	fs::remove_all(d);
-	fs::create_directories(d);
-	return d.string();
-}
+std::string workDir(const std::string& name) { return test::freshDir("omnirange_apps", name); }
 
 std::string trainHistogram(const std::string& dir)
 {

@@ -10,6 +10,23 @@
 using namespace omnirange::e2e;
 namespace fs = std::filesystem;
 
+namespace
+{
+/** icp-slam (the real program) on `only` (OMNISCAN scans, in `dir`): the
+ * sample drives 8 s at 0.4 m/s straight ahead; odometry drifts, ICP must
+ * keep the path straight and about that long. */
+void expectIcpSlamKeepsTheSamplesStraightPath(const std::string& dir, const std::string& only)
+{
+	const RunResult icp = run("icp-slam " + q(kSource + "/ini/icp-slam-omniscan.ini") + " " + q(only), dir);
+	ASSERT_EQ(icp.code, 0) << icp.out;
+	const auto path = readTable(dir + "/icp_slam_omniscan/log_estimated_path.txt");
+	ASSERT_GE(path.size(), 20u);
+	const auto& last = path.back();
+	EXPECT_NEAR(std::hypot(last[1], last[2]), 0.4 * 7.6, 0.6);
+	EXPECT_LT(std::abs(last[3]), 0.1);
+}
+}  // namespace
+
 TEST(MrptPrograms, RawlogEditCountsTheOmniscans)
 {
 	const std::string dir = workDir("rawlog_edit");
@@ -39,15 +56,7 @@ TEST(MrptPrograms, IcpSlamMapsTheOmniscans)
 	const std::string scanned = scannedFactorySample(dir);
 	const RunResult keep = run("cd " + q(dir) + " && rawlog-edit --keep-label OMNISCAN,ODOMETRY -i scanned.rawlog -o only.rawlog -w");
 	ASSERT_EQ(keep.code, 0) << keep.out;
-	const RunResult icp = run("cd " + q(dir) + " && icp-slam " + q(kSource + "/ini/icp-slam-omniscan.ini") + " only.rawlog");
-	ASSERT_EQ(icp.code, 0) << icp.out;
-	const auto path = readTable(dir + "/icp_slam_omniscan/log_estimated_path.txt");
-	ASSERT_GE(path.size(), 20u);
-	// The sample drives 8 s at 0.4 m/s straight ahead; odometry drifts, ICP
-	// must keep the path straight and about that long.
-	const auto& last = path.back();
-	EXPECT_NEAR(std::hypot(last[1], last[2]), 0.4 * 7.6, 0.6);
-	EXPECT_LT(std::abs(last[3]), 0.1);
+	expectIcpSlamKeepsTheSamplesStraightPath(dir, "only.rawlog");
 	EXPECT_TRUE(fs::exists(dir + "/icp_slam_omniscan/_finalmaps_.txt_mrpt__maps__COccupancyGridMap2D_00.png"));
 }
 
@@ -67,13 +76,7 @@ TEST(MrptPrograms, IcpSlamMapsASensoryFrameRawlogScannedInItsOwnFormat)
 	EXPECT_EQ(labelCount(info.out, "OMNISCAN"), 20) << info.out;
 	const RunResult keep = run("rawlog-edit --keep-label OMNISCAN -i scanned.rawlog -o only.rawlog -w", dir);
 	ASSERT_EQ(keep.code, 0) << keep.out;
-	const RunResult icp = run("icp-slam " + q(kSource + "/ini/icp-slam-omniscan.ini") + " only.rawlog", dir);
-	ASSERT_EQ(icp.code, 0) << icp.out;
-	const auto path = readTable(dir + "/icp_slam_omniscan/log_estimated_path.txt");
-	ASSERT_GE(path.size(), 20u);
-	const auto& last = path.back();
-	EXPECT_NEAR(std::hypot(last[1], last[2]), 0.4 * 7.6, 0.6);
-	EXPECT_LT(std::abs(last[3]), 0.1);
+	expectIcpSlamKeepsTheSamplesStraightPath(dir, "only.rawlog");
 }
 
 TEST(MrptPrograms, RawlogGrabberRunsTheSensorPlugin)

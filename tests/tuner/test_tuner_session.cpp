@@ -5,6 +5,8 @@
 #include <omnirange_tuner/Overlays.h>
 #include <omnirange_tuner/TunerSession.h>
 
+#include "../common/FactorySample.h"
+
 #include <mrpt/config/CConfigFile.h>
 
 #include <gtest/gtest.h>
@@ -20,25 +22,11 @@ namespace fs = std::filesystem;
 
 namespace
 {
-const std::string kSource = OMNIRANGE_SOURCE_DIR;
-const std::string kSample = kSource + "/rawlogs/factory-sample.rawlog";
-const std::string kIni = kSource + "/ini/factory.ini";
+using test::kIni;
+using test::kSample;
 
-std::string workDir(const std::string& name)
-{
-	const fs::path d = fs::temp_directory_path() / "omnirange_tuner" / name;
-	fs::remove_all(d);
-	fs::create_directories(d);
-	return d.string();
-}
-
-std::string read(const std::string& path)
-{
-	std::ifstream in(path);
-	std::stringstream s;
-	s << in.rdbuf();
-	return s.str();
-}
+std::string workDir(const std::string& name) { return test::freshDir("omnirange_tuner", name); }
+std::string read(const std::string& path) { return test::readText(path); }
 
 /** A session on the sample with a histogram trained in it. */
 TunerSession trainedSession(const std::string& dir)

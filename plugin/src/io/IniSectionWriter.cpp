@@ -1,6 +1,7 @@
 #include "omnirange/io/IniSectionWriter.h"
 
 #include "omnirange/io/AtomicWrite.h"
+#include "omnirange/io/OptionsTable.h"
 
 #include <filesystem>
 #include <fstream>
@@ -12,28 +13,21 @@ namespace omnirange
 {
 namespace
 {
-std::string trim(const std::string& s)
-{
-	const auto a = s.find_first_not_of(" \t\r");
-	if (a == std::string::npos) return "";
-	return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
-}
-
 /** The section a "[name]" line opens, or "" if the line is no header. */
 std::string headerOf(const std::string& line)
 {
-	const std::string t = trim(line);
+	const std::string t = trimmed(line);
 	if (t.size() < 2 || t.front() != '[' || t.find(']') == std::string::npos) return "";
-	return trim(t.substr(1, t.find(']') - 1));
+	return trimmed(t.substr(1, t.find(']') - 1));
 }
 
 /** The key of a "key = value" line, or "" for comments and other lines. */
 std::string keyOf(const std::string& line)
 {
-	const std::string t = trim(line);
+	const std::string t = trimmed(line);
 	if (t.empty() || t[0] == ';' || t[0] == '#' || t[0] == '[') return "";
 	const auto eq = t.find('=');
-	return eq == std::string::npos ? "" : trim(t.substr(0, eq));
+	return eq == std::string::npos ? "" : trimmed(t.substr(0, eq));
 }
 
 /** The line with its value replaced, its indentation kept. (MRPT's reader
@@ -83,7 +77,7 @@ void writeIniSection(const std::string& path, const std::string& section,
 		if (pending.count(key)) added.push_back(key + " = " + value);
 	if (insert_at < 0)
 	{
-		if (!lines.empty() && !trim(lines.back()).empty()) lines.emplace_back();
+		if (!lines.empty() && !trimmed(lines.back()).empty()) lines.emplace_back();
 		lines.push_back("[" + section + "]");
 		insert_at = static_cast<std::ptrdiff_t>(lines.size()) - 1;
 	}

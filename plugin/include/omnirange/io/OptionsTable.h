@@ -39,6 +39,8 @@ int parseInt(const std::string& text);  ///< a whole number that fits an int
 std::uint32_t parseUint32(const std::string& text);  ///< a whole number in [0, 2^32)
 bool parseBool(const std::string& text);  ///< true/false, yes/no, 1/0
 std::string formatDouble(double v);
+/** `s` without leading and trailing blanks (spaces, tabs, CR, LF). */
+std::string trimmed(const std::string& s);
 
 struct FieldInfo
 {

@@ -1,0 +1,33 @@
+#pragma once
+// What the in-process tests share: the factory sample, its ini, a fresh
+// folder per test, a file's text.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace omnirange::test
+{
+const std::string kSource = OMNIRANGE_SOURCE_DIR;
+const std::string kSample = kSource + "/rawlogs/factory-sample.rawlog";
+const std::string kIni = kSource + "/ini/factory.ini";
+
+/** An empty folder TMP/`group`/`name`. */
+inline std::string freshDir(const std::string& group, const std::string& name)
+{
+	const auto d = std::filesystem::temp_directory_path() / group / name;
+	std::filesystem::remove_all(d);
+	std::filesystem::create_directories(d);
+	return d.string();
+}
+
+inline std::string readText(const std::string& path)
+{
+	std::ifstream in(path);
+	std::stringstream s;
+	s << in.rdbuf();
+	return s.str();
+}
+
+}  // namespace omnirange::test
