@@ -7,7 +7,6 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include <wx/busyinfo.h>
 #include <wx/button.h>
 #include <wx/progdlg.h>
 #include <wx/sizer.h>
@@ -310,8 +309,11 @@ void TunerFrame::train()
 	const std::string out = std::filesystem::path(save_to_).replace_extension(".hist").string();
 	try
 	{
-		wxBusyInfo busy("training the floor's colours on this rawlog...", this);
-		const auto r = s_.train(out);
+		wxProgressDialog dialog("omnirange-tuner", "training the floor's colours on this rawlog", 100, this,
+								wxPD_APP_MODAL | wxPD_AUTO_HIDE);
+		const auto r = s_.train(out, {}, [&](std::size_t objects) {
+			dialog.Pulse(wxString::Format("training the floor's colours: %zu objects read", objects));
+		});
 		status(wxString::Format("trained on %d pairs, %zu floor pixels -> %s", r.used, r.pixels, out));
 	}
 	catch (const std::exception& e)

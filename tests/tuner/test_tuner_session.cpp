@@ -36,7 +36,9 @@ TunerSession trainedSession(const std::string& dir)
 	o.ini = kIni;
 	TunerSession s(o);
 	EXPECT_FALSE(s.hasColours());
-	const auto r = s.train(dir + "/f.hist");
+	std::size_t last_count = 0;
+	const auto r = s.train(dir + "/f.hist", {}, [&](std::size_t objects) { last_count = objects; });
+	EXPECT_GT(last_count, 0u);  // the window's progress bar heard of it
 	EXPECT_EQ(r.used, 20);
 	EXPECT_TRUE(s.hasColours());
 	EXPECT_TRUE(fs::exists(dir + "/f.hist"));

@@ -3,6 +3,7 @@
 #include <omnirange/io/IniSectionWriter.h>
 #include <omnirange/io/ObservationImage.h>
 #include <omnirange/io/OptionsTable.h>
+#include <omnirange/io/Progress.h>
 #include <omnirange/io/RawlogProcessor.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -126,7 +127,8 @@ Agreement TunerSession::scoreAll(const std::function<void(int, int)>& progress)
 	return all;
 }
 
-RawlogTrainingResult TunerSession::train(const std::string& histogram, TrainingParams training)
+RawlogTrainingResult TunerSession::train(const std::string& histogram, TrainingParams training,
+										 const std::function<void(std::size_t)>& progress)
 {
 	RawlogTrainingOptions o;
 	o.input = o_.rawlog;
@@ -134,7 +136,10 @@ RawlogTrainingResult TunerSession::train(const std::string& histogram, TrainingP
 	o.laser_label = o_.laser_label;
 	o.max_dt = o_.max_dt;
 	o.training = training;
-	RawlogTrainingResult r = trainFromRawlog(params_, o);
+	Progress shown("objects read (training)", [&](std::size_t done, std::size_t) {
+		if (progress) progress(done);
+	});
+	RawlogTrainingResult r = trainFromRawlog(params_, o, progress ? &shown : nullptr);
 	r.model.save(histogram);
 	colours_ = r.model;
 	rf_ = std::make_unique<Rangefinder>(params_, colours_);

@@ -11,16 +11,24 @@ Progress::Progress(std::string what)
 {
 }
 
+Progress::Progress(std::string what, Callback show) : Progress(std::move(what))
+{
+	show_ = std::move(show);
+	tty_ = true;  // the callback's pace: at most ten times a second
+}
+
 Progress::~Progress() { finish(); }
 
 void Progress::update(std::size_t done, std::size_t total)
 {
+	latest_done_ = done, latest_total_ = total;
 	const auto now = std::chrono::steady_clock::now();
 	const double since = std::chrono::duration<double>(now - last_).count();
 	const bool due = tty_ ? since >= 0.1 || done == total
 						  : (total > 0 ? done * 10 / total > last_printed_ * 10 / total : since >= 30.0);
 	if (!due || done == 0) return;
 	last_ = now, last_printed_ = done;
+	if (show_) return show_(done, total);
 	const char* start = tty_ ? "\r" : "";
 	const char* end = tty_ ? "\033[K" : "\n";  // on a terminal: clear the rest of the line
 	if (total > 0)
@@ -33,6 +41,11 @@ void Progress::update(std::size_t done, std::size_t total)
 
 void Progress::finish()
 {
+	if (show_ && latest_done_ > last_printed_)
+	{
+		last_printed_ = latest_done_;
+		show_(latest_done_, latest_total_);
+	}
 	if (open_line_) std::fprintf(stderr, "\n");
 	open_line_ = false;
 }

@@ -87,7 +87,8 @@ class TunerSession
 	Agreement scoreAll(const std::function<void(int, int)>& progress = {});
 	/** Trains the colour model on the open rawlog (its laser-labelled pairs)
 	 * with the current camera, saves it to `histogram` and uses it. */
-	RawlogTrainingResult train(const std::string& histogram, TrainingParams training = {});
+	RawlogTrainingResult train(const std::string& histogram, TrainingParams training = {},
+							   const std::function<void(std::size_t objects_read)>& progress = {});
 	/** Writes every [section] key with its current value into `ini` (the
 	 * session's own by default), keeping the file's comments and other sections. */
 	void saveIni(const std::string& ini = "") const;
