@@ -142,10 +142,11 @@ TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOf
 	{
 		if (r.status != RayStatus::Hit) continue;
 		const Pixel p = rf.camera().pixelFromPolar(r.bearing, r.hit_rho);
-		const auto& px = with_rays.at<cv::Vec3b>(static_cast<int>(std::lround(p.v)), static_cast<int>(std::lround(p.u)));
-		const bool hit_colour = px[0] == 0 && px[1] == 255 && px[2] == 0;
-		const bool other_status = px[1] == 255 || px[2] == 255;  // a neighbour's dot drawn over it
-		EXPECT_TRUE(hit_colour || other_status) << r.bearing;
+		const cv::Vec3b px = with_rays.at<cv::Vec3b>(static_cast<int>(std::lround(p.v)), static_cast<int>(std::lround(p.u)));
+		const cv::Scalar c(px[0], px[1], px[2]);
+		// The hit colour, or a neighbouring ray's status colour drawn over it.
+		EXPECT_TRUE(c == colour::kHit || c == colour::kNoHit || c == colour::kTooClose || c == colour::kOutlier)
+			<< r.bearing << ": " << c;
 		++checked;
 	}
 	EXPECT_GT(checked, 50);

@@ -68,29 +68,31 @@ MirrorCalibration CalibrateApp::run()
 	std::printf("boundary: the laser's edge lies a median %+.2f px beyond the omnicam's "
 				"(suggested boundary_offset = %.2f with the ini's mirror%s)\n",
 				c.boundary_px, c.suggested_boundary_offset, c.clamped ? ", clamped to [-1, 1]" : "");
+	constexpr double kDeg = 57.29577951308232;
 	const OrientationFit f = fitOrientation(rf, o_.calibration);
+	orientation_ = f;
 	std::printf("orientation: forward_azimuth_deg = %.0f (spread %.1f deg over %d frames), mirrored = %s; "
 				"mean error %.3f m (the ini's %.0f deg, %s: %.3f m)\n",
-				f.forward_azimuth * 57.29577951308232, f.spread * 57.29577951308232, f.frames,
-				f.mirrored ? "true" : "false", f.error, params.camera.forward_azimuth * 57.29577951308232,
-				params.camera.mirrored ? "true" : "false", f.error_as_given);
-	const double turn = std::abs(std::remainder(f.forward_azimuth - params.camera.forward_azimuth, 6.283185307179586));
-	if (f.mirrored != params.camera.mirrored || turn > 1.5 / 57.29577951308232)
+				f.forward_azimuth * kDeg, f.spread * kDeg, f.frames, f.mirrored ? "true" : "false", f.error,
+				params.camera.forward_azimuth * kDeg, params.camera.mirrored ? "true" : "false", f.error_as_given);
+	// R, alpha and the boundary were fitted with the ini's orientation: worth
+	// anything only when that orientation was right.
+	const double turn = std::abs(std::remainder(f.forward_azimuth - params.camera.forward_azimuth, 2 * M_PI));
+	const bool orientation_ok = f.mirrored == params.camera.mirrored && turn <= 1.5 / kDeg;
+	if (!orientation_ok)
 		std::printf("the ini's orientation is off: set forward_azimuth_deg and mirrored as above and run again "
 					"(R, alpha and the boundary above were fitted with the ini's orientation)\n");
-	orientation_ = f;
 	if (!o_.save_to.empty())
 	{
-		constexpr double kDeg = 57.29577951308232;
 		std::vector<std::pair<std::string, std::string>> keys{
 			{"forward_azimuth_deg", formatDouble(std::round(f.forward_azimuth * kDeg))},
 			{"mirrored", f.mirrored ? "true" : "false"}};
-		// The mirror's fit is only worth keeping when it was made with the right orientation.
-		const bool orientation_ok = f.mirrored == params.camera.mirrored && turn <= 1.5 / kDeg;
-		if (orientation_ok && params.camera.mirror_model == MirrorModel::Paraboloid) keys.push_back({"R", formatDouble(c.R)});
-		if (orientation_ok && params.camera.mirror_model == MirrorModel::FirstOrder)
-			keys.push_back({"alpha", formatDouble(c.alpha)});
-		if (orientation_ok) keys.push_back({"boundary_offset", formatDouble(c.suggested_boundary_offset)});
+		if (orientation_ok)
+		{
+			if (params.camera.mirror_model == MirrorModel::Paraboloid) keys.push_back({"R", formatDouble(c.R)});
+			else keys.push_back({"alpha", formatDouble(c.alpha)});
+			keys.push_back({"boundary_offset", formatDouble(c.suggested_boundary_offset)});
+		}
 		writeIniSection(o_.save_to, o_.section, keys);
 		std::printf("wrote %zu keys into [%s] of %s\n", keys.size(), o_.section.c_str(), o_.save_to.c_str());
 	}

@@ -22,21 +22,31 @@ FloorRing::FloorRing(const OmniCameraModel& camera, double inner, double width)
 	if (pixels_.empty()) throw std::invalid_argument("the floor ring around the base lies outside the image");
 }
 
-std::array<double, 3> FloorRing::medianColour(const cv::Mat& bgr) const
+std::vector<cv::Vec3b> FloorRing::colours(const cv::Mat& bgr) const
 {
-	if (bgr.type() != CV_8UC3 || bgr.cols != width_ || bgr.rows != height_ || !bgr.isContinuous())
-		throw std::invalid_argument("FloorRing: the image must be a continuous 8-bit BGR image of the camera's size");
-	const std::uint8_t* data = bgr.ptr<std::uint8_t>();
+	if (bgr.type() != CV_8UC3 || bgr.cols != width_ || bgr.rows != height_)
+		throw std::invalid_argument("FloorRing: the image must be an 8-bit BGR image of the camera's size");
+	std::vector<cv::Vec3b> out;
+	out.reserve(pixels_.size());
+	for (const std::int32_t p : pixels_) out.push_back(bgr.at<cv::Vec3b>(p / width_, p % width_));
+	return out;
+}
+
+std::array<double, 3> FloorRing::median(const std::vector<cv::Vec3b>& colours)
+{
 	std::array<double, 3> out{};
-	std::vector<std::uint8_t> v(pixels_.size());
+	if (colours.empty()) return out;
+	std::vector<std::uint8_t> v(colours.size());
 	for (int c = 0; c < 3; ++c)
 	{
-		for (std::size_t i = 0; i < pixels_.size(); ++i) v[i] = data[3 * static_cast<std::size_t>(pixels_[i]) + c];
+		for (std::size_t i = 0; i < colours.size(); ++i) v[i] = colours[i][c];
 		std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
 		out[c] = v[v.size() / 2];
 	}
 	return out;
 }
+
+std::array<double, 3> FloorRing::medianColour(const cv::Mat& bgr) const { return median(colours(bgr)); }
 
 std::array<double, 3> compensatingGains(const std::array<double, 3>& reference, const std::array<double, 3>& current)
 {

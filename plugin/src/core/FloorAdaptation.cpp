@@ -14,7 +14,7 @@ namespace
 {
 /** A ring pixel is learned when each channel is within this of the ring's
  * median: a fifth of the median plus a few levels for dark floors. */
-bool nearMedian(const std::uint8_t* bgr, const std::array<double, 3>& median)
+bool nearMedian(const cv::Vec3b& bgr, const std::array<double, 3>& median)
 {
 	for (int c = 0; c < 3; ++c)
 		if (std::abs(bgr[c] - median[c]) > 0.2 * median[c] + 6.0) return false;
@@ -24,7 +24,6 @@ bool nearMedian(const std::uint8_t* bgr, const std::array<double, 3>& median)
 
 FloorAdaptation::FloorAdaptation(const Rangefinder& rangefinder, double memory)
 	: rf_(rangefinder),
-	  ring_(rangefinder.camera(), rangefinder.camera().distanceFromRho(rangefinder.params().scanner.base_radius) + 0.05),
 	  keep_(std::exp(-1.0 / memory)),
 	  counts_(rangefinder.classifier().binner().binCount(), 0.0)
 {
@@ -33,17 +32,15 @@ FloorAdaptation::FloorAdaptation(const Rangefinder& rangefinder, double memory)
 
 void FloorAdaptation::learn(const cv::Mat& bgr)
 {
-	const cv::Mat img = bgr.isContinuous() ? bgr : bgr.clone();
-	const auto median = ring_.medianColour(img);
-	const std::uint8_t* data = img.ptr<std::uint8_t>();
+	const std::vector<cv::Vec3b> ring = rf_.floorRing().colours(bgr);
+	const auto median = FloorRing::median(ring);
 	const ColourBinner& binner = rf_.classifier().binner();
 	for (double& c : counts_) c *= keep_;
 	total_ *= keep_;
-	for (const std::int32_t p : ring_.pixels())
+	for (const cv::Vec3b& px : ring)
 	{
-		const std::uint8_t* px = data + 3 * static_cast<std::size_t>(p);
 		if (!nearMedian(px, median)) continue;
-		counts_[binner.binOf(px)] += 1.0;
+		counts_[binner.binOf(&px[0])] += 1.0;
 		total_ += 1.0;
 	}
 	++images_;

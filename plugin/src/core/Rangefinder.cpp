@@ -102,9 +102,8 @@ RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapte
 	//      that pixel to metres (eq. (6)).
 	if (compensate_)
 	{
-		const cv::Mat img = bgr.isContinuous() ? bgr : bgr.clone();
-		const CompensatedClassifier seen(classifier, compensatingGains(reference_, ring_.medianColour(img)));
-		out.rays = scanner_.scan(img, seen);
+		const CompensatedClassifier seen(classifier, compensatingGains(reference_, ring_.medianColour(bgr)));
+		out.rays = scanner_.scan(bgr, seen);
 	}
 	else
 		out.rays = scanner_.scan(bgr, classifier);

@@ -13,23 +13,6 @@ namespace omnirange
 {
 namespace
 {
-/** The section a "[name]" line opens, or "" if the line is no header. */
-std::string headerOf(const std::string& line)
-{
-	const std::string t = trimmed(line);
-	if (t.size() < 2 || t.front() != '[' || t.find(']') == std::string::npos) return "";
-	return trimmed(t.substr(1, t.find(']') - 1));
-}
-
-/** The key of a "key = value" line, or "" for comments and other lines. */
-std::string keyOf(const std::string& line)
-{
-	const std::string t = trimmed(line);
-	if (t.empty() || t[0] == ';' || t[0] == '#' || t[0] == '[') return "";
-	const auto eq = t.find('=');
-	return eq == std::string::npos ? "" : trimmed(t.substr(0, eq));
-}
-
 /** The line with its value replaced, its indentation kept. (MRPT's reader
  * has no comments after a value: `;` and `#` start comment lines only.) */
 std::string withValue(const std::string& line, const std::string& key, const std::string& value)
@@ -54,21 +37,20 @@ void writeIniSection(const std::string& path, const std::string& section,
 	std::ptrdiff_t insert_at = -1;  // after the section's last key (or its header)
 	for (std::size_t i = 0; i < lines.size(); ++i)
 	{
-		if (const std::string h = headerOf(lines[i]); !h.empty())
+		const IniLine line = parseIniLine(lines[i]);
+		if (line.kind == IniLine::Kind::Section)
 		{
-			current = h;
+			current = line.name;
 			if (current == section && ++headers > 1)
 				throw std::runtime_error(path + ":" + std::to_string(i + 1) + ": section [" + section + "] appears twice");
 			if (current == section) insert_at = static_cast<std::ptrdiff_t>(i);
 			continue;
 		}
-		if (current != section) continue;
-		const std::string key = keyOf(lines[i]);
-		if (key.empty()) continue;
+		if (current != section || line.kind != IniLine::Kind::Key) continue;
 		insert_at = static_cast<std::ptrdiff_t>(i);
-		if (const auto it = pending.find(key); it != pending.end())
+		if (const auto it = pending.find(line.name); it != pending.end())
 		{
-			lines[i] = withValue(lines[i], key, it->second);
+			lines[i] = withValue(lines[i], line.name, it->second);
 			pending.erase(it);
 		}
 	}

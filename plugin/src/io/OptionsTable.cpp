@@ -71,6 +71,17 @@ std::string formatDouble(double v)
 	return o.str();
 }
 
+IniLine parseIniLine(const std::string& line)
+{
+	const std::string t = trimmed(line);
+	if (t.empty() || t[0] == ';' || t[0] == '#') return {};
+	if (t[0] == '[')
+		return {IniLine::Kind::Section, trimmed(t.substr(1, t.find(']') == std::string::npos ? std::string::npos : t.find(']') - 1))};
+	const auto eq = t.find('=');
+	if (eq == std::string::npos) return {};
+	return {IniLine::Kind::Key, trimmed(t.substr(0, eq))};
+}
+
 namespace
 {
 /** Calls `visit(section, key, line)` for every key line of the ini file, and
@@ -85,16 +96,9 @@ void forEachIniLine(const std::string& path,
 	for (std::string line; std::getline(f, line);)
 	{
 		++n;
-		const std::string t = trimmed(line);
-		if (t.empty() || t[0] == ';' || t[0] == '#') continue;
-		if (t[0] == '[')
-		{
-			section = t.substr(1, t.find(']') == std::string::npos ? std::string::npos : t.find(']') - 1);
-			visit(section, "", n);
-			continue;
-		}
-		const auto eq = t.find('=');
-		if (eq != std::string::npos) visit(section, trimmed(t.substr(0, eq)), n);
+		const IniLine l = parseIniLine(line);
+		if (l.kind == IniLine::Kind::Section) section = l.name, visit(section, "", n);
+		else if (l.kind == IniLine::Kind::Key) visit(section, l.name, n);
 	}
 }
 }  // namespace

@@ -69,6 +69,23 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 	});
 }
 
+/** The message of a stored exception. */
+std::string messageOf(const std::exception_ptr& error)
+{
+	try
+	{
+		std::rethrow_exception(error);
+	}
+	catch (const std::exception& e)
+	{
+		return e.what();
+	}
+	catch (...)
+	{
+		return "an error without a message";
+	}
+}
+
 /** Writes the batch's objects with each image's scan: inside the image's
  * sensory frame, or right after the image in the observations-only format. */
 void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanSummary& sum)
@@ -82,15 +99,8 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 			if (b.errors[k])
 			{
 				if (!skip_bad) std::rethrow_exception(b.errors[k]);
-				try
-				{
-					std::rethrow_exception(b.errors[k]);
-				}
-				catch (const std::exception& e)
-				{
-					++sum.skipped;
-					sum.skipped_reasons.emplace_back(e.what());
-				}
+				++sum.skipped;
+				sum.skipped_reasons.push_back(messageOf(b.errors[k]));
 				continue;
 			}
 			++sum.images;

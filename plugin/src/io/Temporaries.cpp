@@ -42,7 +42,6 @@ std::string& activity()
 	return *a;
 }
 
-
 /** Other threads may still be adding files (a folder is not empty when its
  * last entry goes): try again a few times. */
 void removeWhileOthersWrite(const std::string& p)
@@ -51,14 +50,20 @@ void removeWhileOthersWrite(const std::string& p)
 	for (int attempt = 0; attempt < 20 && std::filesystem::exists(p, ec); ++attempt) std::filesystem::remove_all(p, ec);
 }
 
+/** With the lock held: removes every remembered path. */
+void removeAllHeld()
+{
+	for (const auto& p : paths()) removeWhileOthersWrite(p);
+	paths().clear();
+}
+
 void atExit()
 {
 	// Another thread may hold the lock while exit() runs: do not wait for it long.
 	std::unique_lock<std::mutex> g(lock(), std::defer_lock);
 	for (int i = 0; i < 100 && !g.try_lock(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
 	if (!g.owns_lock() || paths().empty()) return;  // a normal exit: everything was committed or removed
-	for (const auto& p : paths()) removeWhileOthersWrite(p);
-	paths().clear();
+	removeAllHeld();
 	std::fprintf(stderr, "%s: error: ended by a library (its message is above) while %s; its unfinished outputs were removed\n",
 				 program().c_str(), activity().empty() ? "running" : activity().c_str());
 }
@@ -94,8 +99,7 @@ void setActivity(const std::string& what)
 void removeAll()
 {
 	const std::lock_guard<std::mutex> g(lock());
-	for (const auto& p : paths()) removeWhileOthersWrite(p);
-	paths().clear();
+	removeAllHeld();
 }
 
 void removeOnInterrupt()

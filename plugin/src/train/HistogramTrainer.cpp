@@ -89,7 +89,7 @@ TrainingFrame HistogramTrainer::add(const cv::Mat& omni, const mrpt::obs::CObser
 	cv::bitwise_and(obstacle, base_mask_, obstacle);
 	obstacles_.addImage(f.birds_eye, obstacle);
 	f.obstacle_pixels = static_cast<std::size_t>(cv::countNonZero(obstacle));
-	const auto ring = ring_.medianColour(omni.isContinuous() ? omni : omni.clone());
+	const auto ring = ring_.medianColour(omni);
 	for (int c = 0; c < 3; ++c) ring_sum_[c] += ring[c];
 	++frames_;
 	return f;

@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <opencv2/core/matx.hpp>
+
 namespace cv
 {
 class Mat;
@@ -29,10 +31,12 @@ class FloorRing
 	 * training starts) outwards, `width` [px] wide, one pixel per degree. */
 	FloorRing(const OmniCameraModel& camera, double inner, double width = 10.0);
 
-	/** Median B, G, R of the ring's pixels in an 8-bit BGR image of the camera's size. */
+	/** The ring's pixels' B, G, R in an 8-bit BGR image of the camera's size. */
+	std::vector<cv::Vec3b> colours(const cv::Mat& bgr) const;
+	/** Per channel, the median of `colours`. */
+	static std::array<double, 3> median(const std::vector<cv::Vec3b>& colours);
+	/** median(colours(bgr)). */
 	std::array<double, 3> medianColour(const cv::Mat& bgr) const;
-	/** The ring's pixels, as row * image width + column. */
-	const std::vector<std::int32_t>& pixels() const { return pixels_; }
 
    private:
 	std::vector<std::int32_t> pixels_;  // row * width + col

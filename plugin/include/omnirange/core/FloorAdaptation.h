@@ -12,7 +12,6 @@
 // learned as floor; one that fills most of it would be (docs/method.md
 // measures what that costs). Images must come in the order they were taken.
 
-#include <omnirange/core/ExposureCompensation.h>
 #include <omnirange/core/FreeSpaceClassifier.h>
 
 #include <cstddef>
@@ -43,7 +42,6 @@ class FloorAdaptation
 
    private:
 	const Rangefinder& rf_;
-	FloorRing ring_;
 	double keep_;  // per image, the weight old counts keep
 	std::vector<double> counts_;  // per bin, decayed
 	double total_{0};

@@ -84,6 +84,8 @@ class Rangefinder
 	const OmniCameraModel& camera() const { return camera_; }
 	const FreeSpaceClassifier& classifier() const { return classifier_; }
 	const PolarScanner& scanner() const { return scanner_; }
+	/** The floor just beyond the base (ExposureCompensation.h, FloorAdaptation.h). */
+	const FloorRing& floorRing() const { return ring_; }
 
 	/** One decoded BGR image of the camera's size -> one scan. `adapted`:
 	 * classify with it instead of the trained classifier (FloorAdaptation). */

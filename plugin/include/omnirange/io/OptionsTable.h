@@ -42,6 +42,20 @@ std::string formatDouble(double v);
 /** `s` without leading and trailing blanks (spaces, tabs, CR, LF). */
 std::string trimmed(const std::string& s);
 
+/** What one line of an ini file is: a section header (`name` the section),
+ * a "key = value" line (`name` the key), or neither (a comment, a blank). */
+struct IniLine
+{
+	enum class Kind
+	{
+		Other,
+		Section,
+		Key
+	} kind{Kind::Other};
+	std::string name;
+};
+IniLine parseIniLine(const std::string& line);
+
 struct FieldInfo
 {
 	std::string key, unit, doc;
