@@ -77,17 +77,26 @@ TEST(AppClasses, TrainScanAndAccuracyOfTheFactorySample)
 	for (const std::string f : {"_pairs.csv", "_histogram.png", "_table.md"}) EXPECT_TRUE(fs::exists(a.output + f)) << f;
 }
 
-TEST(AppClasses, CalibrateRecoversTheMirrorRadius)
+namespace
 {
-	const std::string dir = workDir("calibrate");
+/** Calibration against the sample's laser, every pair, from an ini holding `keys`. */
+CalibrateApp::Options calibrationOf(const std::string& dir, const std::string& keys)
+{
 	CalibrateApp::Options o;
 	o.histogram = trainHistogram(dir);
-	// Start from a wrong R: the fit must come back near the simulator's 192 px.
-	o.ini = dir + "/wrong.ini";
-	std::ofstream(o.ini) << "[rangefinder]\nR = 205\nthreshold = 0.075\n";
+	o.ini = dir + "/start.ini";
+	std::ofstream(o.ini) << "[rangefinder]\n" << keys << "threshold = 0.075\n";
 	o.calibration.input = kSample;
 	o.calibration.every = 1;
 	o.verbosity = mrpt::system::LVL_ERROR;
+	return o;
+}
+}  // namespace
+
+TEST(AppClasses, CalibrateRecoversTheMirrorRadius)
+{
+	// Start from a wrong R: the fit must come back near the simulator's 192 px.
+	const CalibrateApp::Options o = calibrationOf(workDir("calibrate"), "R = 205\n");
 	const MirrorCalibration c = CalibrateApp(o).run();
 	EXPECT_NEAR(c.R, 192.0, 5.0);
 	EXPECT_LT(c.rms_R, c.rms_given);  // the fit explains the laser better than R = 205
@@ -100,14 +109,7 @@ TEST(AppClasses, CalibrateFindsTheCamerasOrientation)
 {
 	// The ini says 150 degrees, not mirrored; the simulator's camera is at
 	// 180 degrees, mirrored (docs/worlds.md).
-	const std::string dir = workDir("orientation");
-	CalibrateApp::Options o;
-	o.histogram = trainHistogram(dir);
-	o.ini = dir + "/turned.ini";
-	std::ofstream(o.ini) << "[rangefinder]\nforward_azimuth_deg = 150\nmirrored = false\nthreshold = 0.075\n";
-	o.calibration.input = kSample;
-	o.calibration.every = 1;
-	o.verbosity = mrpt::system::LVL_ERROR;
+	CalibrateApp::Options o = calibrationOf(workDir("orientation"), "forward_azimuth_deg = 150\nmirrored = false\n");
 	CalibrateApp app(o);
 	app.run();
 	const OrientationFit& f = app.orientation();
