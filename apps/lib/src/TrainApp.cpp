@@ -28,6 +28,9 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
 	TCLAP::ValueArg<double> band("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only", false, t.training.obstacle_band, "M", cmd);
 	TCLAP::ValueArg<std::string> learn("", "learn", "also learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser on held-aside pairs, and write them to this ini", false, "", "INI", cmd);
+	TCLAP::ValueArg<double> light("", "light-change", "also count every floor pixel as seen in light this much dimmer and brighter (gains 1-A, 1+A); 0: as seen", false, t.training.light_change, "A", cmd);
+	TCLAP::ValueArg<std::string> validate_on("", "learn-validate-on", "with --learn: hold aside every fourth selected pair ('interleaved') or the 'later' quarter of them", false, "interleaved", "SPLIT", cmd);
+	TCLAP::ValueArg<double> learn_light("", "learn-light-change", "with --learn: show the held-aside images this much dimmer and brighter, and try histograms trained with that light change; 0: neither", false, o.learning.validation_light_change, "V", cmd);
 	TCLAP::ValueArg<std::string> figures("", "figures", "write PREFIX_birdseye.png, PREFIX_laser.png, PREFIX_fused.png (paper Fig. 1)", false, "", "PREFIX", cmd);
 	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
 	VerbosityArgs verbosity(cmd);
@@ -38,6 +41,11 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	t.max_frames = max_frames.getValue(), t.until = until.getValue();
 	t.training.bins = bins.getValue(), t.training.space = colourSpaceFromString(space.getValue());
 	t.training.laser_margin = margin.getValue(), t.training.obstacle_band = band.getValue();
+	t.training.light_change = light.getValue();
+	o.learning.split = validationSplitFromString(validate_on.getValue());
+	o.learning.validation_light_change = learn_light.getValue();
+	o.learning.light_changes = {0.0};
+	if (learn_light.getValue() > 0) o.learning.light_changes.push_back(learn_light.getValue());
 	t.figures_prefix = figures.getValue(), t.figures_frame = figures_frame.getValue();
 	o.verbosity = verbosity.level();
 	return o;
@@ -69,14 +77,14 @@ RawlogTrainingResult TrainApp::run()
 RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 {
 	Progress progress("objects read (learning)");
-	const LearningResult l = learnParameters(params, o_.training, LearningOptions{}, progressAt(o_.verbosity, progress));
+	const LearningResult l = learnParameters(params, o_.training, o_.learning, progressAt(o_.verbosity, progress));
 	l.model.save(o_.output);
 	writeFileAtomically(o_.learn_ini, learnedIni(l, o_.section));
 	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: %s (mean error %.4f m) -> %s, %s", l.training_pairs,
 					  l.validation_pairs, describe(l.best).c_str(), l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
 	RawlogTrainingResult r;
 	r.model = l.model;
-	r.used = l.training_pairs;
+	r.used = l.refit_pairs > 0 ? l.refit_pairs : l.training_pairs;
 	return r;
 }
 

@@ -3,10 +3,28 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
+#include <vector>
 #include <stdexcept>
 
 namespace omnirange
 {
+namespace
+{
+/** The image as seen, and (when a > 0) as seen with gains 1 - a and 1 + a. */
+std::vector<cv::Mat> asInOtherLight(const cv::Mat& bgr, double a)
+{
+	std::vector<cv::Mat> seen{bgr};
+	if (a <= 0) return seen;
+	for (const double gain : {1.0 - a, 1.0 + a})
+	{
+		cv::Mat m;
+		bgr.convertTo(m, -1, gain);  // saturates at 255, as a sensor does
+		seen.push_back(m);
+	}
+	return seen;
+}
+}  // namespace
+
 HistogramTrainer::HistogramTrainer(const OmniCameraModel& camera, const mrpt::poses::CPose3D& camera_pose,
 								   double base_range, double view_range, const TrainingParams& p)
 	: camera_pose_(camera_pose),
@@ -20,6 +38,8 @@ HistogramTrainer::HistogramTrainer(const OmniCameraModel& camera, const mrpt::po
 	if (!(view_range > 0) || !(p.resolution > 0) || !(p.laser_margin >= 0) || !(base_range >= 0) ||
 		!(p.obstacle_band >= 0))
 		throw std::invalid_argument("training: view range and resolution must be > 0, margins >= 0");
+	if (!(p.light_change >= 0 && p.light_change < 1))
+		throw std::invalid_argument("training: light_change must be within [0, 1)");
 	// Pixels between the base and view_range: a ring around the centre.
 	const int n = view_.size();
 	base_mask_ = cv::Mat::zeros(n, n, CV_8UC1);
@@ -80,14 +100,15 @@ TrainingFrame HistogramTrainer::add(const cv::Mat& omni, const mrpt::obs::CObser
 	cv::bitwise_and(f.laser_free, base_mask_, use);
 	f.fused = cv::Mat::zeros(f.birds_eye.size(), CV_8UC3);  // (c)
 	f.birds_eye.copyTo(f.fused, use);
-	hist_.addImage(f.birds_eye, use);
+	const std::vector<cv::Mat> lights = asInOtherLight(f.birds_eye, p_.light_change);
+	for (const cv::Mat& seen : lights) hist_.addImage(seen, use);
 	f.pixels = static_cast<std::size_t>(cv::countNonZero(use));
 	// Obstacle pixels: never where the laser saw floor, nor on the base.
 	cv::Mat not_free;
 	cv::bitwise_not(f.laser_free, not_free);
 	cv::bitwise_and(obstacle, not_free, obstacle);
 	cv::bitwise_and(obstacle, base_mask_, obstacle);
-	obstacles_.addImage(f.birds_eye, obstacle);
+	for (const cv::Mat& seen : lights) obstacles_.addImage(seen, obstacle);
 	f.obstacle_pixels = static_cast<std::size_t>(cv::countNonZero(obstacle));
 	const auto ring = ring_.medianColour(omni);
 	for (int c = 0; c < 3; ++c) ring_sum_[c] += ring[c];

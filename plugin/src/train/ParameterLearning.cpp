@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 namespace omnirange
 {
@@ -24,24 +25,55 @@ struct Validation
 	CObservation2DRangeScan::Ptr laser;
 };
 
-using TrainerKey = std::pair<ColourSpace, int>;  // colour space, bins
+using TrainerKey = std::tuple<ColourSpace, int, double>;  // colour space, bins, light change
 
-/** Trains one histogram per colour space and bin count on the training pairs and keeps the held-aside ones. */
-void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const LearningOptions& lo,
-			 std::map<TrainerKey, HistogramTrainer>& trainers, std::vector<Validation>& validation, int& trained,
-			 Progress* progress)
+bool isSelected(const RawlogTrainingOptions& o, int k)
+{
+	return !((o.until > 0 && k >= o.until) || k < o.first || (k - o.first) % o.every != 0);
+}
+
+/** How many pairs the options select: a pass that decodes no image. */
+int countSelected(const RawlogTrainingOptions& o)
 {
 	RawlogProcessor loop(o.input);
 	int pairs = 0, selected = 0;
 	loop.onPair<CObservationImage, CObservation2DRangeScan>(
 		o.omni_label, o.laser_label, o.max_dt,
+		[&](const CObservationImage::Ptr&, const CObservation2DRangeScan::Ptr&) { selected += isSelected(o, pairs++); });
+	loop.run();
+	if (pairs == 0) throw std::runtime_error(loop.describeNoPair() + "; learning needs both");
+	return selected;
+}
+
+/** The k-th held-aside image in the light it is shown in: as seen, dimmer, brighter, in turn. */
+cv::Mat inChangedLight(const cv::Mat& bgr, int k, double v)
+{
+	const double gain = k % 3 == 0 ? 1.0 : k % 3 == 1 ? 1.0 - v : 1.0 + v;
+	if (gain == 1.0) return bgr;
+	cv::Mat m;
+	bgr.convertTo(m, -1, gain);
+	return m;
+}
+
+/** Trains one histogram per key on the training pairs and keeps the held-aside ones. */
+void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const LearningOptions& lo,
+			 std::map<TrainerKey, HistogramTrainer>& trainers, std::vector<Validation>& validation, int& trained,
+			 Progress* progress)
+{
+	const std::vector<PairRole> roles = splitPairs(lo, countSelected(o));
+	RawlogProcessor loop(o.input);
+	int pairs = 0, selected = 0;
+	loop.onPair<CObservationImage, CObservation2DRangeScan>(
+		o.omni_label, o.laser_label, o.max_dt,
 		[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& laser) {
-			const int k = pairs++;
-			if ((o.until > 0 && k >= o.until) || k < o.first || (k - o.first) % o.every != 0) return;
+			if (!isSelected(o, pairs++)) return;
+			const int s = selected++;
+			if (s >= static_cast<int>(roles.size()) || roles[s] == PairRole::Unused) return;
 			const cv::Mat bgr = decodeImage(*image, rp.camera);
-			if (++selected % lo.hold_out_every == 0)
+			if (roles[s] == PairRole::Validate)
 			{
-				if (static_cast<int>(validation.size()) < lo.max_validation_pairs) validation.push_back({bgr, laser});
+				const int k = static_cast<int>(validation.size());
+				validation.push_back({inChangedLight(bgr, k, lo.validation_light_change), laser});
 				return;
 			}
 			for (auto& [key, trainer] : trainers) trainer.add(bgr, *laser);
@@ -86,6 +118,11 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	o.validate();
 	start.validate();
 	if (lo.hold_out_every < 2) throw std::invalid_argument("hold_out_every must be >= 2");
+	if (!(lo.validation_fraction > 0 && lo.validation_fraction < 1))
+		throw std::invalid_argument("validation_fraction must be within (0, 1)");
+	if (!(lo.validation_light_change >= 0 && lo.validation_light_change < 1))
+		throw std::invalid_argument("validation_light_change must be within [0, 1)");
+	if (lo.max_validation_pairs < 1) throw std::invalid_argument("max_validation_pairs must be >= 1");
 	const OmniCameraModel camera(start.camera);
 	const double base_range = camera.distanceFromRho(start.scanner.base_radius) + 0.05;
 	std::vector<int> bins = lo.bins;
@@ -95,16 +132,21 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	std::map<TrainerKey, HistogramTrainer> trainers;
 	for (const ColourSpace space : lo.spaces)
 		for (const int b : bins)
-		{
-			TrainingParams tp = o.training;
-			tp.space = space, tp.bins = b;
-			trainers.emplace(TrainerKey{space, b},
-							 HistogramTrainer(camera, start.sensor_pose, base_range, start.scanner.max_range, tp));
-		}
+			for (const double light : lo.light_changes)
+			{
+				TrainingParams tp = o.training;
+				tp.space = space, tp.bins = b, tp.light_change = light;
+				trainers.emplace(TrainerKey{space, b, light},
+								 HistogramTrainer(camera, start.sensor_pose, base_range, start.scanner.max_range, tp));
+			}
 	std::vector<Validation> validation;
 	LearningResult r;
 	collect(start, o, lo, trainers, validation, r.training_pairs, progress);
 	r.validation_pairs = static_cast<int>(validation.size());
+	char light[100] = ", as seen";
+	if (lo.validation_light_change > 0)
+		std::snprintf(light, sizeof light, ", a third each as seen, dimmer and brighter by %g", lo.validation_light_change);
+	r.validation = (lo.split == ValidationSplit::Later ? "the later part of the stretch" : "interleaved") + std::string(light);
 
 	r.best.score = 1e9;
 	for (const auto& [key, trainer] : trainers)
@@ -120,34 +162,78 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 							RangefinderParams p = start;
 							p.threshold = theta, p.obstacle_ratio = ratio, p.scanner.filter.N = N;
 							p.scanner.filter.K = K, p.scanner.boundary_model = boundary;
-							const LearnedCandidate c{key.first, key.second, theta, ratio, N, K, boundary,
+							const auto& [space, b, light] = key;
+							const LearnedCandidate c{space, b, light, theta, ratio, N, K, boundary,
 													 score(Rangefinder(p, model), validation)};
 							r.tried.push_back(c);
 							if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
 						}
 	}
 	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
+	r.training = o.training;
+	r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
+	if (lo.refit)
+	{
+		RawlogTrainingOptions all = o;
+		all.training = r.training;
+		all.figures_prefix.clear();
+		const RawlogTrainingResult refitted = trainFromRawlog(r.params, all);
+		r.model = refitted.model;
+		r.refit_pairs = refitted.used;
+	}
 	return r;
+}
+
+std::vector<PairRole> splitPairs(const LearningOptions& lo, int selected)
+{
+	std::vector<PairRole> roles(std::max(0, selected), PairRole::Train);
+	std::vector<int> held;
+	if (lo.split == ValidationSplit::Interleaved)
+	{
+		for (int s = lo.hold_out_every - 1; s < selected; s += lo.hold_out_every) held.push_back(s);
+	}
+	else if (selected >= 2)
+	{
+		const int n = std::clamp(static_cast<int>(std::lround(lo.validation_fraction * selected)), 1, selected - 1);
+		for (int s = selected - n; s < selected; ++s) held.push_back(s);
+	}
+	// Keep at most max_validation_pairs, evenly spread over the held-aside ones.
+	const std::size_t keep = std::min<std::size_t>(held.size(), std::max(1, lo.max_validation_pairs));
+	for (std::size_t i = 0; i < held.size(); ++i) roles[held[i]] = PairRole::Unused;
+	for (std::size_t j = 0; j < keep; ++j) roles[held[j * held.size() / keep]] = PairRole::Validate;
+	return roles;
+}
+
+ValidationSplit validationSplitFromString(const std::string& s)
+{
+	if (s == "later") return ValidationSplit::Later;
+	if (s == "interleaved") return ValidationSplit::Interleaved;
+	throw std::invalid_argument("validation split '" + s + "' is neither 'later' nor 'interleaved'");
 }
 
 std::string describe(const LearnedCandidate& c)
 {
 	char s[300];
-	std::snprintf(s, sizeof s, "colour space %s, %d bins, threshold %g, obstacle_ratio %g, N %d, K %d, %s boundary",
-				  toString(c.space).c_str(), c.bins, c.threshold, c.obstacle_ratio, c.N, c.K, toString(c.boundary).c_str());
+	std::snprintf(s, sizeof s,
+				  "colour space %s, %d bins, light change %g, threshold %g, obstacle_ratio %g, N %d, K %d, %s boundary",
+				  toString(c.space).c_str(), c.bins, c.light_change, c.threshold, c.obstacle_ratio, c.N, c.K,
+				  toString(c.boundary).c_str());
 	return s;
 }
 
 std::string learnedIni(const LearningResult& r, const std::string& section)
 {
-	char head[700];
+	char head[900];
+	const std::string refit = r.refit_pairs > 0 ? "trained again on all " + std::to_string(r.refit_pairs) + " pairs"
+												: "trained on the " + std::to_string(r.training_pairs) + " others";
 	std::snprintf(head, sizeof head,
 				  "; Learned by omnirange-train --learn: %zu candidates scored against the laser on %d held-aside\n"
-				  "; image/laser pairs (histograms trained on %d others). The winner: %s;\n"
-				  "; mean error %.4f m. Train the histogram in that colour space and with those bins\n"
-				  "; (the histogram file written with this ini is).\n[%s]\n",
-				  r.tried.size(), r.validation_pairs, r.training_pairs, describe(r.best).c_str(), r.best.score,
-				  section.c_str());
+				  "; image/laser pairs (%s; histograms trained on %d others). The winner:\n"
+				  "; %s;\n"
+				  "; mean error %.4f m. The histogram file written with this ini was made that way (%s);\n"
+				  "; to train one by hand, use the same colour space, bins and light change.\n[%s]\n",
+				  r.tried.size(), r.validation_pairs, r.validation.c_str(), r.training_pairs, describe(r.best).c_str(), r.best.score,
+				  refit.c_str(), section.c_str());
 	return head + r.params.asIni();
 }
 

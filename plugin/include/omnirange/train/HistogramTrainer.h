@@ -24,6 +24,10 @@ struct TrainingParams
 	/** [m] how far beyond each laser hit (after laser_margin) the obstacle's
 	 * colours are counted, for the two-class model; 0: the floor only. */
 	double obstacle_band{0.25};
+	/** [-] also count every pixel as the camera would see it in light this
+	 * much dimmer and brighter (gains 1 - a and 1 + a), so the histogram
+	 * covers a change of light it was not trained in; 0: as seen. */
+	double light_change{0.0};
 };
 
 /** The three images of paper Fig. 1 for one frame. */

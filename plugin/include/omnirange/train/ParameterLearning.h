@@ -1,11 +1,13 @@
 #pragma once
 // Learning the rangefinder's parameters from the laser (the paper's future
 // work): the training part of a rawlog is split into pairs to train on and
-// pairs held aside; a histogram is trained per colour space and bin count on
-// the first, and every candidate (colour space, bins, Theta, obstacle_ratio,
-// N, K, boundary model) scans the held-aside images and is scored against
-// their laser scans. The best one
-// wins. Only the laser is used: it is what a user's training robot has.
+// pairs held aside (every fourth, or the later part of the stretch); a
+// histogram is trained per colour space, bin count and light change on the
+// first, and every candidate (those, Theta, obstacle_ratio, N, K, boundary
+// model) scans the held-aside images (as seen, or in changed light) and is
+// scored against their laser scans. The best one wins, and its histogram is
+// trained again on all the pairs. Only the laser is used: it is what a
+// user's training robot has.
 
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/train/RawlogTraining.h>
@@ -16,6 +18,13 @@
 namespace omnirange
 {
 class Progress;
+
+enum class ValidationSplit
+{
+	Later,
+	Interleaved
+};
+ValidationSplit validationSplitFromString(const std::string& s);  ///< "later" or "interleaved"; throws otherwise
 
 struct LearningOptions
 {
@@ -28,8 +37,24 @@ struct LearningOptions
 	 * many (at most 64). */
 	std::vector<int> bins{};
 	std::vector<BoundaryModel> boundary_models{BoundaryModel::Subpixel, BoundaryModel::Midpoint};
-	int hold_out_every{4};  ///< every n-th selected pair is held aside for validation
-	int max_validation_pairs{40};  ///< the held-aside images are kept in memory
+	/** TrainingParams::light_change of the candidate histograms ({0, 0.15}
+	 * was measured and did not help: docs/results.md). */
+	std::vector<double> light_changes{0.0};
+
+	/** Which selected pairs are held aside: every `hold_out_every`-th
+	 * (Interleaved: frames next to training frames) or the last
+	 * `validation_fraction` of them (Later: new places, as the rest of a
+	 * route brings; measured, no better: docs/results.md). */
+	ValidationSplit split{ValidationSplit::Interleaved};
+	double validation_fraction{0.25};
+	int hold_out_every{4};
+	/** [-] the held-aside images are shown as seen, dimmer and brighter by
+	 * this (gains 1, 1 - v, 1 + v in turn): light changes after training. */
+	double validation_light_change{0.0};
+	int max_validation_pairs{40};  ///< the held-aside images are kept in memory (evenly thinned)
+	/** Train the winner's histogram again on every selected pair, the
+	 * held-aside ones too, once they have chosen it. */
+	bool refit{true};
 };
 
 /** One candidate and how it did on the held-aside pairs. */
@@ -37,6 +62,7 @@ struct LearnedCandidate
 {
 	ColourSpace space{ColourSpace::RGB};
 	int bins{0};
+	double light_change{0};  ///< of the histogram's training (TrainingParams::light_change)
 	double threshold{0}, obstacle_ratio{0};
 	int N{0}, K{0};
 	BoundaryModel boundary{BoundaryModel::Subpixel};
@@ -50,18 +76,31 @@ struct LearnedCandidate
 struct LearningResult
 {
 	RangefinderParams params;  ///< the start parameters with the winner's values
-	ColourModel model;  ///< trained in the winner's colour space
+	ColourModel model;  ///< trained in the winner's colour space, bins and light change
+	TrainingParams training;  ///< how `model` was trained
 	LearnedCandidate best;
 	std::vector<LearnedCandidate> tried;
 	int training_pairs{0}, validation_pairs{0};
+	int refit_pairs{0};  ///< pairs the final histogram was trained on (0: not refitted)
+	std::string validation;  ///< how the held-aside pairs were chosen and shown, for the ini's comment
 };
+
+/** What each selected pair is for. */
+enum class PairRole
+{
+	Train,
+	Validate,
+	Unused  ///< held aside, but past max_validation_pairs
+};
+/** The roles of `selected` pairs in their order, as `options` split them. */
+std::vector<PairRole> splitPairs(const LearningOptions& options, int selected);
 
 /** Throws std::runtime_error when the rawlog has too few image/laser pairs
  * (at least one to train on and one to validate). */
 LearningResult learnParameters(const RangefinderParams& start, const RawlogTrainingOptions& training,
 							   const LearningOptions& options = {}, Progress* progress = nullptr);
 
-/** "colour space CHROMA, 13 bins, threshold 0.005, obstacle_ratio 0, N 20, K 4, subpixel boundary". */
+/** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, N 20, K 4, subpixel boundary". */
 std::string describe(const LearnedCandidate& c);
 
 /** The learned keys as an ini a user can read: a comment saying how they

@@ -1,0 +1,108 @@
+// Learning's split of the training pairs, the histogram trained for a change
+// of light, and the winner's histogram trained again on every pair.
+
+#include "../common/FactorySample.h"
+
+#include <omnirange/train/ParameterLearning.h>
+#include <omnirange/train/RawlogTraining.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace omnirange;
+using test::kSample;
+
+namespace
+{
+int countOf(const std::vector<PairRole>& roles, PairRole role)
+{
+	return static_cast<int>(std::count(roles.begin(), roles.end(), role));
+}
+
+std::uint32_t occupiedBins(const ColourHistogram& h)
+{
+	const int n = h.binsPerChannel();
+	std::uint32_t occupied = 0;
+	for (std::uint32_t b = 0; b < static_cast<std::uint32_t>(n * n * n); ++b) occupied += h.count(b) > 0;
+	return occupied;
+}
+}  // namespace
+
+TEST(ParameterLearning, TheLaterSplitHoldsAsideTheLastQuarterOfThePairs)
+{
+	LearningOptions lo;
+	lo.split = ValidationSplit::Later;
+	const auto roles = splitPairs(lo, 12);
+	ASSERT_EQ(roles.size(), 12u);
+	for (int s = 0; s < 12; ++s) EXPECT_EQ(roles[s], s >= 9 ? PairRole::Validate : PairRole::Train) << s;
+}
+
+TEST(ParameterLearning, TheInterleavedSplitHoldsAsideEveryFourthPair)
+{
+	const auto roles = splitPairs(LearningOptions{}, 12);  // the default
+	for (int s = 0; s < 12; ++s) EXPECT_EQ(roles[s], s % 4 == 3 ? PairRole::Validate : PairRole::Train) << s;
+}
+
+TEST(ParameterLearning, HeldAsidePairsAreThinnedEvenlyToTheCap)
+{
+	LearningOptions lo;
+	lo.split = ValidationSplit::Later;
+	lo.max_validation_pairs = 10;
+	const auto roles = splitPairs(lo, 100);
+	// 25 held aside (75..99), 10 of them kept: 75, 77, 80, 82, 85, ..., 97.
+	EXPECT_EQ(countOf(roles, PairRole::Train), 75);
+	EXPECT_EQ(countOf(roles, PairRole::Validate), 10);
+	EXPECT_EQ(countOf(roles, PairRole::Unused), 15);
+	for (int s : {75, 77, 80, 82, 85, 87, 90, 92, 95, 97}) EXPECT_EQ(roles[s], PairRole::Validate) << s;
+	EXPECT_EQ(roles[99], PairRole::Unused);
+}
+
+TEST(ParameterLearning, OnePairIsNoSplit)
+{
+	LearningOptions lo;
+	lo.split = ValidationSplit::Later;
+	EXPECT_EQ(countOf(splitPairs(lo, 1), PairRole::Validate), 0);
+	EXPECT_EQ(countOf(splitPairs(lo, 2), PairRole::Validate), 1);
+	EXPECT_THROW(validationSplitFromString("random"), std::invalid_argument);
+}
+
+TEST(HistogramTraining, ALightChangeCountsEveryPixelAsSeenAndInTwoOtherLights)
+{
+	const RangefinderParams rp;
+	RawlogTrainingOptions o;
+	o.input = kSample;
+	o.max_frames = 2;
+	const ColourHistogram plain = trainFromRawlog(rp, o).model.floor;
+	o.training.light_change = 0.15;
+	const ColourHistogram lit = trainFromRawlog(rp, o).model.floor;
+	ASSERT_GT(plain.total(), 0u);
+	EXPECT_EQ(lit.total(), 3 * plain.total());
+	for (std::uint32_t b = 0; b < 13u * 13u * 13u; ++b) ASSERT_GE(lit.count(b), plain.count(b)) << b;
+	EXPECT_GT(occupiedBins(lit), occupiedBins(plain));
+	o.training.light_change = 1.0;
+	EXPECT_THROW(trainFromRawlog(rp, o), std::invalid_argument);
+}
+
+TEST(ParameterLearning, TheWinnersHistogramIsTrainedAgainOnEveryPair)
+{
+	const RangefinderParams rp;
+	RawlogTrainingOptions o;
+	o.input = kSample;
+	o.until = 12;
+	LearningOptions lo;  // one candidate: only the split and the refit matter here
+	lo.split = ValidationSplit::Later;  // train on pairs 0..8, validate on 9..11
+	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.05};
+	lo.obstacle_ratios = {0.0}, lo.Ns = {20}, lo.Ks = {2}, lo.boundary_models = {BoundaryModel::Subpixel};
+	const LearningResult refitted = learnParameters(rp, o, lo);
+	EXPECT_EQ(refitted.training_pairs, 9);
+	EXPECT_EQ(refitted.validation_pairs, 3);
+	EXPECT_EQ(refitted.refit_pairs, 12);
+	EXPECT_EQ(refitted.model.floor.total(), trainFromRawlog(rp, o).model.floor.total());
+
+	lo.refit = false;
+	const LearningResult first = learnParameters(rp, o, lo);
+	EXPECT_EQ(first.refit_pairs, 0);
+	o.until = 9;  // the nine pairs before the held-aside ones
+	EXPECT_EQ(first.model.floor.total(), trainFromRawlog(rp, o).model.floor.total());
+}
