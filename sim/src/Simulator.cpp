@@ -95,7 +95,9 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		img->cameraPose = cam.pose;
 		img->cameraParams.ncols = static_cast<uint32_t>(cam.camera.image_width);
 		img->cameraParams.nrows = static_cast<uint32_t>(cam.camera.image_height);
-		img->cameraParams.setIntrinsicParamsFromValues(cam.camera.R, cam.camera.R, cam.camera.cx, cam.camera.cy);
+		// MRPT has no catadioptric model: the focal length stored is the mirror's scale.
+		const double f = cam.camera.mirror_model == MirrorModel::Mei ? cam.camera.gamma : cam.camera.R;
+		img->cameraParams.setIntrinsicParamsFromValues(f, f, cam.camera.cx, cam.camera.cy);
 		std::ostringstream name;
 		name << stem << "_OMNICAM_" << std::setw(6) << std::setfill('0') << k << "." << cam.format;
 		img->image = out.externalImage(renderer.render(pose, robot.robot.seed * 1000003ull + k, static_cast<int>(k)),

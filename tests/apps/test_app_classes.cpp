@@ -33,6 +33,7 @@ namespace
 using test::kIni;
 using test::kSample;
 using test::kSource;
+using test::readText;
 
 std::string workDir(const std::string& name) { return test::freshDir("omnirange_apps", name); }
 
@@ -103,6 +104,34 @@ TEST(AppClasses, CalibrateRecoversTheMirrorRadius)
 	EXPECT_GE(c.suggested_boundary_offset, -1.0);  // what the scanner accepts
 	EXPECT_LE(c.suggested_boundary_offset, 1.0);
 	EXPECT_GE(c.kept, c.pairs / 2);
+}
+
+TEST(AppClasses, CalibrateSavesTheCheckerboardsMeiModelIntoTheIni)
+{
+	// Four real images through a paraboloid (../shared/data/real, made by
+	// others); the ini's other keys stay as they were.
+	const std::string real = kSource + "/../shared/data/real/mei-paraboloid";
+	if (!fs::exists(real)) GTEST_SKIP() << "no " << real;
+	const std::string dir = workDir("checkerboard_save");
+	CalibrateApp::Options o;
+	for (const char* n : {"001", "003", "004", "006"}) o.checkerboards.push_back(real + "/img_para_" + n + ".pgm");
+	o.save_to = dir + "/my.ini";
+	std::ofstream(o.save_to) << "[rangefinder]\n; [-] kept\nthreshold = 0.075\nR = 192\n";
+	o.verbosity = mrpt::system::LVL_ERROR;
+	const CheckerboardCalibration c = CalibrateApp(o).runIntrinsics();
+	mrpt::system::COutputLogger quiet("test");
+	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+	const RangefinderParams saved = loadRangefinderIni(o.save_to, "rangefinder", quiet);
+	EXPECT_EQ(saved.camera.mirror_model, MirrorModel::Mei);
+	EXPECT_NEAR(saved.camera.xi, c.xi, 1e-6);
+	EXPECT_NEAR(saved.camera.gamma, 0.5 * (c.K(0, 0) + c.K(1, 1)), 1e-6);
+	EXPECT_NEAR(saved.camera.k1, c.D[0], 1e-9);
+	EXPECT_NEAR(saved.camera.cx, 643.7, 3.0);  // the data's reference principal point
+	EXPECT_NEAR(saved.camera.cy, 521.3, 5.0);
+	EXPECT_EQ(saved.camera.image_width, 1280);
+	EXPECT_EQ(saved.camera.image_height, 1024);
+	EXPECT_DOUBLE_EQ(saved.threshold, 0.075);
+	EXPECT_NE(readText(o.save_to).find("; [-] kept"), std::string::npos);
 }
 
 TEST(AppClasses, CalibrateFindsTheCamerasOrientation)

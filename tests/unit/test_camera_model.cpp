@@ -99,3 +99,48 @@ TEST(CameraModel, BadParametersAreRejected)
 	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);
 	EXPECT_THROW(mirrorModelFromString("hyperbolic"), std::invalid_argument);
 }
+
+TEST(CameraModel, MeiWithXiOneIsTheParaboloid)
+{
+	CameraParams para, mei;
+	mei.mirror_model = MirrorModel::Mei;
+	mei.xi = 1.0, mei.gamma = para.R;
+	const OmniCameraModel a(para), b(mei);
+	for (double rho = 0; rho <= 400; rho += 12.5)
+		EXPECT_NEAR(b.thetaFromRho(rho), a.thetaFromRho(rho), 1e-12) << rho;
+	for (double rho = 0; rho < para.R; rho += 12.5)  // below the horizon
+		EXPECT_NEAR(b.distanceFromRho(rho), a.distanceFromRho(rho), 1e-9) << rho;
+}
+
+TEST(CameraModel, MeiHyperboloidKnownRadii)
+{
+	// xi 0.5, gamma 100, no distortion: r = sin(theta) / (cos(theta) + 0.5), worked by hand.
+	CameraParams p;
+	p.mirror_model = MirrorModel::Mei;
+	p.xi = 0.5, p.gamma = 100;
+	const OmniCameraModel m(p);
+	EXPECT_NEAR(m.rhoFromTheta(kPi / 3), 100 * std::sqrt(3.0) / 2, 1e-9);  // sin 60 / (0.5 + 0.5)
+	EXPECT_NEAR(m.horizonRho(), 200, 1e-9);  // 1 / 0.5
+	EXPECT_NEAR(m.thetaFromRho(200), kPi / 2, 1e-12);
+	EXPECT_NEAR(m.thetaFromRho(0), 0, 1e-12);
+	// With distortion: rho = gamma r (1 + k1 r^2 + k2 r^4); at the horizon r = 2.
+	p.k1 = -0.05, p.k2 = 0.004;
+	const OmniCameraModel d(p);
+	EXPECT_NEAR(d.horizonRho(), 200 * (1 - 0.05 * 4 + 0.004 * 16), 1e-9);
+	for (double theta = 0.05; theta < 1.85; theta += 0.1)
+		EXPECT_NEAR(d.thetaFromRho(d.rhoFromTheta(theta)), theta, 1e-10) << theta;
+}
+
+TEST(CameraModel, MeiThatFoldsBackIsRejected)
+{
+	CameraParams p;
+	p.mirror_model = MirrorModel::Mei;
+	p.xi = 0.8, p.gamma = 160;
+	EXPECT_NO_THROW(OmniCameraModel{p});
+	p.k1 = -1.0;  // r (1 - r^2) turns back at r = 0.58, before the horizon (r = 1.25)
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);
+	p.k1 = 0, p.xi = 0;
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);
+	EXPECT_EQ(mirrorModelFromString("mei"), MirrorModel::Mei);
+	EXPECT_EQ(toString(MirrorModel::Mei), "mei");
+}

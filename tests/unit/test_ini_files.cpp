@@ -61,7 +61,7 @@ TEST(IniFiles, MazeAndFactoryCarryTableI)
 
 TEST(IniFiles, EveryKeyHasAUnitComment)
 {
-	const std::regex key(R"(^\s*([A-Za-z_]+)\s*=)");
+	const std::regex key(R"(^\s*([A-Za-z_][A-Za-z0-9_]*)\s*=)");
 	const std::regex unit(R"(^\s*;.*\[[^\]]+\])");
 	for (const auto& entry : std::filesystem::directory_iterator(kSource + "/ini"))
 	{
@@ -83,7 +83,7 @@ TEST(IniFiles, EveryKeyHasAUnitComment)
 
 TEST(IniFiles, DocsListEveryKeyWithTheCodesUnitAndDefault)
 {
-	const std::regex row(R"(^\|\s*`([A-Za-z_]+)`\s*\|\s*([^|]*?)\s*\|\s*([^|]*?)\s*\|)");
+	const std::regex row(R"(^\|\s*`([A-Za-z_][A-Za-z0-9_]*)`\s*\|\s*([^|]*?)\s*\|\s*([^|]*?)\s*\|)");
 	std::map<std::string, std::pair<std::string, std::string>> documented;  // key -> unit, default
 	for (const auto& l : lines(kSource + "/docs/parameters.md"))
 	{

@@ -24,7 +24,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
 	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", false, "", "FILE", cmd);
 	TCLAP::MultiArg<std::string> boards("", "checkerboard", "an image of a checkerboard (repeat for each; >= 3 found needed)", false, "IMAGE", cmd);
-	TCLAP::ValueArg<std::string> save("", "save-to", "write what was found (orientation, then R or alpha and boundary_offset; cx, cy with --rim) into this ini's section, keeping the rest of the file", false, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> save("", "save-to", "write what was found (orientation, then R or alpha and boundary_offset; cx, cy with --rim; the mei model with --checkerboard) into this ini's section, keeping the rest of the file", false, "", "INI", cmd);
 	TCLAP::MultiArg<std::string> rims("", "rim", "an ordinary image: find the mirror's centre and rim radius (repeat; a few images)", false, "IMAGE", cmd);
 	TCLAP::ValueArg<std::string> board("", "board", "inner corners, COLUMNSxROWS", false, "8x6", "CxR", cmd);
 	TCLAP::ValueArg<double> square("", "square", "side of a board square [m]", false, o.board.square, "M", cmd);
@@ -89,8 +89,9 @@ MirrorCalibration CalibrateApp::run()
 			{"mirrored", f.mirrored ? "true" : "false"}};
 		if (orientation_ok)
 		{
+			// A mei camera's radial model comes from --checkerboard; the laser fits R or alpha only.
 			if (params.camera.mirror_model == MirrorModel::Paraboloid) keys.push_back({"R", formatDouble(c.R)});
-			else keys.push_back({"alpha", formatDouble(c.alpha)});
+			if (params.camera.mirror_model == MirrorModel::FirstOrder) keys.push_back({"alpha", formatDouble(c.alpha)});
 			keys.push_back({"boundary_offset", formatDouble(c.suggested_boundary_offset)});
 		}
 		writeIniSection(o_.save_to, o_.section, keys);
@@ -111,7 +112,26 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 				c.images.size(), c.used(), c.rms);
 	std::printf("fx %.2f  fy %.2f  skew %.3f  cx %.2f  cy %.2f px;  xi %.4f;  k1 %.4f  k2 %.4f  p1 %.5f  p2 %.5f\n",
 				c.K(0, 0), c.K(1, 1), c.K(0, 1), c.K(0, 2), c.K(1, 2), c.xi, c.D[0], c.D[1], c.D[2], c.D[3]);
+	std::printf("the rangefinder's mei model is radial: it takes gamma = (fx + fy) / 2 = %.2f px, k1, k2, cx, cy and "
+				"leaves out fx - fy = %.3f px, skew, p1, p2\n",
+				0.5 * (c.K(0, 0) + c.K(1, 1)), c.K(0, 0) - c.K(1, 1));
 	if (!o_.intrinsics_output.empty()) writeFileAtomically(o_.intrinsics_output, c.yaml());
+	if (!o_.save_to.empty())
+	{
+		const CameraParams cam = meiCamera(c);
+		OmniCameraModel{cam};  // refuses a model whose radius does not grow up to the horizon
+		writeIniSection(o_.save_to, o_.section,
+						{{"image_width", std::to_string(cam.image_width)},
+						 {"image_height", std::to_string(cam.image_height)},
+						 {"cx", formatDouble(cam.cx)},
+						 {"cy", formatDouble(cam.cy)},
+						 {"mirror_model", "mei"},
+						 {"xi", formatDouble(cam.xi)},
+						 {"gamma", formatDouble(cam.gamma)},
+						 {"k1", formatDouble(cam.k1)},
+						 {"k2", formatDouble(cam.k2)}});
+		std::printf("wrote the mei model's keys into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
+	}
 	return c;
 }
 

@@ -26,6 +26,7 @@ std::string toString(MirrorModel m)
 	{
 		case MirrorModel::Paraboloid: return "paraboloid";
 		case MirrorModel::FirstOrder: return "first_order";
+		case MirrorModel::Mei: return "mei";
 	}
 	throw std::logic_error("unknown MirrorModel");
 }
@@ -34,7 +35,8 @@ MirrorModel mirrorModelFromString(const std::string& name)
 {
 	if (name == "paraboloid") return MirrorModel::Paraboloid;
 	if (name == "first_order") return MirrorModel::FirstOrder;
-	throw std::invalid_argument("mirror_model must be 'paraboloid' or 'first_order', not '" + name + "'");
+	if (name == "mei") return MirrorModel::Mei;
+	throw std::invalid_argument("mirror_model must be 'paraboloid', 'first_order' or 'mei', not '" + name + "'");
 }
 
 const OptionsTable<CameraParams>& CameraParams::table()
@@ -47,10 +49,18 @@ const OptionsTable<CameraParams>& CameraParams::table()
 		.add("cy", "px", "row of the image centre", [](P& p) -> auto& { return p.cy; })
 		.add("R", "px", "radius of the 90-degree incidence circle of the paraboloid", [](P& p) -> auto& { return p.R; })
 		.add("h", "m", "height of the effective viewpoint above the floor", [](P& p) -> auto& { return p.h; })
-		.addEnum("mirror_model", "paraboloid: theta = 2 atan(rho/R); first_order: theta = rho/alpha",
+		.addEnum("mirror_model",
+				 "paraboloid: theta = 2 atan(rho/R); first_order: theta = rho/alpha; mei: Mei's unified model "
+				 "(xi, gamma, k1, k2), as cv::omnidir calibrates it",
 				 [](P& p) -> auto& { return p.mirror_model; }, mirrorModelFromString)
 		.add("alpha", "px/rad", "alpha of the first-order model (R/2 matches the paraboloid near the centre)",
 			 [](P& p) -> auto& { return p.alpha; })
+		.add("xi", "-", "mirror parameter of the mei model (1: paraboloid; between 0 and 1: hyperboloid)",
+			 [](P& p) -> auto& { return p.xi; })
+		.add("gamma", "px", "generalised focal length of the mei model (the mean of cv::omnidir's fx and fy)",
+			 [](P& p) -> auto& { return p.gamma; })
+		.add("k1", "-", "first radial distortion coefficient of the mei model", [](P& p) -> auto& { return p.k1; })
+		.add("k2", "-", "second radial distortion coefficient of the mei model", [](P& p) -> auto& { return p.k2; })
 		.addAngle("forward_azimuth",
 				  "on-screen angle, counter-clockwise from the image's +u axis as the picture is viewed, where "
 				  "the sensor's forward axis appears (180: the image's left)",
@@ -71,6 +81,26 @@ void CameraParams::validate() const
 	require(cx >= 0 && cx < image_width && cy >= 0 && cy < image_height,
 			"the image centre (cx, cy) must lie inside the image");
 	require(std::isfinite(forward_azimuth), "forward_azimuth_deg must be finite");
+	require(xi > 0 && xi <= 10, "xi must be within (0, 10]");
+	require(gamma > 0, "gamma must be > 0 px");
+	require(std::isfinite(k1) && std::isfinite(k2), "k1 and k2 must be finite");
+	if (mirror_model == MirrorModel::Mei)
+	{
+		// The image radius must grow with theta up to the horizon, or a radius
+		// would stand for two incidence angles.
+		const auto radial = [&](double theta) {
+			const double r = std::sin(theta) / (std::cos(theta) + xi);
+			return r * (1 + k1 * r * r + k2 * r * r * r * r);
+		};
+		double last = 0;
+		for (int i = 1; i <= 90; ++i)
+		{
+			const double now = radial(i * 3.14159265358979323846 / 180);
+			require(now > last, "the mei model's image radius must grow with the incidence angle up to 90 degrees "
+								"(check xi, k1, k2)");
+			last = now;
+		}
+	}
 }
 
 OmniCameraModel::OmniCameraModel(const CameraParams& p) : p_(p)
@@ -80,16 +110,41 @@ OmniCameraModel::OmniCameraModel(const CameraParams& p) : p_(p)
 
 double OmniCameraModel::thetaFromRho(double rho) const
 {
-	if (p_.mirror_model == MirrorModel::Paraboloid)
-		return 2.0 * std::atan(rho / p_.R);
-	return rho / p_.alpha;
+	switch (p_.mirror_model)
+	{
+		case MirrorModel::Paraboloid: return 2.0 * std::atan(rho / p_.R);
+		case MirrorModel::FirstOrder: return rho / p_.alpha;
+		case MirrorModel::Mei: break;
+	}
+	// Undo the distortion (Newton on r (1 + k1 r^2 + k2 r^4) = rd), then lift
+	// the point of the normalised plane onto the unit sphere (Mei's model).
+	const double rd = rho / p_.gamma;
+	double r = rd;
+	for (int i = 0; i < 20; ++i)
+	{
+		const double r2 = r * r;
+		const double f = r * (1 + p_.k1 * r2 + p_.k2 * r2 * r2) - rd;
+		const double df = 1 + 3 * p_.k1 * r2 + 5 * p_.k2 * r2 * r2;
+		if (df <= 0) break;
+		r -= f / df;
+	}
+	const double disc = 1 + (1 - p_.xi * p_.xi) * r * r;
+	if (disc < 0) return kPi;  // beyond the mirror's image
+	const double lift = (p_.xi + std::sqrt(disc)) / (r * r + 1);
+	return std::atan2(lift * r, lift - p_.xi);
 }
 
 double OmniCameraModel::rhoFromTheta(double theta) const
 {
-	if (p_.mirror_model == MirrorModel::Paraboloid)
-		return p_.R * std::tan(0.5 * theta);
-	return theta * p_.alpha;
+	switch (p_.mirror_model)
+	{
+		case MirrorModel::Paraboloid: return p_.R * std::tan(0.5 * theta);
+		case MirrorModel::FirstOrder: return theta * p_.alpha;
+		case MirrorModel::Mei: break;
+	}
+	const double r = std::sin(theta) / (std::cos(theta) + p_.xi);  // the sphere's point, projected
+	const double r2 = r * r;
+	return p_.gamma * r * (1 + p_.k1 * r2 + p_.k2 * r2 * r2);
 }
 
 double OmniCameraModel::distanceFromRho(double rho) const

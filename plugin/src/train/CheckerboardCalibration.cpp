@@ -21,6 +21,17 @@ int CheckerboardCalibration::used() const
 	return static_cast<int>(std::count_if(images.begin(), images.end(), [](const auto& i) { return i.used; }));
 }
 
+CameraParams meiCamera(const CheckerboardCalibration& c, CameraParams start)
+{
+	start.mirror_model = MirrorModel::Mei;
+	start.xi = c.xi;
+	start.gamma = 0.5 * (c.K(0, 0) + c.K(1, 1));
+	start.k1 = c.D[0], start.k2 = c.D[1];
+	start.cx = c.K(0, 2), start.cy = c.K(1, 2);
+	start.image_width = c.image_size.width, start.image_height = c.image_size.height;
+	return start;
+}
+
 std::string CheckerboardCalibration::yaml() const
 {
 	cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);

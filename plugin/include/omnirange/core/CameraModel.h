@@ -16,11 +16,15 @@ namespace omnirange
 enum class MirrorModel
 {
 	Paraboloid,  ///< exact paraboloid: theta = 2 atan(rho / R)
-	FirstOrder  ///< first-order Taylor model: theta ~= rho / alpha
+	FirstOrder,  ///< first-order Taylor model: theta ~= rho / alpha
+	/** Mei's unified model (what cv::omnidir::calibrate fits), radial part:
+	 * rho = gamma * r (1 + k1 r^2 + k2 r^4), r = sin(theta) / (cos(theta) + xi).
+	 * xi = 1 is a paraboloid (gamma = R), 0 < xi < 1 a hyperboloid. */
+	Mei
 };
 
 std::string toString(MirrorModel m);
-/** "paraboloid" or "first_order"; throws std::invalid_argument otherwise. */
+/** "paraboloid", "first_order" or "mei"; throws std::invalid_argument otherwise. */
 MirrorModel mirrorModelFromString(const std::string& name);
 
 /** Parameters of the omnicam. The ini keys equal the member names (angles:
@@ -38,6 +42,13 @@ struct CameraParams
 	 * mirror_model = first_order (96 = R/2: the paraboloid's slope at the
 	 * image centre). Fit it with omnirange-calibrate. */
 	double alpha{96.0};
+	/** Mei's unified model, used only when mirror_model = mei: the mirror
+	 * parameter xi [-], the generalised focal length gamma [px] (the mean of
+	 * cv::omnidir's fx and fy) and the radial distortion k1, k2 [-] of its
+	 * normalised image plane. The defaults are the stock paraboloid. */
+	double xi{1.0};
+	double gamma{192.0};
+	double k1{0.0}, k2{0.0};
 	/** [rad] on-screen angle (counter-clockwise from the image's +u axis, as
 	 * the picture is viewed) where the sensor's forward axis appears (pi:
 	 * forward is at the image's left). */

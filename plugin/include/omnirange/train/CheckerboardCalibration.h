@@ -7,6 +7,8 @@
 // it fails (strongly curved boards near the mirror's rim), from its
 // sector-based detector.
 
+#include <omnirange/core/CameraModel.h>
+
 #include <opencv2/core.hpp>
 
 #include <string>
@@ -43,6 +45,13 @@ struct CheckerboardCalibration
 	/** The result as OpenCV's YAML (the keys cv::omnidir users expect: camera_matrix, xi, distortion). */
 	std::string yaml() const;
 };
+
+/** The rangefinder's camera from a calibration: mirror_model = mei with its
+ * xi, gamma (the mean of fx and fy), k1, k2, the principal point as cx, cy
+ * and the image size; the rest of `start` (h, orientation) is kept. The
+ * rangefinder's model is radial: what it leaves out (fx - fy, skew, p1, p2)
+ * stays in the calibration for the user to judge (omnirange-calibrate prints it). */
+CameraParams meiCamera(const CheckerboardCalibration& c, CameraParams start = {});
 
 /** Throws std::runtime_error naming the file if an image cannot be read or
  * has another size than the first, and if fewer than 3 boards are found. */
