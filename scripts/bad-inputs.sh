@@ -171,6 +171,10 @@ run_case "accuracy: rawlog without scans" error acc_table.md -- "$apps/omnirange
 "$apps/omnirange-scan" -q "${S[@]}" && mv out.rawlog scanned.rawlog
 run_case "accuracy: --first past the end" error acc_table.md -- "$apps/omnirange-accuracy" -q -i scanned.rawlog -o acc --first 100000
 run_case "calibrate: histogram of another floor" error cal.ini -- "$apps/omnirange-calibrate" -q -i s.rawlog -c f.ini -H text.hist
+printf '#direct\n6 -96 0 0.0026\n#inverse\n2 1 1\n#center\n380 515\n#affine\n1 0 0\n#size\n768 1024\n' > wrong_count_calib.txt
+printf '#direct\n3 96 0 0.0026\n#inverse\n2 1 1\n#center\n380 515\n#affine\n1 0 0\n#size\n768 1024\n' > upward_calib.txt
+run_case "calibrate: OCamCalib file with a wrong count" error cal.ini -- "$apps/omnirange-calibrate" -q --ocamcalib wrong_count_calib.txt --save-to cal.ini
+run_case "calibrate: OCamCalib centre looking up (a0 > 0)" error cal.ini -- "$apps/omnirange-calibrate" -q --ocamcalib upward_calib.txt --save-to cal.ini
 mkdir -p exp && cp -r "$src/ini" exp/ini && ln -sf "$src/worlds" exp/worlds
 awk '{print} /^\[experiment\]/{print "unknown_key = 1"}' "$ini" > exp/ini/exp_bad.ini
 run_case "experiment: unknown key" error report -- "$apps/omnirange-experiment" -q exp/ini/exp_bad.ini -o report

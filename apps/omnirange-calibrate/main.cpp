@@ -10,6 +10,8 @@ int main(int argc, char** argv)
 		CalibrateApp app(CalibrateApp::parse(argc, argv));
 		if (!app.options().rim_images.empty()) app.runRim();
 		if (!app.options().checkerboards.empty()) app.runIntrinsics();
-		if (app.options().rim_images.empty() && app.options().checkerboards.empty()) app.run();
+		if (!app.options().ocamcalib.empty()) app.runOCamCalib();
+		const auto& o = app.options();
+		if (o.rim_images.empty() && o.checkerboards.empty() && o.ocamcalib.empty()) app.run();
 	});
 }

@@ -50,7 +50,8 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	const std::string base = stemOf(o.output);
 	requireOutputsAreNotInputs({o.output, base + "_truemap.png", base + "_truemap.gridmap.gz"},
 							   {o.world_file, o.route_file, o.robot_ini});
-	RobotParams robot = o.robot_ini.empty() ? RobotParams{} : RobotParams::loadFile(o.robot_ini);
+	RobotParams robot;
+	if (!o.robot_ini.empty()) robot = RobotParams::loadFile(o.robot_ini);
 	if (!o.image_format.empty())
 	{
 		robot.omnicam.format = o.image_format;

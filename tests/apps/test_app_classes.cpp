@@ -134,6 +134,32 @@ TEST(AppClasses, CalibrateSavesTheCheckerboardsMeiModelIntoTheIni)
 	EXPECT_NE(readText(o.save_to).find("; [-] kept"), std::string::npos);
 }
 
+TEST(AppClasses, CalibrateSavesAnOCamCalibModelIntoTheIni)
+{
+	// A calib_results.txt for the stock paraboloid (R 192: z = -96 + rho^2 / 384),
+	// centre row 380, column 515; the saved ini reads floor distances as R 192 does.
+	const std::string dir = workDir("ocamcalib_save");
+	CalibrateApp::Options o;
+	o.ocamcalib = dir + "/calib_results.txt";
+	std::ofstream(o.ocamcalib) << "#direct\n\n3 -96 0 0.0026041666666666665\n\n#inverse\n\n2 1 1\n\n#center\n\n"
+								  "380 515\n\n#affine\n\n1 0 0\n\n#size\n\n768 1024\n";
+	o.save_to = dir + "/my.ini";
+	std::ofstream(o.save_to) << "[rangefinder]\n; [-] kept\nthreshold = 0.075\n";
+	o.verbosity = mrpt::system::LVL_ERROR;
+	CalibrateApp(o).runOCamCalib();
+	mrpt::system::COutputLogger quiet("test");
+	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+	const RangefinderParams saved = loadRangefinderIni(o.save_to, "rangefinder", quiet);
+	EXPECT_EQ(saved.camera.mirror_model, MirrorModel::OCamCalib);
+	ASSERT_EQ(saved.camera.ocam_poly.size(), 3u);
+	EXPECT_DOUBLE_EQ(saved.camera.cx, 515);
+	EXPECT_DOUBLE_EQ(saved.camera.cy, 380);
+	EXPECT_DOUBLE_EQ(saved.threshold, 0.075);
+	const OmniCameraModel model(saved.camera);
+	CameraParams para;
+	EXPECT_NEAR(model.distanceFromRho(150), OmniCameraModel(para).distanceFromRho(150), 1e-9);
+}
+
 TEST(AppClasses, CalibrateFindsTheCamerasOrientation)
 {
 	// The ini says 150 degrees, not mirrored; the simulator's camera is at

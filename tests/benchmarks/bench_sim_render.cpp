@@ -20,7 +20,8 @@ void BM_RenderFrame(benchmark::State& state, const std::string& name)
 	const World world = loadWorld(kSource + "/worlds/" + name + ".world");
 	const Route route = loadRoute(kSource + "/worlds/" + name + ".route");
 	const auto poses = sampleTrajectory(route, 0.4, 0.6, 0.4);
-	const OmniRenderer renderer(world, RobotParams{});
+	const RobotParams robot;
+	const OmniRenderer renderer(world, robot);
 	std::size_t k = 0;
 	for (auto _ : state)
 	{
@@ -36,7 +37,8 @@ void BM_EncodeJpeg(benchmark::State& state)
 {
 	cv::setNumThreads(1);
 	const World world = loadWorld(kSource + "/worlds/factory.world");
-	const cv::Mat img = OmniRenderer(world, RobotParams{}).render({-6, -3, 0}, 1);
+	const RobotParams robot;
+	const cv::Mat img = OmniRenderer(world, robot).render({-6, -3, 0}, 1);
 	std::vector<uchar> buf;
 	for (auto _ : state) cv::imencode(".jpg", img, buf, {cv::IMWRITE_JPEG_QUALITY, 90});
 }

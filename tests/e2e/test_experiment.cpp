@@ -62,6 +62,16 @@ TEST(Experiment, AHyperbolicMirrorThroughTheMeiModelEndToEnd)
 	std::ifstream learned(dir + "/report/learned.ini");
 	const std::string text((std::istreambuf_iterator<char>(learned)), {});
 	EXPECT_NE(text.find("mirror_model = mei"), std::string::npos);
+
+	// The mirror's height from the laser, starting from a wrong one: the
+	// simulator's camera is at 0.931 m.
+	const std::string ini = dir + "/wrong_h.ini";
+	ASSERT_EQ(run("sed 's/^h = .*/h = 1.2/' " + q(dir + "/report/learned.ini") + " > " + q(ini)).code, 0);
+	const RunResult cal = run(app("omnirange-calibrate") + " -q -i " + q(dir + "/report/dataset/factory-hyperbolic.rawlog") +
+							  " -c " + q(ini) + " -H " + q(dir + "/report/floor.hist") + " --every 2 --save-to " + q(ini));
+	ASSERT_EQ(cal.code, 0) << cal.out;
+	const mrpt::config::CConfigFile saved(ini);
+	EXPECT_NEAR(saved.read_double("rangefinder", "h", 0, true), 0.931, 0.01) << cal.out;
 }
 
 TEST(Experiment, BadIniFailsBeforeAnyStage)

@@ -144,3 +144,29 @@ TEST(CameraModel, MeiThatFoldsBackIsRejected)
 	EXPECT_EQ(mirrorModelFromString("mei"), MirrorModel::Mei);
 	EXPECT_EQ(toString(MirrorModel::Mei), "mei");
 }
+
+TEST(CameraModel, OCamCalibsPolynomialOfAParaboloidIsTheParaboloid)
+{
+	// z = -R/2 + rho^2 / (2R): tan(theta) = rho / -z = 2 rho R / (R^2 - rho^2) = tan(2 atan(rho/R)).
+	CameraParams para, ocam;
+	ocam.mirror_model = MirrorModel::OCamCalib;
+	ocam.ocam_poly = {-para.R / 2, 0.0, 1 / (2 * para.R)};
+	const OmniCameraModel a(para), b(ocam);
+	for (double rho = 0; rho <= 400; rho += 12.5) EXPECT_NEAR(b.thetaFromRho(rho), a.thetaFromRho(rho), 1e-12) << rho;
+	for (double theta = 0; theta < 2.5; theta += 0.1) EXPECT_NEAR(b.rhoFromTheta(theta), a.rhoFromTheta(theta), 1e-6) << theta;
+	EXPECT_NEAR(b.horizonRho(), para.R, 1e-6);
+	EXPECT_NEAR(b.distanceFromRho(100), a.distanceFromRho(100), 1e-9);
+}
+
+TEST(CameraModel, OCamCalibPolynomialsThatCannotBeAMirrorAreRejected)
+{
+	CameraParams p;
+	p.mirror_model = MirrorModel::OCamCalib;
+	p.ocam_poly = {};
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);  // none given
+	p.ocam_poly = {96.0, 0.0, 1 / 384.0};
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);  // a0 > 0: the centre would look up
+	p.ocam_poly = {-96.0, 0.0, 1 / 384.0, -1e-5};  // z falls again: theta turns back inside the image
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);
+	EXPECT_EQ(mirrorModelFromString("ocamcalib"), MirrorModel::OCamCalib);
+}

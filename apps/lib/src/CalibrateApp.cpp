@@ -24,8 +24,9 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
 	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", false, "", "FILE", cmd);
 	TCLAP::MultiArg<std::string> boards("", "checkerboard", "an image of a checkerboard (repeat for each; >= 3 found needed)", false, "IMAGE", cmd);
-	TCLAP::ValueArg<std::string> save("", "save-to", "write what was found (orientation, then R or alpha and boundary_offset; cx, cy with --rim; the mei model with --checkerboard) into this ini's section, keeping the rest of the file", false, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> save("", "save-to", "write what was found (orientation, then R or alpha and boundary_offset; cx, cy with --rim; the camera model with --checkerboard or --ocamcalib) into this ini's section, keeping the rest of the file", false, "", "INI", cmd);
 	TCLAP::MultiArg<std::string> rims("", "rim", "an ordinary image: find the mirror's centre and rim radius (repeat; a few images)", false, "IMAGE", cmd);
+	TCLAP::ValueArg<std::string> ocam("", "ocamcalib", "OCamCalib's calib_results.txt: the camera's polynomial model (with --save-to: into the ini)", false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> board("", "board", "inner corners, COLUMNSxROWS", false, "8x6", "CxR", cmd);
 	TCLAP::ValueArg<double> square("", "square", "side of a board square [m]", false, o.board.square, "M", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "with --checkerboard: write the intrinsics here (OpenCV YAML)", false, "", "FILE", cmd);
@@ -40,11 +41,12 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	c.max_dt = max_dt.getValue(), c.every = every.getValue();
 	o.verbosity = verbosity.level();
 	o.checkerboards = boards.getValue(), o.intrinsics_output = out.getValue(), o.board.square = square.getValue();
-	o.rim_images = rims.getValue(), o.save_to = save.getValue();
+	o.rim_images = rims.getValue(), o.save_to = save.getValue(), o.ocamcalib = ocam.getValue();
 	if (std::sscanf(board.getValue().c_str(), "%dx%d", &o.board.columns, &o.board.rows) != 2)
 		throw std::invalid_argument("--board must be COLUMNSxROWS, e.g. 8x6, not '" + board.getValue() + "'");
-	if (o.checkerboards.empty() && o.rim_images.empty() && (o.ini.empty() || o.histogram.empty() || c.input.empty()))
-		throw std::invalid_argument("against a laser, -i RAWLOG, -c INI and -H HISTOGRAM are all needed (or --checkerboard IMAGE... or --rim IMAGE...)");
+	if (o.checkerboards.empty() && o.rim_images.empty() && o.ocamcalib.empty() &&
+		(o.ini.empty() || o.histogram.empty() || c.input.empty()))
+		throw std::invalid_argument("against a laser, -i RAWLOG, -c INI and -H HISTOGRAM are all needed (or --checkerboard IMAGE..., --rim IMAGE... or --ocamcalib FILE)");
 	return o;
 }
 
@@ -56,7 +58,10 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 MirrorCalibration CalibrateApp::run()
 {
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
-	const Rangefinder rf(params, ColourModel::load(o_.histogram));
+	const ColourModel colours = ColourModel::load(o_.histogram);
+	const Rangefinder rf(params, colours);
+	const MirrorModel m = params.camera.mirror_model;
+	const bool shape_calibrated = m == MirrorModel::Mei || m == MirrorModel::OCamCalib;
 	Progress progress("objects read");
 	const MirrorCalibration c =
 		calibrateMirror(rf, o_.calibration, progressAt(o_.verbosity, progress));
@@ -65,11 +70,19 @@ MirrorCalibration CalibrateApp::run()
 	std::printf("paraboloid:   R = %.2f px      RMS range error %.3f m (ini's R = %.2f: %.3f m)\n", c.R, c.rms_R,
 				params.camera.R, c.rms_given);
 	std::printf("first order:  alpha = %.2f px/rad   RMS range error %.3f m\n", c.alpha, c.rms_alpha);
+	std::printf("height:       h = %.4f m +- %.4f (standard error over %d images), from %zu pairs with the ini's %s "
+				"model; RMS range error %.3f m (the ini's h = %.3f m)\n",
+				c.height.h, c.height.std_error, c.height.frames, c.height.used,
+				toString(params.camera.mirror_model).c_str(), c.rms_height, params.camera.h);
 	std::printf("boundary: the laser's edge lies a median %+.2f px beyond the omnicam's "
 				"(suggested boundary_offset = %.2f with the ini's mirror%s)\n",
 				c.boundary_px, c.suggested_boundary_offset, c.clamped ? ", clamped to [-1, 1]" : "");
 	constexpr double kDeg = 57.29577951308232;
-	const OrientationFit f = fitOrientation(rf, o_.calibration);
+	// A calibrated shape leaves only the height to the laser: compare
+	// orientations at the fitted height, or a wrong h would blur them all.
+	RangefinderParams at_height = params;
+	if (shape_calibrated) at_height.camera.h = c.height.h;
+	const OrientationFit f = fitOrientation(Rangefinder(at_height, colours), o_.calibration);
 	orientation_ = f;
 	std::printf("orientation: forward_azimuth_deg = %.0f (spread %.1f deg over %d frames), mirrored = %s; "
 				"mean error %.3f m (the ini's %.0f deg, %s: %.3f m)\n",
@@ -92,6 +105,9 @@ MirrorCalibration CalibrateApp::run()
 			// A mei camera's radial model comes from --checkerboard; the laser fits R or alpha only.
 			if (params.camera.mirror_model == MirrorModel::Paraboloid) keys.push_back({"R", formatDouble(c.R)});
 			if (params.camera.mirror_model == MirrorModel::FirstOrder) keys.push_back({"alpha", formatDouble(c.alpha)});
+			// With a calibrated shape (mei, ocamcalib) only the height is left to the laser;
+			// for the paraboloid and first order, R or alpha absorb it.
+			if (shape_calibrated) keys.push_back({"h", formatDouble(std::round(c.height.h * 1e4) / 1e4)});
 			keys.push_back({"boundary_offset", formatDouble(c.suggested_boundary_offset)});
 		}
 		writeIniSection(o_.save_to, o_.section, keys);
@@ -147,6 +163,30 @@ MirrorRim CalibrateApp::runRim()
 		std::printf("wrote cx, cy into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
 	}
 	return rim;
+}
+
+CameraParams CalibrateApp::runOCamCalib()
+{
+	const OCamCalibFile f = readOCamCalib(o_.ocamcalib);
+	const CameraParams cam = ocamCamera(f);
+	const OmniCameraModel model(cam);  // refuses a polynomial whose angle does not grow
+	std::printf("OCamCalib model: %zu coefficients, centre cx = %.2f px, cy = %.2f px, image %d x %d; "
+				"the horizon at %.1f px\n",
+				f.poly.size(), cam.cx, cam.cy, cam.image_width, cam.image_height, model.horizonRho());
+	std::printf("the rangefinder's model is radial: it leaves out the affine terms c - 1 = %.5f, d = %.5f, e = %.5f\n",
+				f.c - 1, f.d, f.e);
+	if (!o_.save_to.empty())
+	{
+		writeIniSection(o_.save_to, o_.section,
+						{{"image_width", std::to_string(cam.image_width)},
+						 {"image_height", std::to_string(cam.image_height)},
+						 {"cx", formatDouble(cam.cx)},
+						 {"cy", formatDouble(cam.cy)},
+						 {"mirror_model", "ocamcalib"},
+						 {"ocam_poly", formatDoubles(cam.ocam_poly)}});
+		std::printf("wrote the ocamcalib model's keys into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
+	}
+	return cam;
 }
 
 }  // namespace omnirange::app

@@ -27,6 +27,7 @@ std::string toString(MirrorModel m)
 		case MirrorModel::Paraboloid: return "paraboloid";
 		case MirrorModel::FirstOrder: return "first_order";
 		case MirrorModel::Mei: return "mei";
+		case MirrorModel::OCamCalib: return "ocamcalib";
 	}
 	throw std::logic_error("unknown MirrorModel");
 }
@@ -36,7 +37,9 @@ MirrorModel mirrorModelFromString(const std::string& name)
 	if (name == "paraboloid") return MirrorModel::Paraboloid;
 	if (name == "first_order") return MirrorModel::FirstOrder;
 	if (name == "mei") return MirrorModel::Mei;
-	throw std::invalid_argument("mirror_model must be 'paraboloid', 'first_order' or 'mei', not '" + name + "'");
+	if (name == "ocamcalib") return MirrorModel::OCamCalib;
+	throw std::invalid_argument("mirror_model must be 'paraboloid', 'first_order', 'mei' or 'ocamcalib', not '" + name +
+								"'");
 }
 
 const OptionsTable<CameraParams>& CameraParams::table()
@@ -51,7 +54,7 @@ const OptionsTable<CameraParams>& CameraParams::table()
 		.add("h", "m", "height of the effective viewpoint above the floor", [](P& p) -> auto& { return p.h; })
 		.addEnum("mirror_model",
 				 "paraboloid: theta = 2 atan(rho/R); first_order: theta = rho/alpha; mei: Mei's unified model "
-				 "(xi, gamma, k1, k2), as cv::omnidir calibrates it",
+				 "(xi, gamma, k1, k2), as cv::omnidir calibrates it; ocamcalib: Scaramuzza's polynomial (ocam_poly)",
 				 [](P& p) -> auto& { return p.mirror_model; }, mirrorModelFromString)
 		.add("alpha", "px/rad", "alpha of the first-order model (R/2 matches the paraboloid near the centre)",
 			 [](P& p) -> auto& { return p.alpha; })
@@ -61,6 +64,9 @@ const OptionsTable<CameraParams>& CameraParams::table()
 			 [](P& p) -> auto& { return p.gamma; })
 		.add("k1", "-", "first radial distortion coefficient of the mei model", [](P& p) -> auto& { return p.k1; })
 		.add("k2", "-", "second radial distortion coefficient of the mei model", [](P& p) -> auto& { return p.k2; })
+		.add("ocam_poly", "-", "OCamCalib's direct polynomial a0 a1 a2 ..., blank-separated (the ocamcalib model; "
+							   "omnirange-calibrate --ocamcalib reads it from calib_results.txt)",
+			 [](P& p) -> auto& { return p.ocam_poly; })
 		.addAngle("forward_azimuth",
 				  "on-screen angle, counter-clockwise from the image's +u axis as the picture is viewed, where "
 				  "the sensor's forward axis appears (180: the image's left)",
@@ -84,6 +90,24 @@ void CameraParams::validate() const
 	require(xi > 0 && xi <= 10, "xi must be within (0, 10]");
 	require(gamma > 0, "gamma must be > 0 px");
 	require(std::isfinite(k1) && std::isfinite(k2), "k1 and k2 must be finite");
+	if (mirror_model == MirrorModel::OCamCalib)
+	{
+		require(ocam_poly.size() >= 2 && ocam_poly.size() <= 20, "ocam_poly needs 2 to 20 coefficients a0 a1 ...");
+		require(ocam_poly[0] < 0, "ocam_poly's a0 must be < 0 (OCamCalib's image centre looks along -z)");
+		// theta must grow with rho out to the image's diagonal (or to 170 degrees).
+		const double limit = std::hypot(image_width, image_height);
+		double last = 0;
+		for (double rho = 1; rho <= limit; rho += 1)
+		{
+			double z = 0;
+			for (auto a = ocam_poly.rbegin(); a != ocam_poly.rend(); ++a) z = z * rho + *a;
+			const double theta = std::atan2(rho, -z);
+			require(theta > last, "ocam_poly's incidence angle must grow with the image radius (it turns back at " +
+									  std::to_string(static_cast<int>(rho)) + " px)");
+			if (theta > 2.967) break;  // 170 degrees: far past anything on the floor
+			last = theta;
+		}
+	}
 	if (mirror_model == MirrorModel::Mei)
 	{
 		// The image radius must grow with theta up to the horizon, or a radius
@@ -106,6 +130,14 @@ void CameraParams::validate() const
 OmniCameraModel::OmniCameraModel(const CameraParams& p) : p_(p)
 {
 	p_.validate();
+	rho_limit_ = std::hypot(p_.image_width, p_.image_height);
+}
+
+double OmniCameraModel::ocamTheta(double rho) const
+{
+	double z = 0;
+	for (auto a = p_.ocam_poly.rbegin(); a != p_.ocam_poly.rend(); ++a) z = z * rho + *a;  // Horner
+	return std::atan2(rho, -z);
 }
 
 double OmniCameraModel::thetaFromRho(double rho) const
@@ -114,6 +146,7 @@ double OmniCameraModel::thetaFromRho(double rho) const
 	{
 		case MirrorModel::Paraboloid: return 2.0 * std::atan(rho / p_.R);
 		case MirrorModel::FirstOrder: return rho / p_.alpha;
+		case MirrorModel::OCamCalib: return ocamTheta(rho);
 		case MirrorModel::Mei: break;
 	}
 	// Undo the distortion (Newton on r (1 + k1 r^2 + k2 r^4) = rd), then lift
@@ -140,6 +173,18 @@ double OmniCameraModel::rhoFromTheta(double theta) const
 	{
 		case MirrorModel::Paraboloid: return p_.R * std::tan(0.5 * theta);
 		case MirrorModel::FirstOrder: return theta * p_.alpha;
+		case MirrorModel::OCamCalib:
+		{
+			// theta(rho) grows (validate() checks it): bisection, to 1e-9 px.
+			double lo = 0, hi = rho_limit_;
+			if (ocamTheta(hi) < theta) return std::numeric_limits<double>::infinity();
+			while (hi - lo > 1e-9)
+			{
+				const double mid = 0.5 * (lo + hi);
+				(ocamTheta(mid) < theta ? lo : hi) = mid;
+			}
+			return 0.5 * (lo + hi);
+		}
 		case MirrorModel::Mei: break;
 	}
 	const double r = std::sin(theta) / (std::cos(theta) + p_.xi);  // the sphere's point, projected

@@ -32,6 +32,22 @@ double parseDouble(const std::string& text)
 	return v;
 }
 
+std::vector<double> parseDoubles(const std::string& text)
+{
+	std::vector<double> v;
+	std::istringstream in(text);
+	std::string word;
+	while (in >> word) v.push_back(parseDouble(word));
+	return v;
+}
+
+std::string formatDoubles(const std::vector<double>& v)
+{
+	std::string s;
+	for (const double x : v) s += (s.empty() ? "" : " ") + formatDouble(x);
+	return s;
+}
+
 int parseInt(const std::string& text)
 {
 	const std::string t = trimmed(text);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace omnirange
@@ -54,6 +55,55 @@ double fitR(const std::vector<RhoRangePair>& pairs, double h)
 	return std::exp(0.5 * (a + b));
 }
 
+HeightFit fitHeight(const OmniCameraModel& camera, const std::vector<RhoRangePair>& pairs)
+{
+	struct Sample
+	{
+		double t, d;  // tan(theta), range
+		int frame;
+	};
+	std::vector<Sample> all;
+	for (const auto& p : pairs)
+	{
+		const double theta = camera.thetaFromRho(p.rho);
+		if (p.rho > 0 && p.range > 0 && std::isfinite(p.range) && theta > 0 && theta < 85 * M_PI / 180)
+			all.push_back({std::tan(theta), p.range, p.frame});
+	}
+	const auto fit = [](const std::vector<Sample>& v) {
+		double s_td = 0, s_tt = 0;
+		for (const auto& x : v) s_td += x.t * x.d, s_tt += x.t * x.t;
+		return s_td / s_tt;
+	};
+	if (all.size() < 2) throw std::invalid_argument("fitHeight: fewer than 2 pairs below 85 degrees");
+	// Fit, drop the pairs over 3x the median residual (misclassified rays), fit again.
+	const double first = fit(all);
+	std::vector<double> residual;
+	for (const auto& x : all) residual.push_back(std::abs(x.d - first * x.t));
+	std::vector<double> sorted = residual;
+	std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+	const double cut = 3.0 * std::max(1e-9, sorted[sorted.size() / 2]);
+	std::vector<Sample> kept;
+	for (std::size_t i = 0; i < all.size(); ++i)
+		if (residual[i] <= cut) kept.push_back(all[i]);
+	if (kept.size() < 2) kept = all;
+	HeightFit r{fit(kept), 0, kept.size(), 0};
+	// Its standard error from the images' own fits.
+	std::map<int, std::vector<Sample>> by_frame;
+	for (const auto& x : kept) by_frame[x.frame].push_back(x);
+	std::vector<double> hs;
+	for (const auto& [frame, v] : by_frame)
+		if (v.size() >= 10) hs.push_back(fit(v));
+	r.frames = static_cast<int>(hs.size());
+	if (hs.size() >= 2)
+	{
+		double mean = 0, var = 0;
+		for (const double h : hs) mean += h / hs.size();
+		for (const double h : hs) var += (h - mean) * (h - mean) / (hs.size() - 1);
+		r.std_error = std::sqrt(var / hs.size());
+	}
+	return r;
+}
+
 double rmsRangeError(const OmniCameraModel& camera, const std::vector<RhoRangePair>& pairs)
 {
 	if (pairs.empty()) return 0;
@@ -92,7 +142,7 @@ std::vector<RhoRangePair> collectPairs(const Rangefinder& rf, const MirrorCalibr
 			// Hits only; a laser range beyond the max range cannot have one.
 			for (const RangePair& p : pairScans(*laser, *omni, 1e9))
 				if (p.status != PairStatus::LaserBeyondMaxRange && scan.rays[p.omni_ray].status == RayStatus::Hit)
-					pairs.push_back({scan.rays[p.omni_ray].hit_rho, p.laser});
+					pairs.push_back({scan.rays[p.omni_ray].hit_rho, p.laser, k});
 		});
 	loop.run(progress);
 	if (k == 0) throw std::runtime_error(loop.describeNoPair());
@@ -136,6 +186,10 @@ MirrorCalibration calibrateMirror(const Rangefinder& rf, const MirrorCalibration
 	c.rms_R = rmsRangeError(OmniCameraModel(para), kept);
 	c.rms_alpha = rmsRangeError(OmniCameraModel(first), kept);
 	c.rms_given = rmsRangeError(rf.camera(), kept);
+	c.height = fitHeight(rf.camera(), pairs);  // its own outlier cut: dropWorstPairs assumes a paraboloid
+	CameraParams with_h = given;
+	with_h.h = c.height.h;
+	c.rms_height = rmsRangeError(OmniCameraModel(with_h), kept);
 	std::vector<double> px;
 	for (const auto& p : kept) px.push_back(rf.camera().rhoFromDistance(p.range) - p.rho);
 	c.boundary_px = median(px);

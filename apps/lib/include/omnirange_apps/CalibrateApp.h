@@ -5,6 +5,7 @@
 // mirror disc's centre and radius from ordinary images (--rim).
 
 #include <omnirange/train/CheckerboardCalibration.h>
+#include <omnirange/train/OCamCalibFile.h>
 #include <omnirange/train/MirrorCalibration.h>
 #include <omnirange/train/MirrorRim.h>
 #include <omnirange/train/OrientationFit.h>
@@ -24,6 +25,7 @@ class CalibrateApp : public mrpt::system::COutputLogger
 		CheckerboardOptions board;
 		std::string intrinsics_output;  ///< OpenCV YAML; empty: print only
 		std::vector<std::string> rim_images;  ///< images: find the mirror's disc instead
+		std::string ocamcalib;  ///< OCamCalib's calib_results.txt: take the camera from it instead
 		std::string save_to;  ///< ini to write what was found into (its [section]); empty: print only
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
@@ -39,6 +41,9 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	CheckerboardCalibration runIntrinsics();
 	/** With --rim images: finds and prints the mirror disc's centre and radius. */
 	MirrorRim runRim();
+	/** With --ocamcalib: reads calib_results.txt, prints what the rangefinder
+	 * takes from it and what it leaves out, and saves it if asked. */
+	CameraParams runOCamCalib();
 	/** After run(): the camera's orientation fitted against the laser. */
 	const OrientationFit& orientation() const { return orientation_; }
 

@@ -20,11 +20,15 @@ enum class MirrorModel
 	/** Mei's unified model (what cv::omnidir::calibrate fits), radial part:
 	 * rho = gamma * r (1 + k1 r^2 + k2 r^4), r = sin(theta) / (cos(theta) + xi).
 	 * xi = 1 is a paraboloid (gamma = R), 0 < xi < 1 a hyperboloid. */
-	Mei
+	Mei,
+	/** Scaramuzza's OCamCalib polynomial (calib_results.txt): the ray seen
+	 * at image radius rho is (rho, z) with z = a0 + a1 rho + a2 rho^2 + ...,
+	 * the image centre's ray along -z: theta = atan2(rho, -z). */
+	OCamCalib
 };
 
 std::string toString(MirrorModel m);
-/** "paraboloid", "first_order" or "mei"; throws std::invalid_argument otherwise. */
+/** "paraboloid", "first_order", "mei" or "ocamcalib"; throws std::invalid_argument otherwise. */
 MirrorModel mirrorModelFromString(const std::string& name);
 
 /** Parameters of the omnicam. The ini keys equal the member names (angles:
@@ -49,6 +53,10 @@ struct CameraParams
 	double xi{1.0};
 	double gamma{192.0};
 	double k1{0.0}, k2{0.0};
+	/** OCamCalib's direct polynomial a0 a1 a2 ... [px^(1-i)], used only when
+	 * mirror_model = ocamcalib (a0 < 0). For a paraboloid it is exactly
+	 * -R/2, 0, 1/(2R). */
+	std::vector<double> ocam_poly{};
 	/** [rad] on-screen angle (counter-clockwise from the image's +u axis, as
 	 * the picture is viewed) where the sensor's forward axis appears (pi:
 	 * forward is at the image's left). */
@@ -115,7 +123,10 @@ class OmniCameraModel
 	static constexpr double kHalfPi = 1.57079632679489661923;
 
    private:
+	double ocamTheta(double rho) const;
+
 	CameraParams p_;
+	double rho_limit_{0};  ///< [px] the image's diagonal: no radius is sought beyond it
 };
 
 }  // namespace omnirange

@@ -38,7 +38,10 @@ double parseDouble(const std::string& text);  ///< finite; no unit suffix, no co
 int parseInt(const std::string& text);  ///< a whole number that fits an int
 std::uint32_t parseUint32(const std::string& text);  ///< a whole number in [0, 2^32)
 bool parseBool(const std::string& text);  ///< true/false, yes/no, 1/0
+/** Numbers separated by blanks, each as parseDouble() takes it; "" is none. */
+std::vector<double> parseDoubles(const std::string& text);
 std::string formatDouble(double v);
+std::string formatDoubles(const std::vector<double>& v);  ///< blank-separated
 /** `s` without leading and trailing blanks (spaces, tabs, CR, LF). */
 std::string trimmed(const std::string& s);
 
@@ -72,7 +75,7 @@ class OptionsTable
 		std::function<std::string(const S&)> print;
 	};
 
-	/** A field of type double, int, bool or std::string, or an enum with
+	/** A field of type double, int, bool, std::string or std::vector<double>, or an enum with
 	 * toString() and `from_string`. `get` maps the struct to the member. */
 	template <class Get>
 	OptionsTable& add(const std::string& key, const std::string& unit, const std::string& doc, Get get)
@@ -145,6 +148,7 @@ class OptionsTable
 		else if constexpr (std::is_same_v<T, int>) return parseInt(t);
 		else if constexpr (std::is_same_v<T, bool>) return parseBool(t);
 		else if constexpr (std::is_same_v<T, std::uint32_t>) return parseUint32(t);
+		else if constexpr (std::is_same_v<T, std::vector<double>>) return parseDoubles(t);
 		else return T(t);
 	}
 	template <class T>
@@ -153,6 +157,7 @@ class OptionsTable
 		if constexpr (std::is_same_v<T, double>) return formatDouble(v);
 		else if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
 		else if constexpr (std::is_integral_v<T>) return std::to_string(v);
+		else if constexpr (std::is_same_v<T, std::vector<double>>) return formatDoubles(v);
 		else return std::string(v);
 	}
 

@@ -2,7 +2,8 @@
 // Calibrating the mirror against a laser (paper §IV-D): for every laser ray,
 // the image radius where the omnicam's floor ends at the same bearing,
 // paired with the laser's range; R (paraboloid) and alpha (first-order
-// model) fitted to those pairs, and where the boundary sits.
+// model) fitted to those pairs, the viewpoint's height h with the given
+// camera (any model), and where the boundary sits.
 
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/io/ObservationPairer.h>
@@ -21,6 +22,7 @@ struct RhoRangePair
 {
 	double rho;  ///< [px]
 	double range;  ///< [m]
+	int frame{0};  ///< which image it came from
 };
 
 /** Least-squares fit of the first-order constant alpha (theta ~= rho/alpha)
@@ -33,6 +35,22 @@ double fitAlpha(const std::vector<RhoRangePair>& pairs, double h);
  * the same pairs, minimising the squared error in theta (a 1-D search over
  * R in [10, 10000] px). Throws on no usable pair. */
 double fitR(const std::vector<RhoRangePair>& pairs, double h);
+
+/** The viewpoint's height h [m] that best explains the pairs with `camera`'s
+ * theta(rho): least squares on d = h tan(theta) (pairs below 85 degrees),
+ * refitted once without the pairs over 3x the median residual. */
+struct HeightFit
+{
+	double h{0};
+	/** [m] the standard error of h over the images: the spread of each
+	 * image's own fit over the square root of their number (neighbouring
+	 * rays' errors are not independent; images are nearly so). */
+	double std_error{0};
+	std::size_t used{0};
+	int frames{0};  ///< images with at least 10 of the kept pairs
+};
+/** Throws std::invalid_argument on fewer than 2 usable pairs. */
+HeightFit fitHeight(const OmniCameraModel& camera, const std::vector<RhoRangePair>& pairs);
 
 /** RMS of the difference [m] between the pairs' ranges and the floor
  * distances `camera` gives their rho (pairs beyond the horizon count as
@@ -55,6 +73,8 @@ struct MirrorCalibration
 	double R{0}, rms_R{0};  ///< [px] the paraboloid's fitted R, its RMS range error [m]
 	double rms_given{0};  ///< [m] RMS range error of the given camera
 	double alpha{0}, rms_alpha{0};  ///< [px/rad] the first-order fit, its RMS range error [m]
+	HeightFit height;  ///< h fitted with the given camera's theta(rho)
+	double rms_height{0};  ///< [m] RMS range error of the given camera with that h
 	/** [px] median of how far (in image radius) the laser's boundary lies
 	 * beyond where the omnicam put it, with the given camera. */
 	double boundary_px{0};
