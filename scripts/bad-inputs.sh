@@ -175,6 +175,15 @@ printf '#direct\n6 -96 0 0.0026\n#inverse\n2 1 1\n#center\n380 515\n#affine\n1 0
 printf '#direct\n3 96 0 0.0026\n#inverse\n2 1 1\n#center\n380 515\n#affine\n1 0 0\n#size\n768 1024\n' > upward_calib.txt
 run_case "calibrate: OCamCalib file with a wrong count" error cal.ini -- "$apps/omnirange-calibrate" -q --ocamcalib wrong_count_calib.txt --save-to cal.ini
 run_case "calibrate: OCamCalib centre looking up (a0 > 0)" error cal.ini -- "$apps/omnirange-calibrate" -q --ocamcalib upward_calib.txt --save-to cal.ini
+mkdir -p imp && cp "$(ls s_Images/* | sort | head -1)" imp/100.0.jpg && cp "$(ls s_Images/* | sort | sed -n 2p)" imp/100.4.jpg
+printf '100.0, 1, 2, 3\n100.4, 1, 2, 3\n' > imp_laser.csv
+printf '100.4, 1, 2, 3\n100.0, 1, 2, 3\n' > imp_unsorted.csv
+printf '100.0, 1, 2, 3\n100.4, 1, 2\n' > imp_short.csv
+run_case "import: laser rows out of time order" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_unsorted.csv -o imp.rawlog
+run_case "import: a laser row with a range missing" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_short.csv -o imp.rawlog
+mkdir -p imp_bad && printf 'not an image' > imp_bad/100.0.jpg
+run_case "import: an image that does not decode" error imp.rawlog -- "$apps/omnirange-import" -q --images imp_bad --laser imp_laser.csv -o imp.rawlog
+run_case "import: output is the laser log" error imp_laser.csv.none -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv -o imp_laser.csv
 mkdir -p exp && cp -r "$src/ini" exp/ini && ln -sf "$src/worlds" exp/worlds
 awk '{print} /^\[experiment\]/{print "unknown_key = 1"}' "$ini" > exp/ini/exp_bad.ini
 run_case "experiment: unknown key" error report -- "$apps/omnirange-experiment" -q exp/ini/exp_bad.ini -o report

@@ -68,15 +68,29 @@ void RawlogWriter::write(const mrpt::serialization::CSerializable& obj)
 	++count_;
 }
 
+void RawlogWriter::startImages()
+{
+	if (has_images_) return;
+	fs::remove_all(tmp_images_);
+	fs::create_directories(tmp_images_);
+	has_images_ = true;
+}
+
+mrpt::img::CImage RawlogWriter::externalImageCopy(const std::string& source, const std::string& name)
+{
+	startImages();
+	std::error_code ec;
+	fs::copy_file(source, fs::path(tmp_images_) / name, fs::copy_options::overwrite_existing, ec);
+	if (ec) throw std::runtime_error("cannot copy image '" + source + "': " + ec.message());
+	mrpt::img::CImage img;
+	img.setExternalStorage(name);
+	return img;
+}
+
 mrpt::img::CImage RawlogWriter::externalImage(
 	const cv::Mat& bgr, const std::string& name, int jpeg_quality)
 {
-	if (!has_images_)
-	{
-		fs::remove_all(tmp_images_);
-		fs::create_directories(tmp_images_);
-		has_images_ = true;
-	}
+	startImages();
 	const std::string file = (fs::path(tmp_images_) / name).string();
 	if (!cv::imwrite(file, bgr, {cv::IMWRITE_JPEG_QUALITY, jpeg_quality}))
 		throw std::runtime_error("cannot write image '" + file + "'");

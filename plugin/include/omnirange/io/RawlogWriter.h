@@ -33,6 +33,10 @@ class RawlogWriter
 	 * returns a CImage stored externally under that name. */
 	mrpt::img::CImage externalImage(
 		const cv::Mat& bgr, const std::string& file_name, int jpeg_quality = 90);
+	/** Copies the image file `source` byte for byte (a camera's JPEG stays
+	 * the camera's) as `file_name` into the images folder and returns a
+	 * CImage stored externally under that name. */
+	mrpt::img::CImage externalImageCopy(const std::string& source, const std::string& file_name);
 	/** At commit(), make NAME_Images a symbolic link to an existing images
 	 * folder (a rawlog that adds observations to another keeps its images). */
 	void linkImagesTo(const std::string& existing_dir) { link_to_ = existing_dir; }
@@ -43,6 +47,8 @@ class RawlogWriter
 	std::size_t objectsWritten() const { return count_; }
 
    private:
+	void startImages();
+
 	std::string path_, tmp_path_, images_, tmp_images_, link_to_;
 	std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
 	bool has_images_{false}, committed_{false};

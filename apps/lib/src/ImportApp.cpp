@@ -1,0 +1,73 @@
+#include "omnirange_apps/ImportApp.h"
+
+#include "omnirange_apps/CommandLine.h"
+
+#include <omnirange/core/Rangefinder.h>
+#include <omnirange/io/OptionsTable.h>
+
+#include <cmath>
+
+namespace omnirange::app
+{
+mrpt::poses::CPose3D poseFromText(const std::string& text)
+{
+	const std::vector<double> v = parseDoubles(text);
+	if (v.size() != 4 && v.size() != 6)
+		throw std::invalid_argument("a pose is 'x y z yaw_deg' or 'x y z yaw_deg pitch_deg roll_deg', not '" + text + "'");
+	const double d = M_PI / 180;
+	return mrpt::poses::CPose3D(v[0], v[1], v[2], v[3] * d, v.size() == 6 ? v[4] * d : 0, v.size() == 6 ? v[5] * d : 0);
+}
+
+ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
+{
+	Options o;
+	auto& i = o.import;
+	TCLAP::CmdLine cmd("omnirange-import: your images, laser log and odometry -> an MRPT rawlog (docs/users.md)", ' ', "0.1");
+	TCLAP::ValueArg<std::string> images("", "images", "folder of omnicam images named by their time in seconds (TIME.jpg)", false, "", "DIR", cmd);
+	TCLAP::ValueArg<std::string> list("", "image-list", "CSV of TIME, FILE rows instead of timed names (FILE relative to the CSV)", false, "", "CSV", cmd);
+	TCLAP::ValueArg<std::string> laser("", "laser", "laser log: CSV of TIME, r_0, ..., r_{n-1} rows [s, m]", false, "", "CSV", cmd);
+	TCLAP::ValueArg<std::string> odometry("", "odometry", "odometry: CSV of TIME, x, y, phi rows [s, m, m, rad]", false, "", "CSV", cmd);
+	TCLAP::ValueArg<std::string> out("o", "output", "rawlog to write (images go to NAME_Images beside it)", true, "", "RAWLOG", cmd);
+	TCLAP::ValueArg<std::string> ini("c", "config", "ini whose [rangefinder] pose_* keys give the omnicam's pose on the robot", false, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
+	TCLAP::ValueArg<std::string> omni_pose("", "omni-pose", "the omnicam's pose on the robot, 'x y z yaw_deg' [m, deg] (instead of -c)", false, "", "POSE", cmd);
+	TCLAP::ValueArg<std::string> laser_pose("", "laser-pose", "the laser's pose on the robot, 'x y z yaw_deg' [m, deg]", false, "0 0 0 0", "POSE", cmd);
+	TCLAP::ValueArg<double> fov("", "laser-fov-deg", "the laser's field of view, first ray to last [deg]", false, 180, "DEG", cmd);
+	TCLAP::ValueArg<double> max_range("", "laser-max-range", "ranges <= 0 or >= this are no return [m]", false, i.laser_max_range, "M", cmd);
+	TCLAP::ValueArg<std::string> omni_label("", "omni-label", "label of the images", false, i.omni_label, "LABEL", cmd);
+	TCLAP::ValueArg<std::string> laser_label("", "laser-label", "label of the laser scans", false, i.laser_label, "LABEL", cmd);
+	VerbosityArgs verbosity(cmd);
+	parseArgs(cmd, argc, argv);
+	i.images_dir = images.getValue(), i.image_list = list.getValue(), i.laser_csv = laser.getValue();
+	i.odometry_csv = odometry.getValue(), i.output = out.getValue();
+	i.omni_label = omni_label.getValue(), i.laser_label = laser_label.getValue();
+	i.laser_pose = poseFromText(laser_pose.getValue());
+	i.laser_fov = fov.getValue() * M_PI / 180, i.laser_max_range = max_range.getValue();
+	o.ini = ini.getValue(), o.section = section.getValue();
+	if (!omni_pose.getValue().empty())
+	{
+		if (!o.ini.empty()) throw std::invalid_argument("give the omnicam's pose by -c INI or by --omni-pose, not both");
+		i.omni_pose = poseFromText(omni_pose.getValue());
+	}
+	if (i.images_dir.empty() && i.image_list.empty())
+		throw std::invalid_argument("the images are needed: --images DIR or --image-list CSV");
+	o.verbosity = verbosity.level();
+	return o;
+}
+
+ImportApp::ImportApp(Options o) : mrpt::system::COutputLogger("omnirange-import"), o_(std::move(o))
+{
+	setMinLoggingLevel(o_.verbosity);
+}
+
+LogImportSummary ImportApp::run()
+{
+	if (!o_.ini.empty()) o_.import.omni_pose = loadRangefinderIni(o_.ini, o_.section, *this).sensor_pose;
+	const LogImportSummary s = importLogs(o_.import);
+	MRPT_LOG_INFO_FMT("%zu images (%dx%d), %zu laser scans (%d rays), %zu odometry readings over %.1f s -> %s",
+					  s.images, s.image_width, s.image_height, s.scans, s.rays, s.odometry, s.last_time - s.first_time,
+					  o_.import.output.c_str());
+	return s;
+}
+
+}  // namespace omnirange::app

@@ -1,0 +1,252 @@
+#include "omnirange/io/LogImport.h"
+
+#include "omnirange/io/AtomicWrite.h"
+#include "omnirange/io/OptionsTable.h"
+#include "omnirange/io/RawlogWriter.h"
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationImage.h>
+#include <mrpt/obs/CObservationOdometry.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace omnirange
+{
+namespace
+{
+/** The comma-separated fields of each row of a CSV, with its line number. */
+struct CsvRow
+{
+	int line{0};
+	std::vector<std::string> fields;
+};
+
+std::vector<CsvRow> readCsv(const std::string& path, const std::string& what)
+{
+	std::ifstream in(path);
+	if (!in) throw std::runtime_error("cannot read the " + what + " '" + path + "'");
+	std::vector<CsvRow> rows;
+	std::string line;
+	for (int n = 1; std::getline(in, line); ++n)
+	{
+		const std::string t = trimmed(line);
+		if (t.empty() || t[0] == '#') continue;
+		CsvRow row{n, {}};
+		std::size_t start = 0;
+		for (std::size_t comma; (comma = t.find(',', start)) != std::string::npos; start = comma + 1)
+			row.fields.push_back(trimmed(t.substr(start, comma - start)));
+		row.fields.push_back(trimmed(t.substr(start)));
+		rows.push_back(std::move(row));
+	}
+	if (rows.empty()) throw std::runtime_error("the " + what + " '" + path + "' has no rows");
+	return rows;
+}
+
+std::string at(const std::string& path, int line) { return path + ":" + std::to_string(line) + ": "; }
+
+double number(const std::string& path, int line, const std::string& field, const std::string& name)
+{
+	try
+	{
+		return parseDouble(field);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(at(path, line) + name + " '" + field + "': " + e.what());
+	}
+}
+
+/** Times must increase strictly down a file. */
+void requireAfter(double previous, double time, const std::string& where)
+{
+	if (!(time > previous))
+		throw std::runtime_error(where + "time " + formatDouble(time) + " is not after the one before it (" +
+								 formatDouble(previous) + "): rows must be in time order");
+}
+
+bool isImageFile(const fs::path& p)
+{
+	static const std::set<std::string> kinds{".jpg", ".jpeg", ".png", ".pgm", ".ppm", ".bmp"};
+	std::string ext = p.extension().string();
+	std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+	return kinds.count(ext) > 0;
+}
+}  // namespace
+
+std::vector<TimedImage> listImages(const std::string& dir, const std::string& list_csv)
+{
+	std::vector<TimedImage> images;
+	if (!list_csv.empty())
+	{
+		const fs::path base = fs::path(list_csv).parent_path();
+		double previous = -INFINITY;
+		for (const CsvRow& r : readCsv(list_csv, "image list"))
+		{
+			if (r.fields.size() != 2) throw std::runtime_error(at(list_csv, r.line) + "expected TIME, FILE");
+			const double t = number(list_csv, r.line, r.fields[0], "time");
+			requireAfter(previous, t, at(list_csv, r.line));
+			previous = t;
+			const fs::path file = base / r.fields[1];
+			if (!fs::is_regular_file(file))
+				throw std::runtime_error(at(list_csv, r.line) + "no image file '" + file.string() + "'");
+			images.push_back({t, file.string()});
+		}
+		return images;
+	}
+	if (!fs::is_directory(dir)) throw std::runtime_error("no image folder '" + dir + "'");
+	for (const auto& entry : fs::directory_iterator(dir))
+	{
+		if (!entry.is_regular_file() || !isImageFile(entry.path())) continue;
+		const std::string stem = entry.path().stem().string();
+		try
+		{
+			images.push_back({parseDouble(stem), entry.path().string()});
+		}
+		catch (const std::invalid_argument&)
+		{
+			throw std::runtime_error("'" + entry.path().string() +
+									 "': the file name is not a time in seconds (name images TIME.jpg, or give an "
+									 "image list)");
+		}
+	}
+	if (images.empty()) throw std::runtime_error("no image (jpg, png, pgm, ppm, bmp) in '" + dir + "'");
+	std::sort(images.begin(), images.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
+	for (std::size_t i = 1; i < images.size(); ++i)
+		if (images[i].time == images[i - 1].time)
+			throw std::runtime_error("'" + images[i - 1].file + "' and '" + images[i].file + "' have the same time");
+	return images;
+}
+
+std::vector<LaserRow> readLaserCsv(const std::string& path)
+{
+	std::vector<LaserRow> rows;
+	double previous = -INFINITY;
+	for (const CsvRow& r : readCsv(path, "laser log"))
+	{
+		if (r.fields.size() < 3) throw std::runtime_error(at(path, r.line) + "expected TIME, then two or more ranges");
+		LaserRow row;
+		row.time = number(path, r.line, r.fields[0], "time");
+		requireAfter(previous, row.time, at(path, r.line));
+		previous = row.time;
+		for (std::size_t i = 1; i < r.fields.size(); ++i)
+			row.ranges.push_back(number(path, r.line, r.fields[i], "range " + std::to_string(i - 1)));
+		if (!rows.empty() && row.ranges.size() != rows.front().ranges.size())
+			throw std::runtime_error(at(path, r.line) + std::to_string(row.ranges.size()) + " ranges, but the first row has " +
+									 std::to_string(rows.front().ranges.size()));
+		rows.push_back(std::move(row));
+	}
+	return rows;
+}
+
+std::vector<OdometryRow> readOdometryCsv(const std::string& path)
+{
+	std::vector<OdometryRow> rows;
+	double previous = -INFINITY;
+	for (const CsvRow& r : readCsv(path, "odometry log"))
+	{
+		if (r.fields.size() != 4) throw std::runtime_error(at(path, r.line) + "expected TIME, x, y, phi");
+		OdometryRow row;
+		row.time = number(path, r.line, r.fields[0], "time");
+		requireAfter(previous, row.time, at(path, r.line));
+		previous = row.time;
+		row.x = number(path, r.line, r.fields[1], "x");
+		row.y = number(path, r.line, r.fields[2], "y");
+		row.phi = number(path, r.line, r.fields[3], "phi");
+		rows.push_back(row);
+	}
+	return rows;
+}
+
+LogImportSummary importLogs(const LogImportOptions& o)
+{
+	require(o.laser_fov > 0 && o.laser_fov <= 2 * M_PI, "the laser's field of view must be within (0, 360] degrees");
+	require(o.laser_max_range > 0, "the laser's max range must be > 0 m");
+	requireOutputsAreNotInputs({o.output}, {o.image_list, o.laser_csv, o.odometry_csv});
+	// 1. Read and check everything before writing anything.
+	const std::vector<TimedImage> images = listImages(o.images_dir, o.image_list);
+	const std::vector<LaserRow> scans = o.laser_csv.empty() ? std::vector<LaserRow>{} : readLaserCsv(o.laser_csv);
+	const std::vector<OdometryRow> odometry =
+		o.odometry_csv.empty() ? std::vector<OdometryRow>{} : readOdometryCsv(o.odometry_csv);
+	LogImportSummary s;
+	for (const TimedImage& im : images)
+	{
+		const cv::Mat m = cv::imread(im.file, cv::IMREAD_COLOR);
+		if (m.empty()) throw std::runtime_error("'" + im.file + "' cannot be read as an image");
+		if (s.image_width == 0) s.image_width = m.cols, s.image_height = m.rows;
+		if (m.cols != s.image_width || m.rows != s.image_height)
+			throw std::runtime_error("'" + im.file + "' is " + std::to_string(m.cols) + "x" + std::to_string(m.rows) +
+									 ", the first image " + std::to_string(s.image_width) + "x" +
+									 std::to_string(s.image_height) + ": one camera, one size");
+	}
+	s.rays = scans.empty() ? 0 : static_cast<int>(scans.front().ranges.size());
+
+	// 2. Write the three streams merged in time order (at one time: image, scan, odometry).
+	RawlogWriter out(o.output);
+	std::size_t i = 0, j = 0, k = 0;
+	const auto time = [](auto& v, std::size_t n) { return n < v.size() ? v[n].time : INFINITY; };
+	while (i < images.size() || j < scans.size() || k < odometry.size())
+	{
+		const double ti = time(images, i), tj = time(scans, j), tk = time(odometry, k);
+		if (ti <= tj && ti <= tk)
+		{
+			auto obs = mrpt::obs::CObservationImage::Create();
+			obs->sensorLabel = o.omni_label;
+			obs->timestamp = mrpt::Clock::fromDouble(ti);
+			obs->cameraPose = o.omni_pose;
+			obs->cameraParams.ncols = static_cast<uint32_t>(s.image_width);
+			obs->cameraParams.nrows = static_cast<uint32_t>(s.image_height);
+			char name[64];
+			std::snprintf(name, sizeof name, "%s_%06zu", o.omni_label.c_str(), i);
+			obs->image = out.externalImageCopy(images[i].file, name + fs::path(images[i].file).extension().string());
+			out.write(*obs);
+			++i;
+		}
+		else if (tj <= tk)
+		{
+			auto obs = mrpt::obs::CObservation2DRangeScan::Create();
+			obs->sensorLabel = o.laser_label;
+			obs->timestamp = mrpt::Clock::fromDouble(tj);
+			obs->sensorPose = o.laser_pose;
+			obs->aperture = static_cast<float>(o.laser_fov);
+			obs->rightToLeft = true;
+			obs->maxRange = static_cast<float>(o.laser_max_range);
+			obs->stdError = static_cast<float>(o.laser_std_error);
+			obs->resizeScan(scans[j].ranges.size());
+			for (std::size_t r = 0; r < scans[j].ranges.size(); ++r)
+			{
+				const double range = scans[j].ranges[r];
+				const bool valid = range > 0 && range < o.laser_max_range;
+				obs->setScanRange(r, static_cast<float>(valid ? range : o.laser_max_range));
+				obs->setScanRangeValidity(r, valid);
+			}
+			out.write(*obs);
+			++j;
+		}
+		else
+		{
+			auto obs = mrpt::obs::CObservationOdometry::Create();
+			obs->sensorLabel = o.odometry_label;
+			obs->timestamp = mrpt::Clock::fromDouble(tk);
+			obs->odometry = mrpt::poses::CPose2D(odometry[k].x, odometry[k].y, odometry[k].phi);
+			out.write(*obs);
+			++k;
+		}
+	}
+	out.commit();
+	s.images = images.size(), s.scans = scans.size(), s.odometry = odometry.size();
+	s.first_time = std::min({time(images, 0), time(scans, 0), time(odometry, 0)});
+	s.last_time = std::max({images.back().time, scans.empty() ? -INFINITY : scans.back().time,
+							odometry.empty() ? -INFINITY : odometry.back().time});
+	return s;
+}
+
+}  // namespace omnirange

@@ -1,0 +1,194 @@
+// omnirange-import: the factory sample taken apart into what a user has (a
+// folder of timed JPEGs, a laser CSV, an odometry CSV) and imported again.
+// The imported rawlog must train, scan and score exactly as the original.
+#include <omnirange_apps/AccuracyApp.h>
+#include <omnirange_apps/ImportApp.h>
+#include <omnirange_apps/ScanApp.h>
+#include <omnirange_apps/TrainApp.h>
+#include <omnirange_eval/ExternalProgram.h>
+
+#include <omnirange/io/RawlogProcessor.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationImage.h>
+#include <mrpt/obs/CObservationOdometry.h>
+
+#include "../common/FactorySample.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace omnirange;
+using namespace omnirange::app;
+namespace fs = std::filesystem;
+using mrpt::obs::CObservation2DRangeScan;
+using mrpt::obs::CObservationImage;
+using mrpt::obs::CObservationOdometry;
+
+namespace
+{
+struct UserLogs
+{
+	std::string images, laser, odometry;
+	mrpt::poses::CPose3D omni_pose, laser_pose;
+};
+
+std::string timeText(mrpt::Clock::time_point t)
+{
+	char s[64];
+	std::snprintf(s, sizeof s, "%.6f", mrpt::Clock::toDouble(t));
+	return s;
+}
+
+/** The sample as a user's logs: TIME.jpg files, laser and odometry CSVs. */
+UserLogs takeApart(const std::string& dir)
+{
+	UserLogs u{dir + "/images", dir + "/laser.csv", dir + "/odometry.csv", {}, {}};
+	fs::create_directories(u.images);
+	std::ofstream laser(u.laser), odometry(u.odometry);
+	laser << "# time, ranges\n";
+	RawlogProcessor loop(test::kSample);
+	loop.on<CObservationImage>("OMNICAM", [&](const CObservationImage::Ptr& o) {
+		fs::copy_file(o->image.getExternalStorageFileAbsolutePath(), u.images + "/" + timeText(o->timestamp) + ".jpg");
+		u.omni_pose = o->cameraPose;
+	});
+	loop.on<CObservation2DRangeScan>("LASER", [&](const CObservation2DRangeScan::Ptr& o) {
+		laser << timeText(o->timestamp);
+		for (std::size_t i = 0; i < o->getScanSize(); ++i)
+		{
+			char r[32];
+			std::snprintf(r, sizeof r, ",%.9g", o->getScanRangeValidity(i) ? o->getScanRange(i) : 0.0f);
+			laser << r;
+		}
+		laser << "\n";
+		u.laser_pose = o->sensorPose;
+	});
+	loop.on<CObservationOdometry>("ODOMETRY", [&](const CObservationOdometry::Ptr& o) {
+		odometry << timeText(o->timestamp) << ", " << o->odometry.x() << ", " << o->odometry.y() << ", "
+				 << o->odometry.phi() << "\n";
+	});
+	loop.run();
+	return u;
+}
+
+double meanAbsOf(const std::string& rawlog, const std::string& dir)
+{
+	TrainApp::Options t;
+	t.ini = test::kIni;
+	t.output = dir + "/f.hist";
+	t.training.input = rawlog;
+	t.training.until = 12;
+	t.verbosity = mrpt::system::LVL_ERROR;
+	TrainApp(t).run();
+	ScanApp::Options s;
+	s.ini = test::kIni;
+	s.histogram = t.output;
+	s.scan.input = rawlog;
+	s.scan.output = dir + "/scanned.rawlog";
+	s.verbosity = mrpt::system::LVL_ERROR;
+	ScanApp(s).run();
+	AccuracyApp::Options a;
+	a.input = s.scan.output;
+	a.output = dir + "/acc";
+	a.accuracy.first = 12;
+	a.verbosity = mrpt::system::LVL_ERROR;
+	const auto acc = AccuracyApp(a).run();
+	EXPECT_EQ(acc.frames, 8);
+	return acc.stats.meanAbs();
+}
+
+ImportApp::Options importOf(const UserLogs& u, const std::string& output)
+{
+	ImportApp::Options o;
+	o.import.images_dir = u.images;
+	o.import.laser_csv = u.laser;
+	o.import.odometry_csv = u.odometry;
+	o.import.output = output;
+	o.import.omni_pose = u.omni_pose;
+	o.import.laser_pose = u.laser_pose;
+	o.verbosity = mrpt::system::LVL_ERROR;
+	return o;
+}
+
+std::string errorOf(const ImportApp::Options& o)
+{
+	try
+	{
+		ImportApp(o).run();
+	}
+	catch (const std::exception& e)
+	{
+		return e.what();
+	}
+	return "no error";
+}
+}  // namespace
+
+TEST(Import, AUsersLogsImportedScoreAsTheOriginal)
+{
+	const std::string dir = test::freshDir("omnirange_import", "round_trip");
+	const UserLogs u = takeApart(dir);
+	const LogImportSummary s = ImportApp(importOf(u, dir + "/imported.rawlog")).run();
+	EXPECT_EQ(s.images, 20u);
+	EXPECT_EQ(s.scans, 20u);
+	EXPECT_EQ(s.odometry, 20u);
+	EXPECT_EQ(s.rays, 181);
+	EXPECT_EQ(s.image_width, 1024);
+	EXPECT_TRUE(fs::exists(dir + "/imported_Images/OMNICAM_000000.jpg"));
+	// The camera's bytes, not a re-encoding: the first image is the earliest file.
+	std::vector<fs::path> files;
+	for (const auto& e : fs::directory_iterator(u.images)) files.push_back(e.path());
+	std::sort(files.begin(), files.end());
+	EXPECT_EQ(test::readText(dir + "/imported_Images/OMNICAM_000000.jpg"), test::readText(files.front().string()));
+	// MRPT's own rawlog-edit reads it whole, with the three labels.
+	eval::runProgram({"rawlog-edit", "--info", "-i", "imported.rawlog"}, dir, "info.log");
+	const std::string info = test::readText(dir + "/info.log");
+	for (const std::string label : {"OMNICAM", "LASER", "ODOMETRY"})
+		EXPECT_NE(info.find(label), std::string::npos) << label << "\n" << info;
+	EXPECT_NE(info.find("Overall number of objects         : 60\n"), std::string::npos) << info;  // 20 + 20 + 20
+	const double original = meanAbsOf(test::kSample, test::freshDir("omnirange_import", "original"));
+	const double imported = meanAbsOf(dir + "/imported.rawlog", test::freshDir("omnirange_import", "imported"));
+	EXPECT_GT(original, 0.0);
+	EXPECT_NEAR(imported, original, 1e-9);
+}
+
+TEST(Import, BadLogsAreNamedByFileAndLineAndNothingIsWritten)
+{
+	const std::string dir = test::freshDir("omnirange_import", "bad");
+	const UserLogs u = takeApart(dir);
+	const std::string out = dir + "/out.rawlog";
+	// Rows out of time order: the second data row goes first.
+	{
+		std::ifstream in(u.laser);
+		std::string comment, a, b, rest;
+		std::getline(in, comment), std::getline(in, a), std::getline(in, b);
+		std::stringstream others;
+		others << in.rdbuf();
+		std::ofstream(dir + "/unsorted.csv") << comment << "\n" << b << "\n" << a << "\n" << others.str();
+	}
+	ImportApp::Options o = importOf(u, out);
+	o.import.laser_csv = dir + "/unsorted.csv";
+	EXPECT_NE(errorOf(o).find("unsorted.csv:3: time"), std::string::npos) << errorOf(o);
+	// A row with one range too few.
+	std::ofstream(dir + "/short.csv") << "100.0, 1, 2, 3\n100.1, 1, 2\n";
+	o.import.laser_csv = dir + "/short.csv";
+	EXPECT_NE(errorOf(o).find("short.csv:2: 2 ranges, but the first row has 3"), std::string::npos) << errorOf(o);
+	// A missing time.
+	std::ofstream(dir + "/notime.csv") << "100.0, 1, 2, 3\n, 1, 2, 3\n";
+	o.import.laser_csv = dir + "/notime.csv";
+	EXPECT_NE(errorOf(o).find("notime.csv:2: time ''"), std::string::npos) << errorOf(o);
+	// An image that is not one, and one without a time in its name.
+	o = importOf(u, out);
+	std::ofstream(u.images + "/1767225699.000000.jpg") << "not a jpeg";
+	EXPECT_NE(errorOf(o).find("1767225699.000000.jpg' cannot be read as an image"), std::string::npos) << errorOf(o);
+	fs::remove(u.images + "/1767225699.000000.jpg");
+	std::ofstream(u.images + "/frame.jpg") << "x";
+	EXPECT_NE(errorOf(o).find("frame.jpg': the file name is not a time"), std::string::npos) << errorOf(o);
+	EXPECT_FALSE(fs::exists(out));
+	EXPECT_FALSE(fs::exists(dir + "/out_Images"));
+}
