@@ -12,6 +12,25 @@
 
 namespace omnirange::app
 {
+namespace
+{
+/** A calibrated camera's keys, each printed by the ini's own table, into
+ * [section] of `ini` (the rest of the file kept). */
+void saveCameraKeys(const std::string& ini, const std::string& section, const CameraParams& cam,
+					const std::vector<std::string>& model_keys)
+{
+	std::vector<std::string> names{"image_width", "image_height", "cx", "cy", "mirror_model"};
+	names.insert(names.end(), model_keys.begin(), model_keys.end());
+	std::vector<std::pair<std::string, std::string>> keys;
+	for (const std::string& name : names)
+		for (const auto& f : CameraParams::table().fields())
+			if (f.info.key == name) keys.push_back({name, f.print(cam)});
+	writeIniSection(ini, section, keys);
+	std::printf("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), section.c_str(),
+				ini.c_str());
+}
+}  // namespace
+
 CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 {
 	Options o;
@@ -136,17 +155,7 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 	{
 		const CameraParams cam = meiCamera(c);
 		OmniCameraModel{cam};  // refuses a model whose radius does not grow up to the horizon
-		writeIniSection(o_.save_to, o_.section,
-						{{"image_width", std::to_string(cam.image_width)},
-						 {"image_height", std::to_string(cam.image_height)},
-						 {"cx", formatDouble(cam.cx)},
-						 {"cy", formatDouble(cam.cy)},
-						 {"mirror_model", "mei"},
-						 {"xi", formatDouble(cam.xi)},
-						 {"gamma", formatDouble(cam.gamma)},
-						 {"k1", formatDouble(cam.k1)},
-						 {"k2", formatDouble(cam.k2)}});
-		std::printf("wrote the mei model's keys into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
+		saveCameraKeys(o_.save_to, o_.section, cam, {"xi", "gamma", "k1", "k2"});
 	}
 	return c;
 }
@@ -177,14 +186,7 @@ CameraParams CalibrateApp::runOCamCalib()
 				f.c - 1, f.d, f.e);
 	if (!o_.save_to.empty())
 	{
-		writeIniSection(o_.save_to, o_.section,
-						{{"image_width", std::to_string(cam.image_width)},
-						 {"image_height", std::to_string(cam.image_height)},
-						 {"cx", formatDouble(cam.cx)},
-						 {"cy", formatDouble(cam.cy)},
-						 {"mirror_model", "ocamcalib"},
-						 {"ocam_poly", formatDoubles(cam.ocam_poly)}});
-		std::printf("wrote the ocamcalib model's keys into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
+		saveCameraKeys(o_.save_to, o_.section, cam, {"ocam_poly"});
 	}
 	return cam;
 }
