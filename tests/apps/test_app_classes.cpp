@@ -239,7 +239,7 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	std::ifstream comment(t.learn_ini);
 	std::string head((std::istreambuf_iterator<char>(comment)), {});
 	EXPECT_NE(head.find(", " + std::to_string(bins) + " bins,"), std::string::npos) << head.substr(0, 400);
-	EXPECT_NE(head.find("512 candidates"), std::string::npos) << head.substr(0, 400);
+	EXPECT_NE(head.find("1024 candidates"), std::string::npos) << head.substr(0, 400);
 	ScanApp::Options s;
 	s.ini = t.learn_ini;
 	s.histogram = t.output;

@@ -227,3 +227,28 @@ TEST(ColourModel, SavesBothHistogramsAndReadsAPlainHistogramFile)
 	EXPECT_FALSE(b.hasObstacles());
 	EXPECT_THROW(ColourModel::load("/dev/zero"), std::runtime_error);  // not a regular file: refused, not read forever
 }
+
+TEST(ColourHistogram, SmoothingSpreadsABinOverItsNeighboursAsAGaussian)
+{
+	// One colour, in bin (6, 6, 6) of 13 per channel. With sigma = 1 bin the
+	// kernel is exp(-k^2 / 2) for k in -3..3, normalised (sum 2.505950): 0.399050 at the
+	// centre, 0.242036 one bin away (worked by hand).
+	ColourHistogram h(ColourSpace::RGB, 13);
+	const std::uint8_t grey[3] = {128, 128, 128};
+	for (int i = 0; i < 10; ++i) h.addPixel(grey);
+	const std::uint32_t centre = h.binner().binOf(grey);
+	EXPECT_EQ(h.smoothedProbabilities(0.0)[centre], 1.0);
+	const std::vector<double> p = h.smoothedProbabilities(1.0);
+	const double k0 = 0.399050, k1 = 0.242036;
+	EXPECT_NEAR(p[centre], k0 * k0 * k0, 1e-5);
+	EXPECT_NEAR(p[centre + 1], k0 * k0 * k1, 1e-5);  // one bin along one channel
+	EXPECT_NEAR(p[centre + 13 * 13], k0 * k0 * k1, 1e-5);
+	EXPECT_NEAR(p[centre + 13 + 1], k0 * k1 * k1, 1e-5);
+	double sum = 0;
+	for (const double v : p) sum += v;
+	EXPECT_NEAR(sum, 1.0, 1e-9);  // nothing reaches past the first or last bin from the middle
+	// The classifier: at Theta 0.03 the centre and its six face neighbours are free.
+	EXPECT_EQ(FreeSpaceClassifier(ColourModel(h), 0.03, 0.0, 0.0).freeBinCount(), 1u);
+	EXPECT_EQ(FreeSpaceClassifier(ColourModel(h), 0.03, 0.0, 1.0).freeBinCount(), 7u);
+	EXPECT_THROW(h.smoothedProbabilities(-1.0), std::invalid_argument);
+}

@@ -5,11 +5,13 @@
 #include <opencv2/core.hpp>
 #include <zlib.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace omnirange
 {
@@ -79,6 +81,36 @@ double ColourHistogram::probability(std::uint32_t bin) const
 	return total_ == 0 ? 0.0
 					   : static_cast<double>(counts_.at(bin)) /
 			static_cast<double>(total_);
+}
+
+std::vector<double> ColourHistogram::smoothedProbabilities(double sigma) const
+{
+	if (!(sigma >= 0 && sigma <= 16)) throw std::invalid_argument("histogram smoothing must be within [0, 16] bins");
+	const std::uint32_t n = binner_.binCount();
+	std::vector<double> p(n);
+	for (std::uint32_t b = 0; b < n; ++b) p[b] = probability(b);
+	if (sigma == 0 || empty()) return p;
+	const int radius = static_cast<int>(std::ceil(2.5 * sigma));
+	std::vector<double> kernel(2 * radius + 1);
+	double sum = 0;
+	for (int k = -radius; k <= radius; ++k) sum += kernel[k + radius] = std::exp(-0.5 * k * k / (sigma * sigma));
+	for (double& w : kernel) w /= sum;
+	// Separable: along each channel in turn (bin = c0 * bins^2 + c1 * bins + c2).
+	const int bins = binsPerChannel();
+	std::vector<double> out(n);
+	for (const int stride : {bins * bins, bins, 1})
+	{
+		for (std::uint32_t b = 0; b < n; ++b)
+		{
+			const int c = static_cast<int>(b / stride) % bins;  // this bin's index along the channel
+			double v = 0;
+			for (int k = std::max(-radius, -c); k <= std::min(radius, bins - 1 - c); ++k)
+				v += kernel[k + radius] * p[b + static_cast<std::int64_t>(k) * stride];
+			out[b] = v;
+		}
+		p.swap(out);
+	}
+	return p;
 }
 
 std::string ColourHistogram::serialize() const

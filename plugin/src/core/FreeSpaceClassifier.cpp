@@ -9,7 +9,8 @@
 
 namespace omnirange
 {
-FreeSpaceClassifier::FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio)
+FreeSpaceClassifier::FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio,
+										 double smoothing)
 	: binner_(model.floor.binner()), free_(binner_.binCount(), 0), needed_(binner_.binCount(), 0.0f)
 {
 	if (!(threshold >= 0.0 && threshold <= 1.0))
@@ -23,11 +24,14 @@ FreeSpaceClassifier::FreeSpaceClassifier(const ColourModel& model, double thresh
 		throw std::invalid_argument(
 			"the colour histogram is empty: train it before classifying");
 	const bool two_class = model.hasObstacles() && obstacle_ratio > 0;
+	const std::vector<double> floor = hist.smoothedProbabilities(smoothing);
+	const std::vector<double> obstacle =
+		two_class ? model.obstacles.smoothedProbabilities(smoothing) : std::vector<double>(floor.size(), 0.0);
 	for (std::uint32_t b = 0; b < binner_.binCount(); ++b)
 	{
-		const double need = two_class ? std::max(threshold, obstacle_ratio * model.obstacles.probability(b)) : threshold;
+		const double need = two_class ? std::max(threshold, obstacle_ratio * obstacle[b]) : threshold;
 		needed_[b] = static_cast<float>(need);
-		free_[b] = hist.probability(b) >= need;  // eq. (5)
+		free_[b] = floor[b] >= need;  // eq. (5)
 	}
 }
 

@@ -21,6 +21,9 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 			 "with obstacle colours in the histogram file: free also needs P(c|floor) >= obstacle_ratio * "
 			 "P(c|obstacle); 0: the paper's one-class model",
 			 [](P& p) -> auto& { return p.obstacle_ratio; })
+		.add("histogram_smoothing", "bins",
+			 "sigma of a Gaussian over the histogram's bins (floor and obstacle colours) before eq. (5); 0: as counted",
+			 [](P& p) -> auto& { return p.histogram_smoothing; })
 		.include(OutlierFilterParams::table(), [](P& p) -> auto& { return p.outliers; })
 		.add("exposure_compensation", "bool",
 			 "bring each image's floor just beyond the base back to its colour in training before classifying "
@@ -66,6 +69,7 @@ void RangefinderParams::validate() const
 	outliers.validate();
 	require(threshold >= 0.0 && threshold <= 1.0, "threshold (Theta) must be within [0, 1]");
 	require(obstacle_ratio >= 0.0 && obstacle_ratio <= 1000.0, "obstacle_ratio must be within [0, 1000]");
+	require(histogram_smoothing >= 0.0 && histogram_smoothing <= 16.0, "histogram_smoothing must be within [0, 16] bins");
 	require(!sensor_label.empty(), "sensor_label is empty");
 	require(std_error >= 0, "std_error must be >= 0 m");
 	require(adaptation_memory >= 1.0 && adaptation_memory <= 1e6, "adaptation_memory must be within [1, 1e6] images");
@@ -82,7 +86,7 @@ int RangeScan::count(RayStatus s) const
 Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& colours)
 	: p_((params.validate(), params)),
 	  camera_(p_.camera),
-	  classifier_(colours, p_.threshold, p_.obstacle_ratio),
+	  classifier_(colours, p_.threshold, p_.obstacle_ratio, p_.histogram_smoothing),
 	  scanner_(camera_, p_.scanner),
 	  reference_(colours.reference),
 	  compensate_(p_.exposure_compensation && colours.hasReference()),

@@ -155,19 +155,20 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 		if (model.floor.empty()) continue;
 		for (const double theta : lo.thresholds)
 			for (const double ratio : lo.obstacle_ratios)
-				for (const int N : lo.Ns)
-					for (const int K : lo.Ks)
-						for (const BoundaryModel boundary : lo.boundary_models)
-						{
-							RangefinderParams p = start;
-							p.threshold = theta, p.obstacle_ratio = ratio, p.scanner.filter.N = N;
-							p.scanner.filter.K = K, p.scanner.boundary_model = boundary;
-							const auto& [space, b, light] = key;
-							const LearnedCandidate c{space, b, light, theta, ratio, N, K, boundary,
-													 score(Rangefinder(p, model), validation)};
-							r.tried.push_back(c);
-							if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
-						}
+				for (const double smoothing : lo.smoothings)
+					for (const int N : lo.Ns)
+						for (const int K : lo.Ks)
+							for (const BoundaryModel boundary : lo.boundary_models)
+							{
+								RangefinderParams p = start;
+								p.threshold = theta, p.obstacle_ratio = ratio, p.histogram_smoothing = smoothing;
+								p.scanner.filter.N = N, p.scanner.filter.K = K, p.scanner.boundary_model = boundary;
+								const auto& [space, b, light] = key;
+								const LearnedCandidate c{space, b, light, theta, ratio, smoothing, N, K, boundary,
+														 score(Rangefinder(p, model), validation)};
+								r.tried.push_back(c);
+								if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
+							}
 	}
 	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
 	r.training = o.training;
@@ -215,8 +216,9 @@ std::string describe(const LearnedCandidate& c)
 {
 	char s[300];
 	std::snprintf(s, sizeof s,
-				  "colour space %s, %d bins, light change %g, threshold %g, obstacle_ratio %g, N %d, K %d, %s boundary",
-				  toString(c.space).c_str(), c.bins, c.light_change, c.threshold, c.obstacle_ratio, c.N, c.K,
+				  "colour space %s, %d bins, light change %g, threshold %g, obstacle_ratio %g, smoothing %g, N %d, K %d, "
+				  "%s boundary",
+				  toString(c.space).c_str(), c.bins, c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K,
 				  toString(c.boundary).c_str());
 	return s;
 }

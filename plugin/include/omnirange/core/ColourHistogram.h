@@ -40,6 +40,10 @@ class ColourHistogram
 	bool empty() const { return total_ == 0; }
 	/** eq. (4): c[bin] / T; 0 for an empty histogram. */
 	double probability(std::uint32_t bin) const;
+	/** Every bin's probability after a Gaussian of `sigma` bins along each
+	 * of the three channels (what spills past the first or last bin is
+	 * dropped); sigma 0: probability() itself. */
+	std::vector<double> smoothedProbabilities(double sigma) const;
 
 	/** Saves to a versioned binary file with a CRC-32, atomically. */
 	void save(const std::string& path) const;

@@ -21,10 +21,12 @@ class FreeSpaceClassifier final : public PixelClassifier
    public:
 	/** A colour is free when P(colour | floor) >= threshold (eq. (5)) and,
 	 * with obstacle colours in the model and obstacle_ratio > 0, when also
-	 * P(colour | floor) >= obstacle_ratio * P(colour | obstacle). Throws
-	 * std::invalid_argument if the floor histogram is empty or a parameter
-	 * is out of range. */
-	FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio = 0.0);
+	 * P(colour | floor) >= obstacle_ratio * P(colour | obstacle); both
+	 * probabilities after a Gaussian of `smoothing` bins over the histogram
+	 * (ColourHistogram::smoothedProbabilities). Throws std::invalid_argument
+	 * if the floor histogram is empty or a parameter is out of range. */
+	FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio = 0.0,
+						double smoothing = 0.0);
 
 	const ColourBinner& binner() const { return binner_; }
 

@@ -37,6 +37,11 @@ struct RangefinderParams
 	/** [-] with obstacle colours in the model: free also needs
 	 * P(c | floor) >= obstacle_ratio * P(c | obstacle); 0: the paper's one-class model. */
 	double obstacle_ratio{1.0};
+	/** [bins] sigma of a Gaussian over the histogram's bins before eq. (5):
+	 * a colour next to the floor's is nearly as likely as they are, so a
+	 * small change of light or a darker far floor does not fall out of a
+	 * handful of bins; 0: the paper's histogram as counted. */
+	double histogram_smoothing{0.0};
 	/** Bring each image's floor, just beyond the base, back to the colour it
 	 * had in training before classifying (ExposureCompensation.h); only with
 	 * a histogram file that records that colour. Off by default: it mends a

@@ -30,6 +30,9 @@ struct LearningOptions
 {
 	std::vector<ColourSpace> spaces{ColourSpace::RGB, ColourSpace::Chroma};
 	std::vector<double> thresholds{0.0025, 0.005, 0.01, 0.02, 0.035, 0.05, 0.075, 0.1};
+	/** RangefinderParams::histogram_smoothing [bins]: as counted, or
+	 * smoothed over about a bin (docs/results.md measures both). */
+	std::vector<double> smoothings{0.0, 1.0};
 	std::vector<double> obstacle_ratios{0.0, 1.0};  ///< 0: the one-class model
 	std::vector<int> Ns{10, 20};
 	std::vector<int> Ks{2, 4};
@@ -64,6 +67,7 @@ struct LearnedCandidate
 	int bins{0};
 	double light_change{0};  ///< of the histogram's training (TrainingParams::light_change)
 	double threshold{0}, obstacle_ratio{0};
+	double smoothing{0};  ///< [bins]
 	int N{0}, K{0};
 	BoundaryModel boundary{BoundaryModel::Subpixel};
 	/** [m] mean over the laser's rays of the error: |laser - omni| where
