@@ -2,6 +2,7 @@
 
 #include "omnirange_eval/ExternalProgram.h"
 #include "omnirange_eval/Figures.h"
+#include "omnirange_eval/SensoryFrameFormat.h"
 
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/Temporaries.h>
@@ -22,7 +23,7 @@ namespace omnirange::eval
 {
 namespace
 {
-constexpr int kStages = 7;
+constexpr int kStages = 8;
 
 mrpt::maps::COccupancyGridMap2D loadGrid(const std::string& file)
 {
@@ -40,8 +41,13 @@ Experiment::Experiment(ExperimentConfig config)
 	setFolder(fs::absolute(c_.output).string());
 	r_.has_check_region = c_.hasCheckRegion();
 	// The laser's missing returns are free space; the omnicam's are not (emptyLike()).
-	r_.sensors = {{kLaserLabel, "laser", c_.map_laser_ini, c_.icp_laser_ini, true, {}, {}, {}, 0, 0},
-				  {c_.rangefinder.sensor_label, "omniscan", c_.map_omni_ini, c_.icp_omni_ini, false, {}, {}, {}, 0, 0}};
+	r_.sensors.resize(2);
+	auto& laser = r_.sensors[0];
+	laser.label = kLaserLabel, laser.tag = "laser", laser.map_ini = c_.map_laser_ini, laser.icp_ini = c_.icp_laser_ini;
+	laser.invalid_is_free = true, laser.rbpf_ini = c_.rbpf_laser_ini;
+	auto& omni = r_.sensors[1];
+	omni.label = c_.rangefinder.sensor_label, omni.tag = "omniscan", omni.map_ini = c_.map_omni_ini;
+	omni.icp_ini = c_.icp_omni_ini, omni.invalid_is_free = false, omni.rbpf_ini = c_.rbpf_omni_ini;
 }
 
 void Experiment::stage(const std::string& name, const std::function<void()>& body)
@@ -111,6 +117,7 @@ Metrics Experiment::runStages()
 	stage("accuracy", [&] { measureAccuracy(); });
 	stage("maps with ground-truth poses", [&] { mapWithGroundTruth(); });
 	stage("icp-slam", [&] { runIcpSlam(); });
+	stage("rbpf-slam", [&] { runRbpfSlam(); });
 	r_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	stage("report", [&] { writeReport(); });
 	return metricsOf(r_);
@@ -239,7 +246,27 @@ void Experiment::runIcpSlam()
 	writeImageAtomically(out_ + "/maps_icp.png", sideBySide(figures));
 }
 
-// 7. The report and the metrics.
+// 7. rbpf-slam (a Rao-Blackwellised particle filter), where the ini names its
+// configuration: it reads only MRPT's action/sensory-frame format.
+void Experiment::runRbpfSlam()
+{
+	std::vector<std::pair<std::string, cv::Mat>> figures{{"true map", paperStyle(truth_)}};
+	for (auto& s : r_.sensors)
+	{
+		if (s.rbpf_ini.empty()) continue;
+		const std::string frames = "frames_" + s.tag + ".rawlog";
+		writeSensoryFrameFormat(out_ + "/only_" + s.tag + ".rawlog", out_ + "/" + frames);
+		runProgram({"rbpf-slam", s.rbpf_ini, frames}, out_, "rbpf-slam_" + s.tag + ".log");
+		const auto sm = loadSimplemap(out_ + "/rbpf_slam_" + s.tag + "/_finalmap_.simplemap");
+		s.rbpf_path = comparePaths(simplemapKeyframes(sm), gt_path_);
+		const auto built = mapFromSimplemap(sm, s.rbpf_path.alignment, truth_, s.invalid_is_free);
+		double unused = 0;
+		s.rbpf = assess(built, s.label + ", rbpf-slam", unused, figures);
+	}
+	if (figures.size() > 1) writeImageAtomically(out_ + "/maps_rbpf.png", sideBySide(figures));
+}
+
+// 8. The report and the metrics.
 void Experiment::writeReport()
 {
 	const Metrics m = metricsOf(r_);

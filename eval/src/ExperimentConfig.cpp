@@ -37,6 +37,10 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 			 [](C& c) -> auto& { return c.match_tolerance; })
 		.add("icp_laser_ini", "file", "icp-slam configuration for the laser", [](C& c) -> auto& { return c.icp_laser_ini; })
 		.add("icp_omni_ini", "file", "icp-slam configuration for the omnicam", [](C& c) -> auto& { return c.icp_omni_ini; })
+		.add("rbpf_laser_ini", "file", "rbpf-slam configuration for the laser (empty: not run)",
+			 [](C& c) -> auto& { return c.rbpf_laser_ini; })
+		.add("rbpf_omni_ini", "file", "rbpf-slam configuration for the omnicam (empty: not run)",
+			 [](C& c) -> auto& { return c.rbpf_omni_ini; })
 		.add("map_laser_ini", "file", "observations2map configuration for the laser", [](C& c) -> auto& { return c.map_laser_ini; })
 		.add("map_omni_ini", "file", "observations2map configuration for the omnicam", [](C& c) -> auto& { return c.map_omni_ini; })
 		.add("check_region", "m", "'x y w d': a box whose marked wall length the report gives", [](C& c) -> auto& { return c.check_region; })
@@ -58,6 +62,8 @@ void resolvePaths(ExperimentConfig& c, const fs::path& dir)
 	resolve(c.output, "output", false);
 	resolve(c.icp_laser_ini, "icp_laser_ini", true), resolve(c.icp_omni_ini, "icp_omni_ini", true);
 	resolve(c.map_laser_ini, "map_laser_ini", true), resolve(c.map_omni_ini, "map_omni_ini", true);
+	if (!c.rbpf_laser_ini.empty()) resolve(c.rbpf_laser_ini, "rbpf_laser_ini", true);
+	if (!c.rbpf_omni_ini.empty()) resolve(c.rbpf_omni_ini, "rbpf_omni_ini", true);
 }
 
 void validate(ExperimentConfig& c)

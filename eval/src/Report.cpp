@@ -1,6 +1,7 @@
 // The experiment's report (Markdown) and metrics, from what a run measured.
 #include "omnirange_eval/Experiment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -28,6 +29,13 @@ void writeMapsTable(std::ostream& o, const ExperimentResults& r)
 		  << " | " << fmt("%.3f", s.icp.recall) << " | " << fmt("%.3f m", s.icp.thickness) << " | "
 		  << fmt("%.3f m", s.icp_path.ate_rmse) << " | " << fmt("%.3f m", s.icp_path.final_xy) << ", "
 		  << fmt("%.1f deg", s.icp_path.final_yaw * 180 / M_PI) << " |\n";
+	for (const auto& s : r.sensors)
+		if (!s.rbpf_ini.empty())
+			o << "| rbpf-slam + odometry | " << s.label << " | " << s.rbpf.occupied << " | "
+			  << fmt("%.3f", s.rbpf.precision) << " | " << fmt("%.3f", s.rbpf.recall) << " | "
+			  << fmt("%.3f m", s.rbpf.thickness) << " | " << fmt("%.3f m", s.rbpf_path.ate_rmse) << " | "
+			  << fmt("%.3f m", s.rbpf_path.final_xy) << ", " << fmt("%.1f deg", s.rbpf_path.final_yaw * 180 / M_PI)
+			  << " |\n";
 }
 
 void writeCheckRegion(std::ostream& o, const ExperimentConfig& c, const ExperimentResults& r)
@@ -87,6 +95,15 @@ Metrics metricsOf(const ExperimentResults& r)
 		m["icp_" + s.label + "_final_xy"] = s.icp_path.final_xy;
 		m["icp_" + s.label + "_final_yaw"] = s.icp_path.final_yaw;
 		m["icp_" + s.label + "_keyframes"] = s.icp_path.poses;
+		if (!s.rbpf_ini.empty())
+		{
+			m["rbpf_" + s.label + "_precision"] = s.rbpf.precision;
+			m["rbpf_" + s.label + "_recall"] = s.rbpf.recall;
+			m["rbpf_" + s.label + "_thickness"] = s.rbpf.thickness;
+			m["rbpf_" + s.label + "_ate_rmse"] = s.rbpf_path.ate_rmse;
+			m["rbpf_" + s.label + "_final_xy"] = s.rbpf_path.final_xy;
+			m["rbpf_" + s.label + "_final_yaw"] = s.rbpf_path.final_yaw;
+		}
 	}
 	m["seconds"] = r.seconds;
 	return m;
@@ -119,6 +136,10 @@ std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r
 	  << "Wall thickness: occupied area over the length of its centre line.\n\n";
 	writeMapsTable(o, r);
 	o << "\n![maps with ground-truth poses](maps_gt.png)\n\n![maps from icp-slam](maps_icp.png)\n\n";
+	const bool rbpf = std::any_of(r.sensors.begin(), r.sensors.end(), [](const auto& s) { return !s.rbpf_ini.empty(); });
+	if (rbpf)
+		o << "rbpf-slam is a particle filter, not seeded: its figures change from run to run.\n\n"
+		  << "![maps from rbpf-slam](maps_rbpf.png)\n\n";
 	if (c.hasCheckRegion()) writeCheckRegion(o, c, r);
 	return o.str();
 }

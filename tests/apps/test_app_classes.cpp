@@ -15,7 +15,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 
 #include "../common/FactorySample.h"
-#include "../common/SensoryFrameFormat.h"
+#include <omnirange_eval/SensoryFrameFormat.h>
 
 #include <gtest/gtest.h>
 
@@ -348,7 +348,7 @@ TEST(AppClasses, ACutImageIsAnErrorNamingTheFile)
 TEST(AppClasses, ASensoryFrameRawlogIsTrainedScannedAndScoredInItsOwnFormat)
 {
 	const std::string dir = workDir("sensory_frames");
-	ASSERT_EQ(test::writeSensoryFrameFormat(kSample, dir + "/sf.rawlog"), 20);
+	ASSERT_EQ(eval::writeSensoryFrameFormat(kSample, dir + "/sf.rawlog"), 20);
 
 	TrainApp::Options t;
 	t.ini = kIni;

@@ -42,6 +42,14 @@ TEST(Experiment, SmallFactoryRunEndToEnd)
 	EXPECT_LT(v("icp_LASER_ate_rmse"), 0.2);
 	EXPECT_LT(v("icp_OMNISCAN_ate_rmse"), 1.0);
 	EXPECT_GE(v("icp_LASER_keyframes"), 5);
+	// rbpf-slam ran for both sensors on the frames MRPT's other format holds
+	// (a particle filter, not seeded: only that it ran and mapped is asserted).
+	EXPECT_TRUE(fs::exists(dir + "/report/maps_rbpf.png"));
+	for (const std::string sensor : {"LASER", "OMNISCAN"})
+	{
+		EXPECT_GT(v("rbpf_" + sensor + "_precision"), 0.3) << sensor;
+		EXPECT_GE(v("rbpf_" + sensor + "_ate_rmse"), 0.0) << sensor;
+	}
 }
 
 TEST(Experiment, AHyperbolicMirrorThroughTheMeiModelEndToEnd)

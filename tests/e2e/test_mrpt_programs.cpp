@@ -3,7 +3,7 @@
 // plugin.
 #include "Programs.h"
 
-#include "../common/SensoryFrameFormat.h"
+#include <omnirange_eval/SensoryFrameFormat.h>
 
 #include <cmath>
 
@@ -65,7 +65,7 @@ TEST(MrptPrograms, IcpSlamMapsASensoryFrameRawlogScannedInItsOwnFormat)
 	// The actions/sensory-frames format, scanned: icp-slam reads the
 	// odometry from the actions and the omnicam scans from the frames.
 	const std::string dir = workDir("icp_slam_sf");
-	ASSERT_EQ(omnirange::test::writeSensoryFrameFormat(kSource + "/rawlogs/factory-sample.rawlog", dir + "/sf.rawlog"), 20);
+	ASSERT_EQ(omnirange::eval::writeSensoryFrameFormat(kSource + "/rawlogs/factory-sample.rawlog", dir + "/sf.rawlog"), 20);
 	const std::string ini = kSource + "/ini/factory.ini";
 	const RunResult t = run(app("omnirange-train") + " -q -i sf.rawlog -c " + q(ini) + " -o f.hist", dir);
 	ASSERT_EQ(t.code, 0) << t.out;

@@ -32,8 +32,9 @@ struct SensorMaps
 	std::string tag;  ///< lower-case name in file names ("laser", "omniscan")
 	std::string map_ini, icp_ini;  ///< observations2map and icp-slam configurations
 	bool invalid_is_free{true};  ///< see emptyLike()
-	MapMetrics gt, icp;
-	PathError icp_path;
+	std::string rbpf_ini;  ///< rbpf-slam configuration; empty: not run
+	MapMetrics gt, icp, rbpf;
+	PathError icp_path, rbpf_path;
 	double gt_check_marked{0}, icp_check_marked{0};  ///< [m] in the check region
 };
 
@@ -77,6 +78,7 @@ class Experiment : public mrpt::system::COutputLogger
 	void measureAccuracy();
 	void mapWithGroundTruth();
 	void runIcpSlam();
+	void runRbpfSlam();
 	void writeReport();
 	/** A built map against the true map: its figure, check region and metrics. */
 	MapMetrics assess(const mrpt::maps::COccupancyGridMap2D& map, const std::string& title, double& check_marked,

@@ -18,6 +18,8 @@ struct ExperimentConfig
 	std::string world, route, robot;  ///< files, relative to the ini's folder
 	std::string output;  ///< the report folder
 	std::string icp_laser_ini, icp_omni_ini;  ///< icp-slam configurations
+	/** rbpf-slam configurations (a particle filter); empty: rbpf-slam is not run for that sensor. */
+	std::string rbpf_laser_ini, rbpf_omni_ini;
 	std::string map_laser_ini, map_omni_ini;  ///< observations2map configurations
 	int max_frames{0};  ///< 0: the whole route
 	int train_every{3};  ///< train on every N-th image/scan pair

@@ -1,9 +1,4 @@
-#pragma once
-// Rewrites an observations-only rawlog in MRPT's other format, the one
-// rawlog-grabber writes with use_sensoryframes = 1 and older datasets use:
-// (action collection, sensory frame) pairs, odometry as the actions'
-// increments. Each odometry reading starts a new frame; the frame holds the
-// observations that follow it. The images stay where they are (a link).
+#include "omnirange_eval/SensoryFrameFormat.h"
 
 #include <omnirange/io/RawlogProcessor.h>
 #include <omnirange/io/RawlogWriter.h>
@@ -16,14 +11,10 @@
 
 #include <filesystem>
 #include <optional>
-#include <string>
 
-namespace omnirange::test
+namespace omnirange::eval
 {
-/** Returns the number of frames written to `out`; the images folder of `in`
- * is linked as out's. */
-inline int writeSensoryFrameFormat(const std::string& in, const std::string& out,
-								   const std::string& odometry_label = "ODOMETRY")
+int writeSensoryFrameFormat(const std::string& in, const std::string& out, const std::string& odometry_label)
 {
 	RawlogWriter w(out);
 	const auto in_images = std::filesystem::path(in).replace_extension("").string() + "_Images";
@@ -62,4 +53,4 @@ inline int writeSensoryFrameFormat(const std::string& in, const std::string& out
 	return frames;
 }
 
-}  // namespace omnirange::test
+}  // namespace omnirange::eval
