@@ -2,6 +2,8 @@
 // folder of timed JPEGs, a laser CSV, an odometry CSV) and imported again.
 // The imported rawlog must train, scan and score exactly as the original.
 #include <omnirange_apps/AccuracyApp.h>
+#include <omnirange_apps/CalibrateApp.h>
+#include <omnirange_apps/CommandLine.h>
 #include <omnirange_apps/ImportApp.h>
 #include <omnirange_apps/ScanApp.h>
 #include <omnirange_apps/TrainApp.h>
@@ -191,4 +193,104 @@ TEST(Import, BadLogsAreNamedByFileAndLineAndNothingIsWritten)
 	EXPECT_NE(errorOf(o).find("frame.jpg': the file name is not a time"), std::string::npos) << errorOf(o);
 	EXPECT_FALSE(fs::exists(out));
 	EXPECT_FALSE(fs::exists(dir + "/out_Images"));
+}
+
+TEST(Import, TheUsersPathFromTheirLogsToAMap)
+{
+	// docs/users.md in order, on the factory sample taken apart: import (0),
+	// find the centre (2), train (3), calibrate against the laser (4), learn,
+	// scan and score (5), and map with icp-slam (6). The user's first ini
+	// knows only the image size and guesses the rest wrong (the orientation
+	// by 90 degrees and not mirrored).
+	const std::string dir = test::freshDir("omnirange_import", "users_path");
+	const UserLogs u = takeApart(dir);
+	const std::string ini = dir + "/my.ini";
+	const std::string first_guess = "[rangefinder]\n; [px]\nimage_width = 1024\nimage_height = 768\ncx = 500\ncy = 400\n"
+						  "R = 200\nforward_azimuth_deg = 90\nmirrored = false\npose_z = 0.931\nthreshold = 0.075\nN = 20\nK = 2\n";
+	std::ofstream(ini) << first_guess;
+	mrpt::system::COutputLogger quiet("test");
+	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+
+	// 0. import, the omnicam's pose from the ini
+	ImportApp::Options im = importOf(u, dir + "/mylog.rawlog");
+	im.ini = ini, im.import.omni_pose = {};
+	ImportApp(im).run();
+	const std::string log = dir + "/mylog.rawlog";
+
+	// 2. the mirror's centre from three images (the simulator's is 512, 384)
+	CalibrateApp::Options rim;
+	for (const char* n : {"OMNICAM_000000.jpg", "OMNICAM_000009.jpg", "OMNICAM_000019.jpg"})
+		rim.rim_images.push_back(dir + "/mylog_Images/" + n);
+	rim.save_to = ini, rim.verbosity = mrpt::system::LVL_ERROR;
+	const MirrorRim found = CalibrateApp(rim).runRim();
+	EXPECT_NEAR(found.cx, 512, 3);
+	EXPECT_NEAR(found.cy, 384, 3);
+
+	// 3. a first histogram, then 4. the orientation and R against the laser (twice: the first run corrects the orientation)
+	const auto trainTo = [&](const std::string& hist, const std::string& learn_ini, bool near_disc_only = false) {
+		TrainApp::Options t;
+		t.ini = ini, t.output = hist, t.learn_ini = learn_ini;
+		t.training.training.near_disc_only = near_disc_only;
+		t.training.input = log, t.training.until = 12;
+		t.verbosity = mrpt::system::LVL_ERROR;
+		TrainApp(t).run();
+	};
+	CalibrateApp::Options cal;
+	cal.ini = ini, cal.save_to = ini, cal.histogram = dir + "/first.hist";
+	cal.calibration.input = log, cal.calibration.every = 1, cal.verbosity = mrpt::system::LVL_ERROR;
+	// The first histogram only from the floor nearer than every laser hit,
+	// which does not depend on the guessed orientation; then train and
+	// calibrate again until the orientation and R stay put.
+	int rounds = 0;
+	for (bool moved = true; moved && rounds < 6; ++rounds)
+	{
+		const RangefinderParams before = loadRangefinderIni(ini, "rangefinder", quiet);
+		trainTo(cal.histogram, "", rounds == 0);
+		CalibrateApp(cal).run();
+		const RangefinderParams after = loadRangefinderIni(ini, "rangefinder", quiet);
+		moved = std::abs(std::remainder(after.camera.forward_azimuth - before.camera.forward_azimuth, 2 * M_PI)) >
+					0.5 * M_PI / 180 ||
+				after.camera.mirrored != before.camera.mirrored || std::abs(after.camera.R - before.camera.R) > 0.5;
+	}
+	std::printf("the orientation and R settled after %d rounds of training and calibration\n", rounds);
+	const RangefinderParams calibrated = loadRangefinderIni(ini, "rangefinder", quiet);
+	// On these 20 frames it settles 2 degrees and 5 % short of the truth
+	// (180 degrees, mirrored, R 192 px; docs/users.md): asserted within 3 and 6 %.
+	EXPECT_LT(rounds, 6);
+	EXPECT_NEAR(std::abs(std::remainder(calibrated.camera.forward_azimuth - M_PI, 2 * M_PI)), 0, 3 * M_PI / 180);
+	EXPECT_TRUE(calibrated.camera.mirrored);
+	EXPECT_NEAR(calibrated.camera.R, 192, 0.06 * 192);
+
+	// 5. learn on the first 12 pairs, scan, and score the 8 after them:
+	// better than with the first guess. (Measured: 0.204 m, against 0.409 m
+	// as guessed and 0.072 m from a calibration started at the truth: what
+	// 20 frames of one corridor can settle, docs/users.md.)
+	const auto meanAbsWith = [&](const std::string& name) {
+		trainTo(dir + "/" + name + ".hist", dir + "/" + name + "_learned.ini");
+		ScanApp::Options sc;
+		sc.ini = dir + "/" + name + "_learned.ini", sc.histogram = dir + "/" + name + ".hist";
+		sc.scan.input = log, sc.scan.output = dir + "/" + name + "_omni.rawlog", sc.verbosity = mrpt::system::LVL_ERROR;
+		ScanApp(sc).run();
+		AccuracyApp::Options acc;
+		acc.input = sc.scan.output, acc.output = dir + "/" + name + "_accuracy", acc.accuracy.first = 12;
+		acc.verbosity = mrpt::system::LVL_ERROR;
+		return AccuracyApp(acc).run().stats.meanAbs();
+	};
+	const double calibrated_error = meanAbsWith("mylog");
+	std::ofstream(ini) << first_guess;
+	const double guessed_error = meanAbsWith("guess");
+	std::printf("mean absolute difference: %.3f m calibrated, %.3f m as first guessed\n", calibrated_error,
+				guessed_error);
+	EXPECT_LT(calibrated_error, guessed_error);
+
+	// 6. a map with MRPT's icp-slam from the omnicam's scans and the odometry
+	eval::runProgram({"rawlog-edit", "--keep-label", "OMNISCAN,ODOMETRY", "-i", "mylog_omni.rawlog", "-o",
+					  "only_omni.rawlog", "-w"},
+					 dir, "rawlog-edit.log");
+	fs::copy_file(test::kSource + "/ini/icp-slam-omniscan.ini", dir + "/icp.ini");
+	eval::runProgram({"icp-slam", "icp.ini", "only_omni.rawlog"}, dir, "icp-slam.log");
+	std::ifstream path(dir + "/icp_slam_omniscan/log_estimated_path.txt");
+	int poses = 0;
+	for (std::string line; std::getline(path, line);) poses += !line.empty() && line[0] != '%';
+	EXPECT_GE(poses, 5);
 }

@@ -2,9 +2,10 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
-#include <vector>
 #include <stdexcept>
+#include <vector>
 
 namespace omnirange
 {
@@ -90,6 +91,25 @@ cv::Mat HistogramTrainer::laserFreeMask(const mrpt::obs::CObservation2DRangeScan
 	return mask;
 }
 
+cv::Mat HistogramTrainer::nearDisc(const mrpt::obs::CObservation2DRangeScan& laser) const
+{
+	const mrpt::poses::CPose3D rel = laser.sensorPose - camera_pose_;
+	double nearest = view_range_;
+	for (std::size_t i = 0; i < laser.getScanSize(); ++i)
+	{
+		if (!laser.getScanRangeValidity(i)) continue;
+		const double r = laser.getScanRange(i), a = laser.getScanAngle(i);
+		mrpt::math::TPoint3D inCam;
+		rel.composePoint(mrpt::math::TPoint3D(r * std::cos(a), r * std::sin(a), 0), inCam);
+		nearest = std::min(nearest, std::hypot(inCam.x, inCam.y));
+	}
+	const int n = view_.size();
+	cv::Mat disc = cv::Mat::zeros(n, n, CV_8UC1);
+	const double radius = (nearest - p_.laser_margin) / view_.metresPerPixel();
+	if (radius > 0) cv::circle(disc, cv::Point(n / 2, n / 2), static_cast<int>(radius), cv::Scalar(255), cv::FILLED);
+	return disc;
+}
+
 TrainingFrame HistogramTrainer::add(const cv::Mat& omni, const mrpt::obs::CObservation2DRangeScan& laser)
 {
 	TrainingFrame f;
@@ -97,7 +117,7 @@ TrainingFrame HistogramTrainer::add(const cv::Mat& omni, const mrpt::obs::CObser
 	cv::Mat obstacle;
 	f.laser_free = laserFreeMask(laser, obstacle);  // (b)
 	cv::Mat use;
-	cv::bitwise_and(f.laser_free, base_mask_, use);
+	cv::bitwise_and(p_.near_disc_only ? nearDisc(laser) : f.laser_free, base_mask_, use);
 	f.fused = cv::Mat::zeros(f.birds_eye.size(), CV_8UC3);  // (c)
 	f.birds_eye.copyTo(f.fused, use);
 	const std::vector<cv::Mat> lights = asInOtherLight(f.birds_eye, p_.light_change);

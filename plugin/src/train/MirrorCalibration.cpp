@@ -139,10 +139,14 @@ std::vector<RhoRangePair> collectPairs(const Rangefinder& rf, const MirrorCalibr
 			if (k++ % o.every != 0) return;
 			const RangeScan scan = rf.process(decodeImage(*image, rf.params().camera));
 			const auto omni = rf.toObservation(scan, image->timestamp);
-			// Hits only; a laser range beyond the max range cannot have one.
+			// Hits only; a laser range beyond the max range cannot have one. The
+			// boundary as found, without the ini's boundary_offset: R fitted to
+			// shifted hits would absorb the offset, and saving both (as
+			// --save-to does) would make each run move the other.
+			const double offset = rf.params().scanner.boundary_offset;
 			for (const RangePair& p : pairScans(*laser, *omni, 1e9))
 				if (p.status != PairStatus::LaserBeyondMaxRange && scan.rays[p.omni_ray].status == RayStatus::Hit)
-					pairs.push_back({scan.rays[p.omni_ray].hit_rho, p.laser, k});
+					pairs.push_back({scan.rays[p.omni_ray].hit_rho - offset, p.laser, k});
 		});
 	loop.run(progress);
 	if (k == 0) throw std::runtime_error(loop.describeNoPair());
@@ -192,8 +196,8 @@ MirrorCalibration calibrateMirror(const Rangefinder& rf, const MirrorCalibration
 	c.rms_height = rmsRangeError(OmniCameraModel(with_h), kept);
 	std::vector<double> px;
 	for (const auto& p : kept) px.push_back(rf.camera().rhoFromDistance(p.range) - p.rho);
-	c.boundary_px = median(px);
-	const double want = rf.params().scanner.boundary_offset + c.boundary_px;
+	const double want = median(px);  // from the boundary as found
+	c.boundary_px = want - rf.params().scanner.boundary_offset;  // beyond the omnicam's, offset included
 	c.suggested_boundary_offset = std::clamp(want, -1.0, 1.0);
 	c.clamped = c.suggested_boundary_offset != want;
 	return c;

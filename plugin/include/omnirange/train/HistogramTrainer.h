@@ -28,6 +28,11 @@ struct TrainingParams
 	 * much dimmer and brighter (gains 1 - a and 1 + a), so the histogram
 	 * covers a change of light it was not trained in; 0: as seen. */
 	double light_change{0.0};
+	/** Count only the disc around the camera nearer than every laser hit
+	 * (less laser_margin), all round: what is floor whatever the image's
+	 * orientation, so a first histogram for omnirange-calibrate cannot
+	 * learn the orientation it was trained with. */
+	bool near_disc_only{false};
 };
 
 /** The three images of paper Fig. 1 for one frame. */
@@ -60,6 +65,8 @@ class HistogramTrainer
    private:
 	/** (b) of Fig. 1, and the obstacle pixels: a band just beyond each hit. */
 	cv::Mat laserFreeMask(const mrpt::obs::CObservation2DRangeScan& laser, cv::Mat& obstacle) const;
+	/** The disc nearer than every laser hit (TrainingParams::near_disc_only). */
+	cv::Mat nearDisc(const mrpt::obs::CObservation2DRangeScan& laser) const;
 
 	mrpt::poses::CPose3D camera_pose_;
 	double view_range_;
