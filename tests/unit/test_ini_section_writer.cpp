@@ -1,5 +1,6 @@
 // Writing one section into a person's ini: values replaced in place, new
 // keys at the section's end, every comment and other section kept.
+#include <omnirange/core/Rangefinder.h>
 #include <omnirange/io/IniSectionWriter.h>
 
 #include <gtest/gtest.h>
@@ -52,4 +53,14 @@ TEST(IniSectionWriter, ASectionTwiceIsAnErrorAndTheFileStays)
 	std::ofstream(path) << text;
 	EXPECT_THROW(writeIniSection(path, "rangefinder", {{"N", "10"}}), std::runtime_error);
 	EXPECT_EQ(read(path), text);
+}
+
+TEST(IniSectionWriter, AnAddedKeyGetsItsCommentAKeptOneKeepsItsOwn)
+{
+	const std::string path = tmp("comments.ini");
+	std::ofstream(path) << "[rangefinder]\n; mine\nN = 20\n";
+	const auto comments = RangefinderParams::table().comments();
+	writeIniSection(path, "rangefinder", {{"N", "10"}, {"xi", "0.8"}}, comments);
+	EXPECT_EQ(read(path), "[rangefinder]\n; mine\nN = 10\n; " + comments.at("xi") + "\nxi = 0.8\n");
+	EXPECT_EQ(comments.at("xi").rfind("[-] ", 0), 0u) << comments.at("xi");  // the unit first, as every shipped ini has it
 }

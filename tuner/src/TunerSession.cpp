@@ -151,7 +151,7 @@ void TunerSession::saveIni(const std::string& ini) const
 {
 	std::vector<std::pair<std::string, std::string>> values;
 	for (const auto& f : RangefinderParams::table().fields()) values.emplace_back(f.info.key, f.print(params_));
-	writeIniSection(ini.empty() ? o_.ini : ini, o_.section, values);
+	writeIniSection(ini.empty() ? o_.ini : ini, o_.section, values, RangefinderParams::table().comments());
 }
 
 }  // namespace omnirange::tuner

@@ -25,7 +25,7 @@ void saveCameraKeys(const std::string& ini, const std::string& section, const Ca
 	for (const std::string& name : names)
 		for (const auto& f : CameraParams::table().fields())
 			if (f.info.key == name) keys.push_back({name, f.print(cam)});
-	writeIniSection(ini, section, keys);
+	writeIniSection(ini, section, keys, RangefinderParams::table().comments());
 	std::printf("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), section.c_str(),
 				ini.c_str());
 }
@@ -129,7 +129,7 @@ MirrorCalibration CalibrateApp::run()
 			if (shape_calibrated) keys.push_back({"h", formatDouble(std::round(c.height.h * 1e4) / 1e4)});
 			keys.push_back({"boundary_offset", formatDouble(c.suggested_boundary_offset)});
 		}
-		writeIniSection(o_.save_to, o_.section, keys);
+		writeIniSection(o_.save_to, o_.section, keys, RangefinderParams::table().comments());
 		std::printf("wrote %zu keys into [%s] of %s\n", keys.size(), o_.section.c_str(), o_.save_to.c_str());
 	}
 	return c;
@@ -167,8 +167,9 @@ MirrorRim CalibrateApp::runRim()
 				rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size());
 	if (!o_.save_to.empty())
 	{
-		writeIniSection(o_.save_to, o_.section, {{"cx", formatDouble(std::round(rim.cx * 10) / 10)},
-												 {"cy", formatDouble(std::round(rim.cy * 10) / 10)}});
+		writeIniSection(o_.save_to, o_.section,
+						{{"cx", formatDouble(std::round(rim.cx * 10) / 10)}, {"cy", formatDouble(std::round(rim.cy * 10) / 10)}},
+						RangefinderParams::table().comments());
 		std::printf("wrote cx, cy into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
 	}
 	return rim;

@@ -22,7 +22,8 @@ std::string withValue(const std::string& line, const std::string& key, const std
 }  // namespace
 
 void writeIniSection(const std::string& path, const std::string& section,
-					 const std::vector<std::pair<std::string, std::string>>& values)
+					 const std::vector<std::pair<std::string, std::string>>& values,
+					 const std::map<std::string, std::string>& comments)
 {
 	std::vector<std::string> lines;
 	if (std::filesystem::exists(path))
@@ -56,7 +57,11 @@ void writeIniSection(const std::string& path, const std::string& section,
 	}
 	std::vector<std::string> added;
 	for (const auto& [key, value] : values)
-		if (pending.count(key)) added.push_back(key + " = " + value);
+	{
+		if (!pending.count(key)) continue;
+		if (const auto c = comments.find(key); c != comments.end()) added.push_back("; " + c->second);
+		added.push_back(key + " = " + value);
+	}
 	if (insert_at < 0)
 	{
 		if (!lines.empty() && !trimmed(lines.back()).empty()) lines.emplace_back();

@@ -3,6 +3,7 @@
 // [rangefinder] keys into the user's own ini, whose comments, blank lines,
 // key order and other sections must survive.
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,11 +12,13 @@ namespace omnirange
 {
 /** Sets `values` (key, value) in `section` of the ini file `path`. A key
  * already in the section keeps its line and indentation with the new value; keys not there go after the
- * section's last key; a missing section is appended; a missing file is
- * created. Every other line stays as it was. Written atomically (the old
+ * section's last key, each after the line "; COMMENT" when `comments` has
+ * one for it (OptionsTable::comments()); a missing section is appended; a
+ * missing file is created. Every other line stays as it was. Written atomically (the old
  * file stays whole if anything fails). Throws std::runtime_error naming the
  * file if the section appears twice or the file cannot be read or written. */
 void writeIniSection(const std::string& path, const std::string& section,
-					 const std::vector<std::pair<std::string, std::string>>& values);
+					 const std::vector<std::pair<std::string, std::string>>& values,
+					 const std::map<std::string, std::string>& comments = {});
 
 }  // namespace omnirange

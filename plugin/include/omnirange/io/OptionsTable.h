@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -135,6 +136,13 @@ class OptionsTable
 	std::string print(const S& s) const;
 	std::vector<std::string> keys() const;
 	const std::vector<Field>& fields() const { return fields_; }
+	/** "[unit] meaning" per key: the comment a key written into a user's ini gets. */
+	std::map<std::string, std::string> comments() const
+	{
+		std::map<std::string, std::string> m;
+		for (const auto& f : fields_) m[f.info.key] = "[" + f.info.unit + "] " + f.info.doc;
+		return m;
+	}
 
    private:
 	template <class>
