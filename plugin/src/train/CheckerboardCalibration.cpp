@@ -1,5 +1,8 @@
 #include "omnirange/train/CheckerboardCalibration.h"
 
+#include <mrpt/img/CImage.h>
+#include <mrpt/vision/chessboard_find_corners.h>
+
 #include <opencv2/calib3d.hpp>
 #include <opencv2/ccalib/omnidir.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -11,6 +14,32 @@
 
 namespace omnirange
 {
+bool findCheckerboardCorners(const cv::Mat& gray, const cv::Size& pattern, const std::string& detector,
+							 std::vector<cv::Point2f>& corners)
+{
+	if (detector == "classic")
+	{
+		if (!cv::findChessboardCorners(gray, pattern, corners, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE))
+			return false;
+		cv::cornerSubPix(gray, corners, cv::Size(5, 5), cv::Size(-1, -1),
+						 cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 30, 0.01));
+		return true;
+	}
+	if (detector == "sector-based")
+		return cv::findChessboardCornersSB(gray, pattern, corners, cv::CALIB_CB_EXHAUSTIVE | cv::CALIB_CB_ACCURACY);
+	if (detector == "mrpt-scaramuzza")
+	{
+		std::vector<mrpt::img::TPixelCoordf> found;
+		const mrpt::img::CImage image(gray, mrpt::img::DEEP_COPY);
+		if (!mrpt::vision::findChessboardCorners(image, found, pattern.width, pattern.height, true, true)) return false;
+		corners.clear();
+		for (const auto& p : found) corners.emplace_back(p.x, p.y);
+		return corners.size() == static_cast<std::size_t>(pattern.area());
+	}
+	throw std::invalid_argument("unknown corner detector '" + detector +
+								"' (classic, sector-based or mrpt-scaramuzza)");
+}
+
 int CheckerboardCalibration::found() const
 {
 	return static_cast<int>(std::count_if(images.begin(), images.end(), [](const auto& i) { return i.found; }));
@@ -63,14 +92,12 @@ CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string
 		CheckerboardImage info;
 		info.file = file;
 		std::vector<cv::Point2f> corners;
-		if (cv::findChessboardCorners(gray, pattern, corners, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE))
-		{
-			cv::cornerSubPix(gray, corners, cv::Size(5, 5), cv::Size(-1, -1),
-							 cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 30, 0.01));
-			info.found = true, info.detector = "classic";
-		}
-		else if (cv::findChessboardCornersSB(gray, pattern, corners, cv::CALIB_CB_EXHAUSTIVE | cv::CALIB_CB_ACCURACY))
-			info.found = true, info.detector = "sector-based";
+		for (const std::string& detector : o.detectors)
+			if (findCheckerboardCorners(gray, pattern, detector, corners))
+			{
+				info.found = true, info.detector = detector;
+				break;
+			}
 		if (info.found)
 		{
 			object.push_back(board);

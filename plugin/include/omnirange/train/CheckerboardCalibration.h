@@ -3,9 +3,9 @@
 // (OpenCV contrib's cv::omnidir: focal lengths, skew, principal point, xi and
 // radial/tangential distortion): what a user with a hyperbolic, parabolic or
 // fisheye-like omnicam and a printed board can measure before anything else.
-// Corners come from OpenCV's classic detector (sub-pixel refined) and, where
-// it fails (strongly curved boards near the mirror's rim), from its
-// sector-based detector.
+// Corners come from OpenCV's classic detector (sub-pixel refined); where it
+// fails (strongly curved boards near the mirror's rim), from its sector-based
+// detector; where both fail, from MRPT's OCamCalib-based one.
 
 #include <omnirange/core/CameraModel.h>
 
@@ -21,13 +21,18 @@ struct CheckerboardOptions
 	int columns{8}, rows{6};  ///< inner corners
 	double square{0.042};  ///< [m] side of a square
 	int max_iterations{300};
+	/** Corner detectors, tried in this order until one finds the board:
+	 * "classic" (OpenCV's, sub-pixel refined), "sector-based" (OpenCV's
+	 * findChessboardCornersSB), "mrpt-scaramuzza" (MRPT's OCamCalib-based
+	 * detector, mrpt::vision::findChessboardCorners). */
+	std::vector<std::string> detectors{"classic", "sector-based", "mrpt-scaramuzza"};
 };
 
 struct CheckerboardImage
 {
 	std::string file;
 	bool found{false};
-	std::string detector;  ///< "classic" or "sector-based" when found
+	std::string detector;  ///< which of CheckerboardOptions::detectors found it
 	bool used{false};  ///< kept by the calibration (cv::omnidir drops some it cannot initialise)
 	double rms{0};  ///< [px] this image's reprojection error, when used
 };
@@ -45,6 +50,12 @@ struct CheckerboardCalibration
 	/** The result as OpenCV's YAML (the keys cv::omnidir users expect: camera_matrix, xi, distortion). */
 	std::string yaml() const;
 };
+
+/** A board's inner corners (`pattern`: columns x rows) in an 8-bit grey
+ * image by one of CheckerboardOptions::detectors, row by row; false when that
+ * detector does not find them. Throws std::invalid_argument on an unknown one. */
+bool findCheckerboardCorners(const cv::Mat& gray, const cv::Size& pattern, const std::string& detector,
+							 std::vector<cv::Point2f>& corners);
 
 /** The rangefinder's camera from a calibration: mirror_model = mei with its
  * xi, gamma (the mean of fx and fy), k1, k2, the principal point as cx, cy
