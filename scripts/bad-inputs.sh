@@ -83,10 +83,10 @@ run_case() {
   n=$((n + 1))
   rm -rf "$out" "${out%.rawlog}_Images"
   local before after
-  before=$(md5sum s.rawlog f.ini floor.hist w.world w.route 2>/dev/null | md5sum)
+  before=$(md5sum s.rawlog f.ini floor.hist w.world w.route imp_laser.csv 2>/dev/null | md5sum)
   timeout 60 "$@" >stdout.txt 2>stderr.txt
   local code=$?
-  after=$(md5sum s.rawlog f.ini floor.hist w.world w.route 2>/dev/null | md5sum)
+  after=$(md5sum s.rawlog f.ini floor.hist w.world w.route imp_laser.csv 2>/dev/null | md5sum)
   local lines first left kept verdict="pass"
   lines=$(grep -c . stderr.txt)
   first=$(grep -m1 . stderr.txt | cut -c1-150 | sed 's/|/\\|/g')

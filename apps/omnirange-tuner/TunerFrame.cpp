@@ -211,6 +211,7 @@ void TunerFrame::onParamsChanged()
 		status(wxString::FromUTF8(e.what()), true);
 		return;
 	}
+	rangefinder_changed_ = true;
 	refresh();
 }
 
@@ -244,8 +245,13 @@ void TunerFrame::refresh()
 	const Rangefinder& rf = s_.rangefinder();
 	image_->SetBitmap(toBitmap(tuner::drawOmniOverlay(scan, rf, overlay_), kImageWidth));
 	plot_->SetBitmap(toBitmap(tuner::drawScanPlot(scan, s_.params(), kPlotSize), kPlotSize));
-	birdseye_->SetBitmap(toBitmap(BirdsEyeView(rf.camera(), kSmall, 2 * s_.params().scanner.max_range / kSmall).render(scan.bgr), kSmall));
-	colours_->SetBitmap(toBitmap(tuner::drawFloorColours(s_.colours(), rf.classifier(), cv::Size(kSmall, kSmall)), kSmall));
+	if (rangefinder_changed_)
+	{
+		view_ = std::make_unique<BirdsEyeView>(rf.camera(), kSmall, 2 * s_.params().scanner.max_range / kSmall);
+		colours_->SetBitmap(toBitmap(tuner::drawFloorColours(s_.colours(), rf.classifier(), cv::Size(kSmall, kSmall)), kSmall));
+		rangefinder_changed_ = false;
+	}
+	birdseye_->SetBitmap(toBitmap(view_->render(scan.bgr), kSmall));
 	const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	const int hits = scan.scan.count(RayStatus::Hit), rays = static_cast<int>(scan.scan.rays.size());
 	wxString score = wxString::Format("hits %d of %d rays", hits, rays);
@@ -320,6 +326,7 @@ void TunerFrame::train()
 	{
 		return status(wxString::FromUTF8(e.what()), true);
 	}
+	rangefinder_changed_ = true;
 	refresh();
 }
 

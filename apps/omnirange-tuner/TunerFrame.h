@@ -5,6 +5,8 @@
 #include <omnirange_tuner/Overlays.h>
 #include <omnirange_tuner/TunerSession.h>
 
+#include <omnirange/train/BirdsEyeView.h>
+
 #include <wx/checkbox.h>
 #include <wx/choice.h>
 #include <wx/frame.h>
@@ -14,6 +16,7 @@
 #include <wx/stattext.h>
 #include <wx/timer.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -49,4 +52,7 @@ class TunerFrame : public wxFrame
 	wxChoice *boundary_{}, *outliers_{};
 	wxCheckBox* mirrored_{};
 	wxTimer play_;
+	// What depends on the rangefinder only, not on the frame: rebuilt when it changes.
+	std::unique_ptr<omnirange::BirdsEyeView> view_;
+	bool rangefinder_changed_{true};
 };

@@ -11,6 +11,8 @@
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
+
 #include <unistd.h>
 
 #include <chrono>
@@ -238,12 +240,21 @@ void Experiment::runIcpSlam()
 					"-w"},
 				   out_, "rawlog-edit_" + s.tag + ".log");
 		runProgram({"icp-slam", s.icp_ini, only}, out_, "icp-slam_" + s.tag + ".log");
-		const auto sm = loadSimplemap(out_ + "/icp_slam_" + s.tag + "/_finalmap_.simplemap");
-		s.icp_path = comparePaths(simplemapKeyframes(sm), gt_path_);
-		const auto built = mapFromSimplemap(sm, s.icp_path.alignment, truth_, s.invalid_is_free);
-		s.icp = assess(built, s.label + ", icp-slam", s.icp_check_marked, figures);
+		scoreSlam("icp-slam", s, s.icp, s.icp_path, s.icp_check_marked, figures);
 	}
 	writeImageAtomically(out_ + "/maps_icp.png", sideBySide(figures));
+}
+
+void Experiment::scoreSlam(const std::string& engine, const SensorMaps& s, MapMetrics& map, PathError& path,
+						   double& check_marked, std::vector<std::pair<std::string, cv::Mat>>& figures) const
+{
+	// The engine's final map, in its folder NAME_TAG (the shipped inis' logOutput_dir).
+	std::string dir = engine + "_" + s.tag;
+	std::replace(dir.begin(), dir.end(), '-', '_');
+	const auto sm = loadSimplemap(out_ + "/" + dir + "/_finalmap_.simplemap");
+	path = comparePaths(simplemapKeyframes(sm), gt_path_);
+	map = assess(mapFromSimplemap(sm, path.alignment, truth_, s.invalid_is_free), s.label + ", " + engine, check_marked,
+				 figures);
 }
 
 // 7. rbpf-slam (a Rao-Blackwellised particle filter), where the ini names its
@@ -257,11 +268,8 @@ void Experiment::runRbpfSlam()
 		const std::string frames = "frames_" + s.tag + ".rawlog";
 		writeSensoryFrameFormat(out_ + "/only_" + s.tag + ".rawlog", out_ + "/" + frames);
 		runProgram({"rbpf-slam", s.rbpf_ini, frames}, out_, "rbpf-slam_" + s.tag + ".log");
-		const auto sm = loadSimplemap(out_ + "/rbpf_slam_" + s.tag + "/_finalmap_.simplemap");
-		s.rbpf_path = comparePaths(simplemapKeyframes(sm), gt_path_);
-		const auto built = mapFromSimplemap(sm, s.rbpf_path.alignment, truth_, s.invalid_is_free);
 		double unused = 0;
-		s.rbpf = assess(built, s.label + ", rbpf-slam", unused, figures);
+		scoreSlam("rbpf-slam", s, s.rbpf, s.rbpf_path, unused, figures);
 	}
 	if (figures.size() > 1) writeImageAtomically(out_ + "/maps_rbpf.png", sideBySide(figures));
 }

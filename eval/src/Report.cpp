@@ -24,18 +24,14 @@ void writeMapsTable(std::ostream& o, const ExperimentResults& r)
 	for (const auto& s : r.sensors)
 		o << "| ground truth | " << s.label << " | " << s.gt.occupied << " | " << fmt("%.3f", s.gt.precision) << " | "
 		  << fmt("%.3f", s.gt.recall) << " | " << fmt("%.3f m", s.gt.thickness) << " | - | - |\n";
+	const auto slamRow = [&](const std::string& engine, const SensorMaps& s, const MapMetrics& g, const PathError& p) {
+		o << "| " << engine << " + odometry | " << s.label << " | " << g.occupied << " | " << fmt("%.3f", g.precision)
+		  << " | " << fmt("%.3f", g.recall) << " | " << fmt("%.3f m", g.thickness) << " | " << fmt("%.3f m", p.ate_rmse)
+		  << " | " << fmt("%.3f m", p.final_xy) << ", " << fmt("%.1f deg", p.final_yaw * 180 / M_PI) << " |\n";
+	};
+	for (const auto& s : r.sensors) slamRow("icp-slam", s, s.icp, s.icp_path);
 	for (const auto& s : r.sensors)
-		o << "| icp-slam + odometry | " << s.label << " | " << s.icp.occupied << " | " << fmt("%.3f", s.icp.precision)
-		  << " | " << fmt("%.3f", s.icp.recall) << " | " << fmt("%.3f m", s.icp.thickness) << " | "
-		  << fmt("%.3f m", s.icp_path.ate_rmse) << " | " << fmt("%.3f m", s.icp_path.final_xy) << ", "
-		  << fmt("%.1f deg", s.icp_path.final_yaw * 180 / M_PI) << " |\n";
-	for (const auto& s : r.sensors)
-		if (!s.rbpf_ini.empty())
-			o << "| rbpf-slam + odometry | " << s.label << " | " << s.rbpf.occupied << " | "
-			  << fmt("%.3f", s.rbpf.precision) << " | " << fmt("%.3f", s.rbpf.recall) << " | "
-			  << fmt("%.3f m", s.rbpf.thickness) << " | " << fmt("%.3f m", s.rbpf_path.ate_rmse) << " | "
-			  << fmt("%.3f m", s.rbpf_path.final_xy) << ", " << fmt("%.1f deg", s.rbpf_path.final_yaw * 180 / M_PI)
-			  << " |\n";
+		if (!s.rbpf_ini.empty()) slamRow("rbpf-slam", s, s.rbpf, s.rbpf_path);
 }
 
 void writeCheckRegion(std::ostream& o, const ExperimentConfig& c, const ExperimentResults& r)
@@ -80,29 +76,24 @@ Metrics metricsOf(const ExperimentResults& r)
 	}
 	for (const auto& s : r.sensors)
 	{
-		for (const auto& [mode, g] : {std::pair{"gt_", &s.gt}, std::pair{"icp_", &s.icp}})
-		{
-			m[mode + s.label + "_precision"] = g->precision;
-			m[mode + s.label + "_recall"] = g->recall;
-			m[mode + s.label + "_thickness"] = g->thickness;
-		}
+		const auto maps = [&](const std::string& mode, const MapMetrics& g) {
+			m[mode + s.label + "_precision"] = g.precision;
+			m[mode + s.label + "_recall"] = g.recall;
+			m[mode + s.label + "_thickness"] = g.thickness;
+		};
+		const auto path = [&](const std::string& mode, const PathError& p) {
+			m[mode + s.label + "_ate_rmse"] = p.ate_rmse;
+			m[mode + s.label + "_final_xy"] = p.final_xy;
+			m[mode + s.label + "_final_yaw"] = p.final_yaw;
+			m[mode + s.label + "_keyframes"] = p.poses;
+		};
+		maps("gt_", s.gt);
+		maps("icp_", s.icp), path("icp_", s.icp_path);
+		if (!s.rbpf_ini.empty()) maps("rbpf_", s.rbpf), path("rbpf_", s.rbpf_path);
 		if (r.has_check_region)
 		{
 			m["gt_" + s.label + "_check_region_marked"] = s.gt_check_marked;
 			m["icp_" + s.label + "_check_region_marked"] = s.icp_check_marked;
-		}
-		m["icp_" + s.label + "_ate_rmse"] = s.icp_path.ate_rmse;
-		m["icp_" + s.label + "_final_xy"] = s.icp_path.final_xy;
-		m["icp_" + s.label + "_final_yaw"] = s.icp_path.final_yaw;
-		m["icp_" + s.label + "_keyframes"] = s.icp_path.poses;
-		if (!s.rbpf_ini.empty())
-		{
-			m["rbpf_" + s.label + "_precision"] = s.rbpf.precision;
-			m["rbpf_" + s.label + "_recall"] = s.rbpf.recall;
-			m["rbpf_" + s.label + "_thickness"] = s.rbpf.thickness;
-			m["rbpf_" + s.label + "_ate_rmse"] = s.rbpf_path.ate_rmse;
-			m["rbpf_" + s.label + "_final_xy"] = s.rbpf_path.final_xy;
-			m["rbpf_" + s.label + "_final_yaw"] = s.rbpf_path.final_yaw;
 		}
 	}
 	m["seconds"] = r.seconds;

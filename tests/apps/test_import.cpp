@@ -156,6 +156,7 @@ TEST(Import, AUsersLogsImportedScoreAsTheOriginal)
 	const double original = meanAbsOf(test::kSample, test::freshDir("omnirange_import", "original"));
 	const double imported = meanAbsOf(dir + "/imported.rawlog", test::freshDir("omnirange_import", "imported"));
 	EXPECT_GT(original, 0.0);
+	EXPECT_LT(original, 0.1375);  // the paper's worst Table II figure
 	EXPECT_NEAR(imported, original, 1e-9);
 }
 
@@ -189,6 +190,25 @@ TEST(Import, BadLogsAreNamedByFileAndLineAndNothingIsWritten)
 	std::ofstream(u.images + "/1767225699.000000.jpg") << "not a jpeg";
 	EXPECT_NE(errorOf(o).find("1767225699.000000.jpg' cannot be read as an image"), std::string::npos) << errorOf(o);
 	fs::remove(u.images + "/1767225699.000000.jpg");
+	// A camera's JPEG cut short (it would decode, with grey rows and only a warning).
+	{
+		std::vector<fs::path> files;
+		for (const auto& e : fs::directory_iterator(u.images)) files.push_back(e.path());
+		const std::string whole = test::readText(files.front().string());
+		std::ofstream(u.images + "/1767225699.000000.jpg", std::ios::binary) << whole.substr(0, whole.size() / 2);
+		EXPECT_NE(errorOf(o).find("1767225699.000000.jpg' of OMNICAM is truncated"), std::string::npos) << errorOf(o);
+		fs::remove(u.images + "/1767225699.000000.jpg");
+	}
+	// An output whose image folder is the input images' (it is replaced at the end).
+	{
+		ImportApp::Options into = importOf(u, dir + "/images.rawlog");
+		fs::rename(u.images, dir + "/images_Images");
+		into.import.images_dir = dir + "/images_Images";
+		EXPECT_NE(errorOf(into).find("refusing to overwrite it"), std::string::npos) << errorOf(into);
+		EXPECT_FALSE(fs::exists(dir + "/images.rawlog"));
+		EXPECT_GT(std::distance(fs::directory_iterator(dir + "/images_Images"), fs::directory_iterator{}), 10);
+		fs::rename(dir + "/images_Images", u.images);
+	}
 	std::ofstream(u.images + "/frame.jpg") << "x";
 	EXPECT_NE(errorOf(o).find("frame.jpg': the file name is not a time"), std::string::npos) << errorOf(o);
 	EXPECT_FALSE(fs::exists(out));

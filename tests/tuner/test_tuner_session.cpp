@@ -150,7 +150,7 @@ TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOf
 	rays.rays = true;
 	const cv::Mat with_rays = drawOmniOverlay(f, rf, rays);
 	// Every hit's end pixel is painted the hit colour.
-	int checked = 0;
+	int checked = 0, hit_coloured = 0;
 	for (const Ray& r : f.scan.rays)
 	{
 		if (r.status != RayStatus::Hit) continue;
@@ -160,9 +160,11 @@ TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOf
 		// The hit colour, or a neighbouring ray's status colour drawn over it.
 		EXPECT_TRUE(c == colour::kHit || c == colour::kNoHit || c == colour::kTooClose || c == colour::kOutlier)
 			<< r.bearing << ": " << c;
+		hit_coloured += c == colour::kHit;
 		++checked;
 	}
 	EXPECT_GT(checked, 50);
+	EXPECT_GT(hit_coloured, 0.9 * checked);  // overdrawn by a neighbour now and then, not as a rule
 
 	OverlayOptions laser = none;
 	laser.laser = true;
@@ -177,6 +179,20 @@ TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOf
 	const cv::Vec3b b = f.bgr.at<cv::Vec3b>(static_cast<int>(ahead.v), static_cast<int>(ahead.u));
 	EXPECT_GT(a[0], b[0]);
 	EXPECT_LT(a[2], b[2]);
+
+	// In dimmer light, with exposure compensation on, the tint shows what the
+	// scan classified: the compensated floor, which the trained classifier
+	// alone calls an obstacle.
+	RangefinderParams compensated = s.params();
+	compensated.exposure_compensation = true;
+	const Rangefinder dim_rf(compensated, s.colours());
+	FrameScan dim = f;
+	f.bgr.convertTo(dim.bgr, -1, 0.6);
+	const cv::Vec3b d = dim.bgr.at<cv::Vec3b>(static_cast<int>(ahead.v), static_cast<int>(ahead.u));
+	ASSERT_FALSE(rf.classifier().isFree(&d[0])) << "the dimmed floor must be outside the trained colours";
+	const cv::Vec3b dt =
+		drawOmniOverlay(dim, dim_rf, tint).at<cv::Vec3b>(static_cast<int>(ahead.v), static_cast<int>(ahead.u));
+	EXPECT_GT(dt[0], d[0]);
 
 	const cv::Mat plot = drawScanPlot(f, s.params(), 300);
 	EXPECT_GT(countColour(plot, colour::kHit), 50);

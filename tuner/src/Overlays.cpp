@@ -44,16 +44,30 @@ void tintFreePixels(cv::Mat& img, const Rangefinder& rf)
 	const double cx = cam.params().cx, cy = cam.params().cy;
 	const int v0 = std::max(0, static_cast<int>(cy - outer)), v1 = std::min(img.rows - 1, static_cast<int>(cy + outer));
 	const int u0 = std::max(0, static_cast<int>(cx - outer)), u1 = std::min(img.cols - 1, static_cast<int>(cx + outer));
-	const cv::Vec3b blue(255, 0, 0);
-	for (int v = v0; v <= v1; ++v)
-		for (int u = u0; u <= u1; ++u)
+	const cv::Scalar& tint = colour::kFree;
+	// Through the classifier the scan used (exposure compensation included),
+	// a row at a time; a row is tinted only after it was classified.
+	rf.withClassifierFor(img, nullptr, [&](const PixelClassifier& classifier) {
+		std::vector<std::int32_t> pixels;
+		std::vector<std::uint8_t> free;
+		for (int v = v0; v <= v1; ++v)
 		{
-			const double rho = cam.rhoOfPixel({double(u), double(v)});
-			if (rho < inner || rho > outer) continue;
-			cv::Vec3b& px = img.at<cv::Vec3b>(v, u);
-			if (rf.classifier().isFree(&px[0]))
-				for (int c = 0; c < 3; ++c) px[c] = static_cast<std::uint8_t>((3 * px[c] + 2 * blue[c]) / 5);
+			pixels.clear();
+			for (int u = u0; u <= u1; ++u)
+			{
+				const double du = u - cx, dv = v - cy, r2 = du * du + dv * dv;
+				if (r2 >= inner * inner && r2 <= outer * outer) pixels.push_back(v * img.cols + u);
+			}
+			free.resize(pixels.size());
+			classifier.classify(img.data, pixels.data(), static_cast<int>(pixels.size()), free.data());
+			for (std::size_t k = 0; k < pixels.size(); ++k)
+			{
+				if (!free[k]) continue;
+				std::uint8_t* px = img.data + 3 * static_cast<std::size_t>(pixels[k]);
+				for (int c = 0; c < 3; ++c) px[c] = static_cast<std::uint8_t>((3 * px[c] + 2 * static_cast<int>(tint[c])) / 5);
+			}
 		}
+	});
 }
 }  // namespace
 

@@ -6,10 +6,8 @@
 #include <omnirange/io/Progress.h>
 #include <omnirange/io/RawlogProcessor.h>
 
-#include <mrpt/config/CConfigFile.h>
 
 #include <chrono>
-#include <filesystem>
 #include <map>
 #include <stdexcept>
 
@@ -28,16 +26,7 @@ Agreement agreementOf(const std::vector<RangePair>& pairs)
 
 TunerSession::TunerSession(SessionOptions options) : o_(std::move(options))
 {
-	if (!std::filesystem::is_regular_file(o_.ini)) throw std::runtime_error("cannot open ini file '" + o_.ini + "'");
-	try
-	{
-		requireNoRepeatedKeys(o_.ini);
-		params_.loadFromConfig(mrpt::config::CConfigFile(o_.ini), o_.section);
-	}
-	catch (const std::invalid_argument& e)
-	{
-		throw std::runtime_error(o_.ini + ": " + e.what());
-	}
+	params_ = RangefinderParams::loadFromFile(o_.ini, o_.section);
 
 	// The frames: every omnicam image, with the laser and true scans paired to it.
 	std::map<const mrpt::obs::CObservationImage*, std::size_t> index;

@@ -4,9 +4,7 @@
 #include <omnirange/io/MemoryLimit.h>
 #include <omnirange/io/Temporaries.h>
 
-#include <mrpt/config/CConfigFile.h>
 
-#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
@@ -81,17 +79,7 @@ int runApp(const std::string& name, const std::function<void()>& body)
 RangefinderParams loadRangefinderIni(const std::string& file, const std::string& section,
 									 mrpt::system::COutputLogger& log)
 {
-	if (!std::filesystem::is_regular_file(file)) throw std::runtime_error("cannot open ini file '" + file + "'");
-	RangefinderParams p;
-	try
-	{
-		requireNoRepeatedKeys(file);
-		p.loadFromConfig(mrpt::config::CConfigFile(file), section);
-	}
-	catch (const std::invalid_argument& e)
-	{
-		throw std::runtime_error(file + ": " + e.what());
-	}
+	const RangefinderParams p = RangefinderParams::loadFromFile(file, section);
 	log.logStr(mrpt::system::LVL_INFO, "options from " + file + " [" + section + "]:\n" + p.asIni());
 	return p;
 }

@@ -18,6 +18,22 @@ double wrapToPi(double a)
 	if (a <= 0) a += 2 * kPi;
 	return a - kPi;  // (-pi, pi]
 }
+
+/** OCamCalib: the ray at image radius rho is (rho, z(rho)), the centre's along -z. */
+double ocamTheta(const std::vector<double>& poly, double rho)
+{
+	double z = 0;
+	for (auto a = poly.rbegin(); a != poly.rend(); ++a) z = z * rho + *a;  // Horner
+	return std::atan2(rho, -z);
+}
+
+/** Mei: the normalised image radius of incidence theta, distortion included (times gamma: pixels). */
+double meiRadius(const CameraParams& p, double theta)
+{
+	const double r = std::sin(theta) / (std::cos(theta) + p.xi);  // the sphere's point, projected
+	const double r2 = r * r;
+	return r * (1 + p.k1 * r2 + p.k2 * r2 * r2);
+}
 }  // namespace
 
 std::string toString(MirrorModel m)
@@ -99,9 +115,7 @@ void CameraParams::validate() const
 		double last = 0;
 		for (double rho = 1; rho <= limit; rho += 1)
 		{
-			double z = 0;
-			for (auto a = ocam_poly.rbegin(); a != ocam_poly.rend(); ++a) z = z * rho + *a;
-			const double theta = std::atan2(rho, -z);
+			const double theta = ocamTheta(ocam_poly, rho);
 			require(theta > last, "ocam_poly's incidence angle must grow with the image radius (it turns back at " +
 									  std::to_string(static_cast<int>(rho)) + " px)");
 			if (theta > 2.967) break;  // 170 degrees: far past anything on the floor
@@ -112,14 +126,10 @@ void CameraParams::validate() const
 	{
 		// The image radius must grow with theta up to the horizon, or a radius
 		// would stand for two incidence angles.
-		const auto radial = [&](double theta) {
-			const double r = std::sin(theta) / (std::cos(theta) + xi);
-			return r * (1 + k1 * r * r + k2 * r * r * r * r);
-		};
 		double last = 0;
 		for (int i = 1; i <= 90; ++i)
 		{
-			const double now = radial(i * 3.14159265358979323846 / 180);
+			const double now = meiRadius(*this, i * kPi / 180);
 			require(now > last, "the mei model's image radius must grow with the incidence angle up to 90 degrees "
 								"(check xi, k1, k2)");
 			last = now;
@@ -133,20 +143,13 @@ OmniCameraModel::OmniCameraModel(const CameraParams& p) : p_(p)
 	rho_limit_ = std::hypot(p_.image_width, p_.image_height);
 }
 
-double OmniCameraModel::ocamTheta(double rho) const
-{
-	double z = 0;
-	for (auto a = p_.ocam_poly.rbegin(); a != p_.ocam_poly.rend(); ++a) z = z * rho + *a;  // Horner
-	return std::atan2(rho, -z);
-}
-
 double OmniCameraModel::thetaFromRho(double rho) const
 {
 	switch (p_.mirror_model)
 	{
 		case MirrorModel::Paraboloid: return 2.0 * std::atan(rho / p_.R);
 		case MirrorModel::FirstOrder: return rho / p_.alpha;
-		case MirrorModel::OCamCalib: return ocamTheta(rho);
+		case MirrorModel::OCamCalib: return ocamTheta(p_.ocam_poly, rho);
 		case MirrorModel::Mei: break;
 	}
 	// Undo the distortion (Newton on r (1 + k1 r^2 + k2 r^4) = rd), then lift
@@ -177,19 +180,17 @@ double OmniCameraModel::rhoFromTheta(double theta) const
 		{
 			// theta(rho) grows (validate() checks it): bisection, to 1e-9 px.
 			double lo = 0, hi = rho_limit_;
-			if (ocamTheta(hi) < theta) return std::numeric_limits<double>::infinity();
+			if (ocamTheta(p_.ocam_poly, hi) < theta) return std::numeric_limits<double>::infinity();
 			while (hi - lo > 1e-9)
 			{
 				const double mid = 0.5 * (lo + hi);
-				(ocamTheta(mid) < theta ? lo : hi) = mid;
+				(ocamTheta(p_.ocam_poly, mid) < theta ? lo : hi) = mid;
 			}
 			return 0.5 * (lo + hi);
 		}
 		case MirrorModel::Mei: break;
 	}
-	const double r = std::sin(theta) / (std::cos(theta) + p_.xi);  // the sphere's point, projected
-	const double r2 = r * r;
-	return p_.gamma * r * (1 + p_.k1 * r2 + p_.k2 * r2 * r2);
+	return p_.gamma * meiRadius(p_, theta);
 }
 
 double OmniCameraModel::distanceFromRho(double rho) const

@@ -2,10 +2,12 @@
 
 #include "omnirange/io/OptionsTable.h"
 
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileBase.h>
 #include <opencv2/core.hpp>
 
 #include <algorithm>
+#include <filesystem>
 
 namespace omnirange
 {
@@ -42,6 +44,22 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 				 [](P& p) -> auto& { return p.sensor_pose; })
 		.add("std_error", "m", "stdError written into each scan", [](P& p) -> auto& { return p.std_error; });
 	return t;
+}
+
+RangefinderParams RangefinderParams::loadFromFile(const std::string& path, const std::string& section)
+{
+	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open ini file '" + path + "'");
+	RangefinderParams p;
+	try
+	{
+		requireNoRepeatedKeys(path);
+		p.loadFromConfig(mrpt::config::CConfigFile(path), section);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(path + ": " + e.what());
+	}
+	return p;
 }
 
 void RangefinderParams::loadFromConfig(const mrpt::config::CConfigFileBase& c, const std::string& s,
@@ -94,9 +112,16 @@ Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& col
 {
 }
 
-RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapted) const
+void Rangefinder::withClassifierFor(const cv::Mat& bgr, const PixelClassifier* adapted,
+								   const std::function<void(const PixelClassifier&)>& use) const
 {
 	const PixelClassifier& classifier = adapted ? *adapted : static_cast<const PixelClassifier&>(classifier_);
+	if (!compensate_) return use(classifier);
+	use(CompensatedClassifier(classifier, compensatingGains(reference_, ring_.medianColour(bgr))));
+}
+
+RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapted) const
+{
 	scanner_.checkImage(bgr);
 	RangeScan out;
 	// 0. Light: see the image as if in training's light, through the floor
@@ -104,13 +129,7 @@ RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapte
 	// 1-3. Classify the pixels along each polar scanline (eq. (5)), find
 	//      where the floor ends with the N/K filters (Fig. 3), and convert
 	//      that pixel to metres (eq. (6)).
-	if (compensate_)
-	{
-		const CompensatedClassifier seen(classifier, compensatingGains(reference_, ring_.medianColour(bgr)));
-		out.rays = scanner_.scan(bgr, seen);
-	}
-	else
-		out.rays = scanner_.scan(bgr, classifier);
+	withClassifierFor(bgr, adapted, [&](const PixelClassifier& seen) { out.rays = scanner_.scan(bgr, seen); });
 	// 4. Reject the rays that disagree with both their neighbours.
 	out.outliers = rejectOutliers(out.rays, p_.outliers);
 	return out;

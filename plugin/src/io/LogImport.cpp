@@ -1,6 +1,7 @@
 #include "omnirange/io/LogImport.h"
 
 #include "omnirange/io/AtomicWrite.h"
+#include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/OptionsTable.h"
 #include "omnirange/io/RawlogWriter.h"
 
@@ -8,12 +9,10 @@
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <set>
 #include <stdexcept>
 
@@ -23,37 +22,24 @@ namespace omnirange
 {
 namespace
 {
-/** The comma-separated fields of each row of a CSV, with its line number. */
-struct CsvRow
+/** Calls `row(fields)` for every row of a CSV (fields split at commas,
+ * trimmed); errors name the file and line (forEachDataLine). */
+void forEachCsvRow(const std::string& path, const std::string& what,
+				   const std::function<void(const std::vector<std::string>&)>& row)
 {
-	int line{0};
 	std::vector<std::string> fields;
-};
-
-std::vector<CsvRow> readCsv(const std::string& path, const std::string& what)
-{
-	std::ifstream in(path);
-	if (!in) throw std::runtime_error("cannot read the " + what + " '" + path + "'");
-	std::vector<CsvRow> rows;
-	std::string line;
-	for (int n = 1; std::getline(in, line); ++n)
-	{
-		const std::string t = trimmed(line);
-		if (t.empty() || t[0] == '#') continue;
-		CsvRow row{n, {}};
+	const int rows = forEachDataLine(path, what, [&](int, const std::string& t) {
+		fields.clear();
 		std::size_t start = 0;
 		for (std::size_t comma; (comma = t.find(',', start)) != std::string::npos; start = comma + 1)
-			row.fields.push_back(trimmed(t.substr(start, comma - start)));
-		row.fields.push_back(trimmed(t.substr(start)));
-		rows.push_back(std::move(row));
-	}
-	if (rows.empty()) throw std::runtime_error("the " + what + " '" + path + "' has no rows");
-	return rows;
+			fields.push_back(trimmed(t.substr(start, comma - start)));
+		fields.push_back(trimmed(t.substr(start)));
+		row(fields);
+	});
+	if (rows == 0) throw std::runtime_error("the " + what + " '" + path + "' has no rows");
 }
 
-std::string at(const std::string& path, int line) { return path + ":" + std::to_string(line) + ": "; }
-
-double number(const std::string& path, int line, const std::string& field, const std::string& name)
+double number(const std::string& field, const std::string& name)
 {
 	try
 	{
@@ -61,16 +47,16 @@ double number(const std::string& path, int line, const std::string& field, const
 	}
 	catch (const std::invalid_argument& e)
 	{
-		throw std::runtime_error(at(path, line) + name + " '" + field + "': " + e.what());
+		throw std::invalid_argument(name + " '" + field + "': " + e.what());
 	}
 }
 
 /** Times must increase strictly down a file. */
-void requireAfter(double previous, double time, const std::string& where)
+void requireAfter(double previous, double time)
 {
 	if (!(time > previous))
-		throw std::runtime_error(where + "time " + formatDouble(time) + " is not after the one before it (" +
-								 formatDouble(previous) + "): rows must be in time order");
+		throw std::invalid_argument("time " + formatDouble(time) + " is not after the one before it (" +
+									formatDouble(previous) + "): rows must be in time order");
 }
 
 bool isImageFile(const fs::path& p)
@@ -89,17 +75,15 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 	{
 		const fs::path base = fs::path(list_csv).parent_path();
 		double previous = -INFINITY;
-		for (const CsvRow& r : readCsv(list_csv, "image list"))
-		{
-			if (r.fields.size() != 2) throw std::runtime_error(at(list_csv, r.line) + "expected TIME, FILE");
-			const double t = number(list_csv, r.line, r.fields[0], "time");
-			requireAfter(previous, t, at(list_csv, r.line));
+		forEachCsvRow(list_csv, "image list", [&](const std::vector<std::string>& f) {
+			if (f.size() != 2) throw std::invalid_argument("expected TIME, FILE");
+			const double t = number(f[0], "time");
+			requireAfter(previous, t);
 			previous = t;
-			const fs::path file = base / r.fields[1];
-			if (!fs::is_regular_file(file))
-				throw std::runtime_error(at(list_csv, r.line) + "no image file '" + file.string() + "'");
+			const fs::path file = base / f[1];
+			if (!fs::is_regular_file(file)) throw std::invalid_argument("no image file '" + file.string() + "'");
 			images.push_back({t, file.string()});
-		}
+		});
 		return images;
 	}
 	if (!fs::is_directory(dir)) throw std::runtime_error("no image folder '" + dir + "'");
@@ -130,20 +114,18 @@ std::vector<LaserRow> readLaserCsv(const std::string& path)
 {
 	std::vector<LaserRow> rows;
 	double previous = -INFINITY;
-	for (const CsvRow& r : readCsv(path, "laser log"))
-	{
-		if (r.fields.size() < 3) throw std::runtime_error(at(path, r.line) + "expected TIME, then two or more ranges");
+	forEachCsvRow(path, "laser log", [&](const std::vector<std::string>& f) {
+		if (f.size() < 3) throw std::invalid_argument("expected TIME, then two or more ranges");
 		LaserRow row;
-		row.time = number(path, r.line, r.fields[0], "time");
-		requireAfter(previous, row.time, at(path, r.line));
+		row.time = number(f[0], "time");
+		requireAfter(previous, row.time);
 		previous = row.time;
-		for (std::size_t i = 1; i < r.fields.size(); ++i)
-			row.ranges.push_back(number(path, r.line, r.fields[i], "range " + std::to_string(i - 1)));
+		for (std::size_t i = 1; i < f.size(); ++i) row.ranges.push_back(number(f[i], "range " + std::to_string(i - 1)));
 		if (!rows.empty() && row.ranges.size() != rows.front().ranges.size())
-			throw std::runtime_error(at(path, r.line) + std::to_string(row.ranges.size()) + " ranges, but the first row has " +
-									 std::to_string(rows.front().ranges.size()));
+			throw std::invalid_argument(std::to_string(row.ranges.size()) + " ranges, but the first row has " +
+										std::to_string(rows.front().ranges.size()));
 		rows.push_back(std::move(row));
-	}
+	});
 	return rows;
 }
 
@@ -151,18 +133,15 @@ std::vector<OdometryRow> readOdometryCsv(const std::string& path)
 {
 	std::vector<OdometryRow> rows;
 	double previous = -INFINITY;
-	for (const CsvRow& r : readCsv(path, "odometry log"))
-	{
-		if (r.fields.size() != 4) throw std::runtime_error(at(path, r.line) + "expected TIME, x, y, phi");
+	forEachCsvRow(path, "odometry log", [&](const std::vector<std::string>& f) {
+		if (f.size() != 4) throw std::invalid_argument("expected TIME, x, y, phi");
 		OdometryRow row;
-		row.time = number(path, r.line, r.fields[0], "time");
-		requireAfter(previous, row.time, at(path, r.line));
+		row.time = number(f[0], "time");
+		requireAfter(previous, row.time);
 		previous = row.time;
-		row.x = number(path, r.line, r.fields[1], "x");
-		row.y = number(path, r.line, r.fields[2], "y");
-		row.phi = number(path, r.line, r.fields[3], "phi");
+		row.x = number(f[1], "x"), row.y = number(f[2], "y"), row.phi = number(f[3], "phi");
 		rows.push_back(row);
-	}
+	});
 	return rows;
 }
 
@@ -173,13 +152,17 @@ LogImportSummary importLogs(const LogImportOptions& o)
 	requireOutputsAreNotInputs({o.output}, {o.image_list, o.laser_csv, o.odometry_csv});
 	// 1. Read and check everything before writing anything.
 	const std::vector<TimedImage> images = listImages(o.images_dir, o.image_list);
+	// The output's image folder is replaced at the end: it must hold no input.
+	std::set<std::string> image_dirs;
+	for (const TimedImage& im : images) image_dirs.insert(fs::path(im.file).parent_path().string());
+	requireOutputsAreNotInputs({imagesDirFor(o.output)}, {image_dirs.begin(), image_dirs.end()});
 	const std::vector<LaserRow> scans = o.laser_csv.empty() ? std::vector<LaserRow>{} : readLaserCsv(o.laser_csv);
 	const std::vector<OdometryRow> odometry =
 		o.odometry_csv.empty() ? std::vector<OdometryRow>{} : readOdometryCsv(o.odometry_csv);
 	LogImportSummary s;
 	for (const TimedImage& im : images)
 	{
-		const cv::Mat m = cv::imread(im.file, cv::IMREAD_COLOR);
+		const cv::Mat m = decodeImageFile(im.file, o.omni_label);
 		if (m.empty()) throw std::runtime_error("'" + im.file + "' cannot be read as an image");
 		if (s.image_width == 0) s.image_width = m.cols, s.image_height = m.rows;
 		if (m.cols != s.image_width || m.rows != s.image_height)

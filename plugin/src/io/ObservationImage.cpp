@@ -27,8 +27,9 @@ std::string incompleteImage(const std::vector<unsigned char>& bytes)
 	if (b.size() >= 8 && b.substr(1, 3) == "PNG") return ends_with_within("IEND", 16) ? "" : "truncated: no PNG end chunk";
 	return "";
 }
+}  // namespace
 
-cv::Mat readImageFile(const std::string& file, const std::string& label)
+cv::Mat decodeImageFile(const std::string& file, const std::string& label)
 {
 	std::ifstream f(file, std::ios::binary | std::ios::ate);
 	std::vector<unsigned char> bytes(f ? static_cast<std::size_t>(f.tellg()) : 0);
@@ -39,7 +40,6 @@ cv::Mat readImageFile(const std::string& file, const std::string& label)
 		throw std::runtime_error("image '" + file + "' of " + label + " is " + why);
 	return bytes.empty() ? cv::Mat() : cv::imdecode(bytes, cv::IMREAD_COLOR);
 }
-}  // namespace
 
 cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
 {
@@ -49,7 +49,7 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
 		// Read the file ourselves: CImage's lazy loading shares state between
 		// threads and reports a missing file with a stack trace.
 		const std::string file = obs.image.getExternalStorageFileAbsolutePath();
-		if (std::filesystem::is_regular_file(file)) img = readImageFile(file, obs.sensorLabel);
+		if (std::filesystem::is_regular_file(file)) img = decodeImageFile(file, obs.sensorLabel);
 		if (img.empty())
 			throw std::runtime_error("image '" + file + "' of " + obs.sensorLabel +
 									 " is missing or unreadable");

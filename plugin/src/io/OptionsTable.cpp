@@ -32,6 +32,30 @@ double parseDouble(const std::string& text)
 	return v;
 }
 
+int forEachDataLine(const std::string& path, const std::string& what,
+					const std::function<void(int, const std::string&)>& row)
+{
+	std::ifstream in(path);
+	if (!in) throw std::runtime_error("cannot read the " + what + " '" + path + "'");
+	int rows = 0;
+	std::string line;
+	for (int n = 1; std::getline(in, line); ++n)
+	{
+		const std::string t = trimmed(line);
+		if (t.empty() || t[0] == '#') continue;
+		try
+		{
+			row(n, t);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw std::runtime_error(path + ":" + std::to_string(n) + ": " + e.what());
+		}
+		++rows;
+	}
+	return rows;
+}
+
 std::vector<double> parseDoubles(const std::string& text)
 {
 	std::vector<double> v;

@@ -9,19 +9,22 @@
 
 namespace omnirange
 {
+cv::Mat withGain(const cv::Mat& bgr, double gain)
+{
+	if (gain == 1.0) return bgr;
+	cv::Mat m;
+	bgr.convertTo(m, -1, gain);  // saturates at 255, as a sensor does
+	return m;
+}
+
 namespace
 {
 /** The image as seen, and (when a > 0) as seen with gains 1 - a and 1 + a. */
 std::vector<cv::Mat> asInOtherLight(const cv::Mat& bgr, double a)
 {
 	std::vector<cv::Mat> seen{bgr};
-	if (a <= 0) return seen;
-	for (const double gain : {1.0 - a, 1.0 + a})
-	{
-		cv::Mat m;
-		bgr.convertTo(m, -1, gain);  // saturates at 255, as a sensor does
-		seen.push_back(m);
-	}
+	if (a > 0)
+		for (const double gain : {1.0 - a, 1.0 + a}) seen.push_back(withGain(bgr, gain));
 	return seen;
 }
 }  // namespace
@@ -134,6 +137,14 @@ TrainingFrame HistogramTrainer::add(const cv::Mat& omni, const mrpt::obs::CObser
 	for (int c = 0; c < 3; ++c) ring_sum_[c] += ring[c];
 	++frames_;
 	return f;
+}
+
+void HistogramTrainer::merge(const HistogramTrainer& other)
+{
+	hist_.merge(other.hist_);
+	obstacles_.merge(other.obstacles_);
+	for (int c = 0; c < 3; ++c) ring_sum_[c] += other.ring_sum_[c];
+	frames_ += other.frames_;
 }
 
 ColourModel HistogramTrainer::model() const

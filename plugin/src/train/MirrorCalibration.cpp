@@ -13,6 +13,25 @@
 
 namespace omnirange
 {
+namespace
+{
+double median(std::vector<double> v)
+{
+	std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+	return v[v.size() / 2];
+}
+
+/** Which residuals are within 3x their median (at least 3x `floor`): the
+ * pairs a fit explains, the others being misclassified rays. */
+std::vector<bool> explained(const std::vector<double>& residual, double floor)
+{
+	const double cut = 3.0 * std::max(floor, median(residual));
+	std::vector<bool> keep;
+	for (const double r : residual) keep.push_back(r <= cut);
+	return keep;
+}
+}  // namespace
+
 double fitAlpha(const std::vector<RhoRangePair>& pairs, double h)
 {
 	if (!(h > 0)) throw std::invalid_argument("fitAlpha: h must be > 0 m");
@@ -79,12 +98,10 @@ HeightFit fitHeight(const OmniCameraModel& camera, const std::vector<RhoRangePai
 	const double first = fit(all);
 	std::vector<double> residual;
 	for (const auto& x : all) residual.push_back(std::abs(x.d - first * x.t));
-	std::vector<double> sorted = residual;
-	std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-	const double cut = 3.0 * std::max(1e-9, sorted[sorted.size() / 2]);
+	const std::vector<bool> keep = explained(residual, 1e-9);
 	std::vector<Sample> kept;
 	for (std::size_t i = 0; i < all.size(); ++i)
-		if (residual[i] <= cut) kept.push_back(all[i]);
+		if (keep[i]) kept.push_back(all[i]);
 	if (kept.size() < 2) kept = all;
 	HeightFit r{fit(kept), 0, kept.size(), 0};
 	// Its standard error from the images' own fits.
@@ -120,12 +137,6 @@ namespace
 {
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::obs::CObservationImage;
-
-double median(std::vector<double> v)
-{
-	std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-	return v[v.size() / 2];
-}
 
 /** The (boundary rho, laser range) pairs of the chosen image/scan pairs. */
 std::vector<RhoRangePair> collectPairs(const Rangefinder& rf, const MirrorCalibrationOptions& o, Progress* progress)
@@ -163,10 +174,10 @@ std::vector<RhoRangePair> dropWorstPairs(const std::vector<RhoRangePair>& pairs,
 	const OmniCameraModel model(para);
 	std::vector<double> residual;
 	for (const auto& p : pairs) residual.push_back(std::abs(model.thetaFromRho(p.rho) - std::atan2(p.range, given.h)));
-	const double cut = 3.0 * std::max(1e-6, median(residual));
+	const std::vector<bool> keep = explained(residual, 1e-6);
 	std::vector<RhoRangePair> kept;
 	for (std::size_t i = 0; i < pairs.size(); ++i)
-		if (residual[i] <= cut) kept.push_back(pairs[i]);
+		if (keep[i]) kept.push_back(pairs[i]);
 	return kept;
 }
 }  // namespace

@@ -2,31 +2,15 @@
 
 #include "omnirange/io/OptionsTable.h"
 
-#include <fstream>
 #include <stdexcept>
 
 namespace omnirange
 {
 OCamCalibFile readOCamCalib(const std::string& path)
 {
-	std::ifstream in(path);
-	if (!in) throw std::runtime_error("cannot read the OCamCalib file '" + path + "'");
 	// The five value lines, in the toolbox's order; comments and blanks between.
 	std::vector<std::pair<int, std::vector<double>>> rows;
-	std::string line;
-	for (int n = 1; std::getline(in, line); ++n)
-	{
-		const std::string t = trimmed(line);
-		if (t.empty() || t[0] == '#') continue;
-		try
-		{
-			rows.push_back({n, parseDoubles(t)});
-		}
-		catch (const std::invalid_argument& e)
-		{
-			throw std::runtime_error(path + ":" + std::to_string(n) + ": " + e.what() + " in '" + t + "'");
-		}
-	}
+	forEachDataLine(path, "OCamCalib file", [&](int n, const std::string& t) { rows.push_back({n, parseDoubles(t)}); });
 	const auto fail = [&](std::size_t k, const std::string& what) {
 		const std::string where = k < rows.size() ? ":" + std::to_string(rows[k].first) : "";
 		throw std::runtime_error(path + where + ": " + what + " (is this OCamCalib's calib_results.txt?)");

@@ -27,11 +27,6 @@ struct Validation
 
 using TrainerKey = std::tuple<ColourSpace, int, double>;  // colour space, bins, light change
 
-bool isSelected(const RawlogTrainingOptions& o, int k)
-{
-	return !((o.until > 0 && k >= o.until) || k < o.first || (k - o.first) % o.every != 0);
-}
-
 /** How many pairs the options select: a pass that decodes no image. */
 int countSelected(const RawlogTrainingOptions& o)
 {
@@ -39,7 +34,7 @@ int countSelected(const RawlogTrainingOptions& o)
 	int pairs = 0, selected = 0;
 	loop.onPair<CObservationImage, CObservation2DRangeScan>(
 		o.omni_label, o.laser_label, o.max_dt,
-		[&](const CObservationImage::Ptr&, const CObservation2DRangeScan::Ptr&) { selected += isSelected(o, pairs++); });
+		[&](const CObservationImage::Ptr&, const CObservation2DRangeScan::Ptr&) { selected += o.selects(pairs++); });
 	loop.run();
 	if (pairs == 0) throw std::runtime_error(loop.describeNoPair() + "; learning needs both");
 	return selected;
@@ -48,17 +43,15 @@ int countSelected(const RawlogTrainingOptions& o)
 /** The k-th held-aside image in the light it is shown in: as seen, dimmer, brighter, in turn. */
 cv::Mat inChangedLight(const cv::Mat& bgr, int k, double v)
 {
-	const double gain = k % 3 == 0 ? 1.0 : k % 3 == 1 ? 1.0 - v : 1.0 + v;
-	if (gain == 1.0) return bgr;
-	cv::Mat m;
-	bgr.convertTo(m, -1, gain);
-	return m;
+	return withGain(bgr, k % 3 == 0 ? 1.0 : k % 3 == 1 ? 1.0 - v : 1.0 + v);
 }
 
-/** Trains one histogram per key on the training pairs and keeps the held-aside ones. */
+/** Trains one histogram per key on the training pairs and keeps the
+ * held-aside ones; `aside` counts the held-aside pairs too (every one, kept
+ * for validation or not), for the refit. */
 void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const LearningOptions& lo,
-			 std::map<TrainerKey, HistogramTrainer>& trainers, std::vector<Validation>& validation, int& trained,
-			 Progress* progress)
+			 std::map<TrainerKey, HistogramTrainer>& trainers, std::map<TrainerKey, HistogramTrainer>& aside,
+			 std::vector<Validation>& validation, int& trained, int& set_aside, Progress* progress)
 {
 	const std::vector<PairRole> roles = splitPairs(lo, countSelected(o));
 	RawlogProcessor loop(o.input);
@@ -66,14 +59,22 @@ void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const 
 	loop.onPair<CObservationImage, CObservation2DRangeScan>(
 		o.omni_label, o.laser_label, o.max_dt,
 		[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& laser) {
-			if (!isSelected(o, pairs++)) return;
+			if (!o.selects(pairs++)) return;
 			const int s = selected++;
-			if (s >= static_cast<int>(roles.size()) || roles[s] == PairRole::Unused) return;
+			if (s >= static_cast<int>(roles.size())) return;
+			const bool refit = lo.refit && !aside.empty();
+			if (roles[s] == PairRole::Unused && !refit) return;
 			const cv::Mat bgr = decodeImage(*image, rp.camera);
-			if (roles[s] == PairRole::Validate)
+			if (roles[s] != PairRole::Train)
 			{
-				const int k = static_cast<int>(validation.size());
-				validation.push_back({inChangedLight(bgr, k, lo.validation_light_change), laser});
+				if (refit)
+				{
+					for (auto& [key, trainer] : aside) trainer.add(bgr, *laser);
+					++set_aside;
+				}
+				if (roles[s] == PairRole::Validate)
+					validation.push_back(
+						{inChangedLight(bgr, static_cast<int>(validation.size()), lo.validation_light_change), laser});
 				return;
 			}
 			for (auto& [key, trainer] : trainers) trainer.add(bgr, *laser);
@@ -129,19 +130,21 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (bins.empty()) bins = {o.training.bins, std::min(64, 2 * o.training.bins)};
 	std::sort(bins.begin(), bins.end());
 	bins.erase(std::unique(bins.begin(), bins.end()), bins.end());
-	std::map<TrainerKey, HistogramTrainer> trainers;
+	std::map<TrainerKey, HistogramTrainer> trainers, aside;
 	for (const ColourSpace space : lo.spaces)
 		for (const int b : bins)
 			for (const double light : lo.light_changes)
 			{
 				TrainingParams tp = o.training;
 				tp.space = space, tp.bins = b, tp.light_change = light;
-				trainers.emplace(TrainerKey{space, b, light},
-								 HistogramTrainer(camera, start.sensor_pose, base_range, start.scanner.max_range, tp));
+				const HistogramTrainer t(camera, start.sensor_pose, base_range, start.scanner.max_range, tp);
+				trainers.emplace(TrainerKey{space, b, light}, t);
+				if (lo.refit) aside.emplace(TrainerKey{space, b, light}, t);
 			}
 	std::vector<Validation> validation;
 	LearningResult r;
-	collect(start, o, lo, trainers, validation, r.training_pairs, progress);
+	int set_aside = 0;
+	collect(start, o, lo, trainers, aside, validation, r.training_pairs, set_aside, progress);
 	r.validation_pairs = static_cast<int>(validation.size());
 	char light[100] = ", as seen";
 	if (lo.validation_light_change > 0)
@@ -173,14 +176,13 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
 	r.training = o.training;
 	r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
-	if (lo.refit)
+	if (lo.refit)  // the winner's histogram with the held-aside pairs' counts added
 	{
-		RawlogTrainingOptions all = o;
-		all.training = r.training;
-		all.figures_prefix.clear();
-		const RawlogTrainingResult refitted = trainFromRawlog(r.params, all);
-		r.model = refitted.model;
-		r.refit_pairs = refitted.used;
+		const TrainerKey winner{r.best.space, r.best.bins, r.best.light_change};
+		HistogramTrainer all = trainers.at(winner);
+		all.merge(aside.at(winner));
+		r.model = all.model();
+		r.refit_pairs = r.training_pairs + set_aside;
 	}
 	return r;
 }

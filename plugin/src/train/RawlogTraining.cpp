@@ -37,8 +37,7 @@ RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTr
 		o.omni_label, o.laser_label, o.max_dt,
 		[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& laser) {
 			const int k = r.pairs++;
-			if (o.until > 0 && k >= o.until) return;  // keep counting the pairs
-			if (k < o.first || (k - o.first) % o.every != 0) return;
+			if (!o.selects(k)) return;  // keep counting the pairs
 			if (o.max_frames > 0 && r.used >= o.max_frames) return loop.stop();
 			const TrainingFrame f = trainer.add(decodeImage(*image, rp.camera), *laser);
 			r.pixels += f.pixels;

@@ -123,8 +123,6 @@ class OmniCameraModel
 	static constexpr double kHalfPi = 1.57079632679489661923;
 
    private:
-	double ocamTheta(double rho) const;
-
 	CameraParams p_;
 	double rho_limit_{0};  ///< [px] the image's diagonal: no radius is sought beyond it
 };

@@ -61,6 +61,9 @@ struct RangefinderParams
 	double std_error{0.10};
 
 	static const OptionsTable<RangefinderParams>& table();
+	/** [section] of the ini file `path`, strictly: throws std::runtime_error
+	 * "PATH: why" if the file is missing, a key repeats or a value is bad. */
+	static RangefinderParams loadFromFile(const std::string& path, const std::string& section);
 	/** Reads every key of `section`; throws std::invalid_argument naming the
 	 * section and key on an unknown key (one not ours nor in `also_allowed`),
 	 * an unparsable or an impossible value. */
@@ -95,6 +98,12 @@ class Rangefinder
 	/** One decoded BGR image of the camera's size -> one scan. `adapted`:
 	 * classify with it instead of the trained classifier (FloorAdaptation). */
 	RangeScan process(const cv::Mat& bgr, const PixelClassifier* adapted = nullptr) const;
+
+	/** Calls `use` with the classifier process() classifies `bgr` through
+	 * (`adapted` or the trained one, seen through exposure compensation when
+	 * it is on), so that a view of the classification shows what the scan saw. */
+	void withClassifierFor(const cv::Mat& bgr, const PixelClassifier* adapted,
+						   const std::function<void(const PixelClassifier&)>& use) const;
 
 	/** The scan as an MRPT observation: S rays over 2 pi (S-1)/S, ray i at
 	 * scanline i's bearing, valid only where status is Hit. */

@@ -9,6 +9,11 @@
 
 namespace omnirange
 {
+/** An image file (of the sensor `label`) as 8-bit BGR; empty if it does not
+ * decode. Throws std::runtime_error naming the file if it cannot be read or
+ * is a cut JPEG or PNG (which would decode with grey rows and only a warning). */
+cv::Mat decodeImageFile(const std::string& file, const std::string& label);
+
 /** The observation's image as 8-bit BGR. Throws std::runtime_error naming
  * the file if an external image is missing or unreadable. Thread-safe. */
 cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs);

@@ -46,6 +46,14 @@ std::string formatDoubles(const std::vector<double>& v);  ///< blank-separated
 /** `s` without leading and trailing blanks (spaces, tabs, CR, LF). */
 std::string trimmed(const std::string& s);
 
+/** Calls `row(line_number, text)` for every line of the text file `path`
+ * that is neither blank nor a '#' comment, trimmed. A std::invalid_argument
+ * from `row` becomes std::runtime_error("PATH:LINE: what"). Throws
+ * std::runtime_error("cannot read the WHAT 'PATH'") if the file cannot be
+ * opened. Returns how many lines `row` was given. */
+int forEachDataLine(const std::string& path, const std::string& what,
+					const std::function<void(int, const std::string&)>& row);
+
 /** What one line of an ini file is: a section header (`name` the section),
  * a "key = value" line (`name` the key), or neither (a comment, a blank). */
 struct IniLine

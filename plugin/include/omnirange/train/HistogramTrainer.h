@@ -45,6 +45,9 @@ struct TrainingFrame
 	std::size_t obstacle_pixels{0};  ///< obstacle pixels counted (beyond the laser's hits)
 };
 
+/** The 8-bit image as the camera would see it with `gain` more light (saturating at 255). */
+cv::Mat withGain(const cv::Mat& bgr, double gain);
+
 class HistogramTrainer
 {
    public:
@@ -56,6 +59,9 @@ class HistogramTrainer
 
 	/** Adds one image with the laser scan taken with it. */
 	TrainingFrame add(const cv::Mat& omni_bgr, const mrpt::obs::CObservation2DRangeScan& laser);
+
+	/** Adds what `other` (trained with the same camera and parameters) counted. */
+	void merge(const HistogramTrainer& other);
 
 	const ColourHistogram& histogram() const { return hist_; }
 	/** The floor's colours, the obstacles', and the reference colour of

@@ -30,6 +30,8 @@ struct RawlogTrainingOptions
 	std::string figures_prefix;
 	int figures_frame{0};
 
+	/** Whether the k-th image/laser pair of the rawlog is used (first, every, until). */
+	bool selects(int k) const { return !((until > 0 && k >= until) || k < first || (k - first) % every != 0); }
 	/** Throws std::invalid_argument on an impossible value. */
 	void validate() const;
 };
