@@ -35,6 +35,18 @@ TEST(ExposureCompensation, GainsBringTheColourBackAndAreBounded)
 	EXPECT_DOUBLE_EQ(compensatingGains({200, 200, 200}, {10, 200, 200})[0], 2.0);
 }
 
+TEST(ExposureCompensation, ChangesWithinTheDeadbandAreLeftAlone)
+{
+	// 2 % darker on every channel: within a 3 % band, no gain at all.
+	const auto small = compensatingGains({100, 100, 100}, {98, 98, 98}, 0.03);
+	for (double g : small) EXPECT_DOUBLE_EQ(g, 1.0);
+	// One channel 10 % off: all three gains as computed, the small ones too.
+	const auto large = compensatingGains({100, 100, 110}, {98, 98, 100}, 0.03);
+	EXPECT_DOUBLE_EQ(large[0], 100.0 / 98);
+	EXPECT_DOUBLE_EQ(large[1], 100.0 / 98);
+	EXPECT_DOUBLE_EQ(large[2], 1.1);
+}
+
 TEST(ExposureCompensation, ADarkerImageOfTheFloorIsStillFloor)
 {
 	const OmniCameraModel cam{CameraParams{}};

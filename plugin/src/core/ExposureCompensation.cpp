@@ -48,10 +48,17 @@ std::array<double, 3> FloorRing::median(const std::vector<cv::Vec3b>& colours)
 
 std::array<double, 3> FloorRing::medianColour(const cv::Mat& bgr) const { return median(colours(bgr)); }
 
-std::array<double, 3> compensatingGains(const std::array<double, 3>& reference, const std::array<double, 3>& current)
+std::array<double, 3> compensatingGains(const std::array<double, 3>& reference, const std::array<double, 3>& current,
+										double deadband)
 {
 	std::array<double, 3> g{};
-	for (int c = 0; c < 3; ++c) g[c] = std::clamp(reference[c] / std::max(1.0, current[c]), 0.5, 2.0);
+	bool small = true;
+	for (int c = 0; c < 3; ++c)
+	{
+		g[c] = std::clamp(reference[c] / std::max(1.0, current[c]), 0.5, 2.0);
+		small = small && std::abs(g[c] - 1.0) < deadband;
+	}
+	if (small) g = {1.0, 1.0, 1.0};
 	return g;
 }
 

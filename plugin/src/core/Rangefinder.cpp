@@ -31,6 +31,9 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 			 "bring each image's floor just beyond the base back to its colour in training before classifying "
 			 "(needs a histogram file that records it)",
 			 [](P& p) -> auto& { return p.exposure_compensation; })
+		.add("exposure_deadband", "-",
+			 "the exposure compensation leaves an image as it is when every channel's gain is within this of 1",
+			 [](P& p) -> auto& { return p.exposure_deadband; })
 		.add("floor_adaptation", "bool",
 			 "also call free the colours of the floor just beyond the base in recent images (no laser needed; "
 			 "omnirange-scan and the sensor, in image order)",
@@ -88,6 +91,7 @@ void RangefinderParams::validate() const
 	require(threshold >= 0.0 && threshold <= 1.0, "threshold (Theta) must be within [0, 1]");
 	require(obstacle_ratio >= 0.0 && obstacle_ratio <= 1000.0, "obstacle_ratio must be within [0, 1000]");
 	require(histogram_smoothing >= 0.0 && histogram_smoothing <= 16.0, "histogram_smoothing must be within [0, 16] bins");
+	require(exposure_deadband >= 0.0 && exposure_deadband < 1.0, "exposure_deadband must be within [0, 1)");
 	require(!sensor_label.empty(), "sensor_label is empty");
 	require(std_error >= 0, "std_error must be >= 0 m");
 	require(adaptation_memory >= 1.0 && adaptation_memory <= 1e6, "adaptation_memory must be within [1, 1e6] images");
@@ -117,7 +121,7 @@ void Rangefinder::withClassifierFor(const cv::Mat& bgr, const PixelClassifier* a
 {
 	const PixelClassifier& classifier = adapted ? *adapted : static_cast<const PixelClassifier&>(classifier_);
 	if (!compensate_) return use(classifier);
-	use(CompensatedClassifier(classifier, compensatingGains(reference_, ring_.medianColour(bgr))));
+	use(CompensatedClassifier(classifier, compensatingGains(reference_, ring_.medianColour(bgr), p_.exposure_deadband)));
 }
 
 RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapted) const

@@ -43,8 +43,12 @@ class FloorRing
 	int width_, height_;
 };
 
-/** Per-channel gains that bring `current` to `reference`, each clamped to [0.5, 2]. */
-std::array<double, 3> compensatingGains(const std::array<double, 3>& reference, const std::array<double, 3>& current);
+/** Per-channel gains that bring `current` to `reference`, each clamped to
+ * [0.5, 2]; all 1 when every gain is within `deadband` of 1 (the ring's
+ * median moves by a few per cent as the floor's texture passes under the
+ * robot, and a change that small is noise, not light). */
+std::array<double, 3> compensatingGains(const std::array<double, 3>& reference, const std::array<double, 3>& current,
+										double deadband = 0.0);
 
 /** A classifier that sees each pixel through per-channel gains (the seam of PixelClassifier.h). */
 class CompensatedClassifier final : public PixelClassifier

@@ -44,10 +44,14 @@ struct RangefinderParams
 	double histogram_smoothing{0.0};
 	/** Bring each image's floor, just beyond the base, back to the colour it
 	 * had in training before classifying (ExposureCompensation.h); only with
-	 * a histogram file that records that colour. Off by default: it mends a
-	 * change of exposure but breaks where the robot stands in a shadow and
-	 * looks into light (docs/results.md measures both). */
-	bool exposure_compensation{false};
+	 * a histogram file that records that colour. On by default: cameras'
+	 * exposure and white balance drift, and in ordinary rooms mending that
+	 * is worth far more than what it breaks where the robot stands in a
+	 * shadow and looks into light (docs/results.md measures both). */
+	bool exposure_compensation{true};
+	/** [-] ...and leaves an image as it is when every channel's gain is
+	 * within this of 1 (compensatingGains()). */
+	double exposure_deadband{0.03};
 	/** Adapt to the floor seen around the base in recent images
 	 * (FloorAdaptation.h); off by default (docs/results.md measures it). */
 	bool floor_adaptation{false};
