@@ -124,8 +124,12 @@ TEST(AppClasses, CalibrateSavesTheCheckerboardsMeiModelIntoTheIni)
 	const RangefinderParams saved = loadRangefinderIni(o.save_to, "rangefinder", quiet);
 	EXPECT_EQ(saved.camera.mirror_model, MirrorModel::Mei);
 	EXPECT_NEAR(saved.camera.xi, c.xi, 1e-6);
-	EXPECT_NEAR(saved.camera.gamma, 0.5 * (c.K(0, 0) + c.K(1, 1)), 1e-6);
+	EXPECT_NEAR(saved.camera.gamma, c.K(0, 0), 1e-6);
+	EXPECT_NEAR(saved.camera.aspect, c.K(1, 1) / c.K(0, 0), 1e-9);
+	EXPECT_NEAR(saved.camera.skew, c.K(0, 1), 1e-6);
 	EXPECT_NEAR(saved.camera.k1, c.D[0], 1e-9);
+	EXPECT_NEAR(saved.camera.p1, c.D[2], 1e-9);
+	EXPECT_NEAR(saved.camera.p2, c.D[3], 1e-9);
 	EXPECT_NEAR(saved.camera.cx, 643.7, 3.0);  // the data's reference principal point
 	EXPECT_NEAR(saved.camera.cy, 521.3, 5.0);
 	EXPECT_EQ(saved.camera.image_width, 1280);

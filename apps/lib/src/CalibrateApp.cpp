@@ -147,15 +147,12 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 				c.images.size(), c.used(), c.rms);
 	std::printf("fx %.2f  fy %.2f  skew %.3f  cx %.2f  cy %.2f px;  xi %.4f;  k1 %.4f  k2 %.4f  p1 %.5f  p2 %.5f\n",
 				c.K(0, 0), c.K(1, 1), c.K(0, 1), c.K(0, 2), c.K(1, 2), c.xi, c.D[0], c.D[1], c.D[2], c.D[3]);
-	std::printf("the rangefinder's mei model is radial: it takes gamma = (fx + fy) / 2 = %.2f px, k1, k2, cx, cy and "
-				"leaves out fx - fy = %.3f px, skew, p1, p2\n",
-				0.5 * (c.K(0, 0) + c.K(1, 1)), c.K(0, 0) - c.K(1, 1));
 	if (!o_.intrinsics_output.empty()) writeFileAtomically(o_.intrinsics_output, c.yaml());
 	if (!o_.save_to.empty())
 	{
 		const CameraParams cam = meiCamera(c);
 		OmniCameraModel{cam};  // refuses a model whose radius does not grow up to the horizon
-		saveCameraKeys(o_.save_to, o_.section, cam, {"xi", "gamma", "k1", "k2"});
+		saveCameraKeys(o_.save_to, o_.section, cam, {"xi", "gamma", "aspect", "skew", "k1", "k2", "p1", "p2"});
 	}
 	return c;
 }

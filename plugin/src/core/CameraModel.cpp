@@ -70,16 +70,22 @@ const OptionsTable<CameraParams>& CameraParams::table()
 		.add("h", "m", "height of the effective viewpoint above the floor", [](P& p) -> auto& { return p.h; })
 		.addEnum("mirror_model",
 				 "paraboloid: theta = 2 atan(rho/R); first_order: theta = rho/alpha; mei: Mei's unified model "
-				 "(xi, gamma, k1, k2), as cv::omnidir calibrates it; ocamcalib: Scaramuzza's polynomial (ocam_poly)",
+				 "(xi, gamma, k1, k2, aspect, skew, p1, p2), as cv::omnidir calibrates it; ocamcalib: Scaramuzza's polynomial (ocam_poly)",
 				 [](P& p) -> auto& { return p.mirror_model; }, mirrorModelFromString)
 		.add("alpha", "px/rad", "alpha of the first-order model (R/2 matches the paraboloid near the centre)",
 			 [](P& p) -> auto& { return p.alpha; })
 		.add("xi", "-", "mirror parameter of the mei model (1: paraboloid; between 0 and 1: hyperboloid)",
 			 [](P& p) -> auto& { return p.xi; })
-		.add("gamma", "px", "generalised focal length of the mei model (the mean of cv::omnidir's fx and fy)",
+		.add("gamma", "px", "generalised focal length of the mei model (cv::omnidir's fx, K(0,0))",
 			 [](P& p) -> auto& { return p.gamma; })
 		.add("k1", "-", "first radial distortion coefficient of the mei model", [](P& p) -> auto& { return p.k1; })
 		.add("k2", "-", "second radial distortion coefficient of the mei model", [](P& p) -> auto& { return p.k2; })
+		.add("aspect", "-", "fy / fx of the mei model (cv::omnidir's K(1,1) / K(0,0)); 1: square pixels",
+			 [](P& p) -> auto& { return p.aspect; })
+		.add("skew", "px", "skew of the mei model (cv::omnidir's s, K(0,1): u = gamma x + skew y + cx)",
+			 [](P& p) -> auto& { return p.skew; })
+		.add("p1", "-", "first tangential distortion coefficient of the mei model", [](P& p) -> auto& { return p.p1; })
+		.add("p2", "-", "second tangential distortion coefficient of the mei model", [](P& p) -> auto& { return p.p2; })
 		.add("ocam_poly", "-", "OCamCalib's direct polynomial a0 a1 a2 ..., blank-separated (the ocamcalib model; "
 							   "omnirange-calibrate --ocamcalib reads it from calib_results.txt)",
 			 [](P& p) -> auto& { return p.ocam_poly; })
@@ -106,6 +112,9 @@ void CameraParams::validate() const
 	require(xi > 0 && xi <= 10, "xi must be within (0, 10]");
 	require(gamma > 0, "gamma must be > 0 px");
 	require(std::isfinite(k1) && std::isfinite(k2), "k1 and k2 must be finite");
+	require(aspect > 0.5 && aspect < 2.0, "aspect (fy / fx) must be within (0.5, 2)");
+	require(std::abs(skew) < 0.1 * gamma, "skew must be smaller than a tenth of gamma");
+	require(std::abs(p1) < 0.1 && std::abs(p2) < 0.1, "p1 and p2 must be within (-0.1, 0.1)");
 	if (mirror_model == MirrorModel::OCamCalib)
 	{
 		require(ocam_poly.size() >= 2 && ocam_poly.size() <= 20, "ocam_poly needs 2 to 20 coefficients a0 a1 ...");
@@ -141,6 +150,40 @@ OmniCameraModel::OmniCameraModel(const CameraParams& p) : p_(p)
 {
 	p_.validate();
 	rho_limit_ = std::hypot(p_.image_width, p_.image_height);
+	radial_ = p_.mirror_model != MirrorModel::Mei ||
+			  (p_.aspect == 1.0 && p_.skew == 0.0 && p_.p1 == 0.0 && p_.p2 == 0.0);
+}
+
+Pixel OmniCameraModel::meiPixel(double x, double y) const
+{
+	const double r2 = x * x + y * y;
+	const double radial = 1 + p_.k1 * r2 + p_.k2 * r2 * r2;
+	const double xd = x * radial + 2 * p_.p1 * x * y + p_.p2 * (r2 + 2 * x * x);
+	const double yd = y * radial + p_.p1 * (r2 + 2 * y * y) + 2 * p_.p2 * x * y;
+	return {p_.gamma * xd + p_.skew * yd + p_.cx, p_.aspect * p_.gamma * yd + p_.cy};
+}
+
+std::pair<double, double> OmniCameraModel::meiNormalised(const Pixel& px) const
+{
+	// Newton on meiPixel(x, y) = px from the undistorted guess; the
+	// distortion is smooth and small, a few steps reach 1e-12 px.
+	const double yd = (px.v - p_.cy) / (p_.aspect * p_.gamma);
+	const double xd = (px.u - p_.cx - p_.skew * yd) / p_.gamma;
+	double x = xd, y = yd;
+	for (int i = 0; i < 30; ++i)
+	{
+		const Pixel f = meiPixel(x, y);
+		const double eu = f.u - px.u, ev = f.v - px.v;
+		if (std::abs(eu) + std::abs(ev) < 1e-12) break;
+		const double e = 1e-7;
+		const Pixel fx = meiPixel(x + e, y), fy = meiPixel(x, y + e);
+		const double a = (fx.u - f.u) / e, b = (fy.u - f.u) / e, c = (fx.v - f.v) / e, d = (fy.v - f.v) / e;
+		const double det = a * d - b * c;
+		if (std::abs(det) < 1e-12) break;
+		x -= (d * eu - b * ev) / det;
+		y -= (a * ev - c * eu) / det;
+	}
+	return {x, y};
 }
 
 double OmniCameraModel::thetaFromRho(double rho) const
@@ -220,15 +263,26 @@ Pixel OmniCameraModel::pixelFromPolar(double bearing, double rho) const
 {
 	const double a = screenAzimuthFromBearing(bearing);
 	// Rows grow downwards, so the on-screen counter-clockwise angle flips v.
-	return {p_.cx + rho * std::cos(a), p_.cy - rho * std::sin(a)};
+	if (radial_) return {p_.cx + rho * std::cos(a), p_.cy - rho * std::sin(a)};
+	const double theta = thetaFromRho(rho);
+	const double r = std::sin(theta) / (std::cos(theta) + p_.xi);  // the normalised plane's radius
+	return meiPixel(r * std::cos(a), -r * std::sin(a));
 }
 
-double OmniCameraModel::rhoOfPixel(const Pixel& px) const { return std::hypot(px.u - p_.cx, px.v - p_.cy); }
+double OmniCameraModel::rhoOfPixel(const Pixel& px) const { return polarFromPixel(px).second; }
 
 std::pair<double, double> OmniCameraModel::polarFromPixel(const Pixel& px) const
 {
-	const double du = px.u - p_.cx, dv = px.v - p_.cy;
-	return {bearingFromScreenAzimuth(std::atan2(-dv, du)), std::hypot(du, dv)};
+	if (radial_)
+	{
+		const double du = px.u - p_.cx, dv = px.v - p_.cy;
+		return {bearingFromScreenAzimuth(std::atan2(-dv, du)), std::hypot(du, dv)};
+	}
+	const auto [x, y] = meiNormalised(px);
+	const double r = std::hypot(x, y);
+	const double r2 = r * r;
+	// The radial part's radius of the same direction.
+	return {bearingFromScreenAzimuth(std::atan2(-y, x)), p_.gamma * r * (1 + p_.k1 * r2 + p_.k2 * r2 * r2)};
 }
 
 Pixel OmniCameraModel::pixelFromFloor(const FloorPoint& f) const

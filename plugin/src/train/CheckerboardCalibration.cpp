@@ -54,8 +54,11 @@ CameraParams meiCamera(const CheckerboardCalibration& c, CameraParams start)
 {
 	start.mirror_model = MirrorModel::Mei;
 	start.xi = c.xi;
-	start.gamma = 0.5 * (c.K(0, 0) + c.K(1, 1));
+	start.gamma = c.K(0, 0);
+	start.aspect = c.K(1, 1) / c.K(0, 0);
+	start.skew = c.K(0, 1);
 	start.k1 = c.D[0], start.k2 = c.D[1];
+	start.p1 = c.D[2], start.p2 = c.D[3];
 	start.cx = c.K(0, 2), start.cy = c.K(1, 2);
 	start.image_width = c.image_size.width, start.image_height = c.image_size.height;
 	return start;

@@ -17,9 +17,11 @@ enum class MirrorModel
 {
 	Paraboloid,  ///< exact paraboloid: theta = 2 atan(rho / R)
 	FirstOrder,  ///< first-order Taylor model: theta ~= rho / alpha
-	/** Mei's unified model (what cv::omnidir::calibrate fits), radial part:
-	 * rho = gamma * r (1 + k1 r^2 + k2 r^4), r = sin(theta) / (cos(theta) + xi).
-	 * xi = 1 is a paraboloid (gamma = R), 0 < xi < 1 a hyperboloid. */
+	/** Mei's unified model (what cv::omnidir::calibrate fits). Its radial
+	 * part: rho = gamma * r (1 + k1 r^2 + k2 r^4), r = sin(theta) / (cos(theta) + xi);
+	 * xi = 1 is a paraboloid (gamma = R), 0 < xi < 1 a hyperboloid. With
+	 * aspect, skew, p1 or p2 set the image is not radial: rho is then the
+	 * radius the radial part alone would give (see OmniCameraModel). */
 	Mei,
 	/** Scaramuzza's OCamCalib polynomial (calib_results.txt): the ray seen
 	 * at image radius rho is (rho, z) with z = a0 + a1 rho + a2 rho^2 + ...,
@@ -53,6 +55,12 @@ struct CameraParams
 	double xi{1.0};
 	double gamma{192.0};
 	double k1{0.0}, k2{0.0};
+	/** The mei model's non-radial terms, as cv::omnidir fits them: the
+	 * focal lengths fx = gamma and fy = aspect * gamma, the skew s [px]
+	 * (u = fx x + s y + cx) and the tangential distortion p1, p2 [-]. */
+	double aspect{1.0};
+	double skew{0.0};
+	double p1{0.0}, p2{0.0};
 	/** OCamCalib's direct polynomial a0 a1 a2 ... [px^(1-i)], used only when
 	 * mirror_model = ocamcalib (a0 < 0). For a paraboloid it is exactly
 	 * -R/2, 0, 1/(2R). */
@@ -83,7 +91,13 @@ struct Pixel
 	double u{0}, v{0};
 };
 
-/** Pixel <-> bearing/theta <-> metric distance, both ways. */
+/** Pixel <-> bearing/theta <-> metric distance, both ways.
+ *
+ * "rho" is a direction's radius in the ideal radial image: the image
+ * radius for the radial models, and for a mei model with non-radial terms
+ * the radius its radial part alone would give. The pixel functions apply
+ * the whole model, so a scanline stepped in rho along one bearing follows
+ * the image of that floor ray, straight or not. */
 class OmniCameraModel
 {
    public:
@@ -110,8 +124,10 @@ class OmniCameraModel
 
 	/** Pixel at polar position (bearing [rad], rho [px]). */
 	Pixel pixelFromPolar(double bearing, double rho) const;
-	/** Image radius rho [px] of a pixel (u, v). */
+	/** rho [px] of a pixel (u, v): its distance from the centre when the model is radial. */
 	double rhoOfPixel(const Pixel& px) const;
+	/** false for a mei model with aspect, skew, p1 or p2 set. */
+	bool radial() const { return radial_; }
 	/** (bearing [rad], rho [px]) of a pixel. */
 	std::pair<double, double> polarFromPixel(const Pixel& px) const;
 
@@ -123,8 +139,14 @@ class OmniCameraModel
 	static constexpr double kHalfPi = 1.57079632679489661923;
 
    private:
+	/** The mei model's pixel of the normalised plane's point (x, y) (x along
+	 * +u, y along +v), distortion included, and its inverse. */
+	Pixel meiPixel(double x, double y) const;
+	std::pair<double, double> meiNormalised(const Pixel& px) const;
+
 	CameraParams p_;
 	double rho_limit_{0};  ///< [px] the image's diagonal: no radius is sought beyond it
+	bool radial_{true};
 };
 
 }  // namespace omnirange

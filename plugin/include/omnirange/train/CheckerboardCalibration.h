@@ -57,11 +57,10 @@ struct CheckerboardCalibration
 bool findCheckerboardCorners(const cv::Mat& gray, const cv::Size& pattern, const std::string& detector,
 							 std::vector<cv::Point2f>& corners);
 
-/** The rangefinder's camera from a calibration: mirror_model = mei with its
- * xi, gamma (the mean of fx and fy), k1, k2, the principal point as cx, cy
- * and the image size; the rest of `start` (h, orientation) is kept. The
- * rangefinder's model is radial: what it leaves out (fx - fy, skew, p1, p2)
- * stays in the calibration for the user to judge (omnirange-calibrate prints it). */
+/** The rangefinder's camera from a calibration: mirror_model = mei with all
+ * of it (xi, gamma = fx, aspect = fy / fx, skew, k1, k2, p1, p2, the
+ * principal point as cx, cy, the image size); the rest of `start` (h,
+ * orientation) is kept. */
 CameraParams meiCamera(const CheckerboardCalibration& c, CameraParams start = {});
 
 /** Throws std::runtime_error naming the file if an image cannot be read or
