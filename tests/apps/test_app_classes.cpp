@@ -146,7 +146,7 @@ TEST(AppClasses, CalibrateSavesAnOCamCalibModelIntoTheIni)
 	CalibrateApp::Options o;
 	o.ocamcalib = dir + "/calib_results.txt";
 	std::ofstream(o.ocamcalib) << "#direct\n\n3 -96 0 0.0026041666666666665\n\n#inverse\n\n2 1 1\n\n#center\n\n"
-								  "380 515\n\n#affine\n\n1 0 0\n\n#size\n\n768 1024\n";
+								  "380 515\n\n#affine\n\n1.001 0.0005 -0.0002\n\n#size\n\n768 1024\n";
 	o.save_to = dir + "/my.ini";
 	std::ofstream(o.save_to) << "[rangefinder]\n; [-] kept\nthreshold = 0.075\n";
 	o.verbosity = mrpt::system::LVL_ERROR;
@@ -156,6 +156,7 @@ TEST(AppClasses, CalibrateSavesAnOCamCalibModelIntoTheIni)
 	const RangefinderParams saved = loadRangefinderIni(o.save_to, "rangefinder", quiet);
 	EXPECT_EQ(saved.camera.mirror_model, MirrorModel::OCamCalib);
 	ASSERT_EQ(saved.camera.ocam_poly.size(), 3u);
+	EXPECT_EQ(saved.camera.ocam_affine, (std::vector<double>{1.001, 0.0005, -0.0002}));
 	EXPECT_DOUBLE_EQ(saved.camera.cx, 515);
 	EXPECT_DOUBLE_EQ(saved.camera.cy, 380);
 	EXPECT_DOUBLE_EQ(saved.threshold, 0.075);

@@ -158,6 +158,74 @@ TEST(CameraModel, OCamCalibsPolynomialOfAParaboloidIsTheParaboloid)
 	EXPECT_NEAR(b.distanceFromRho(100), a.distanceFromRho(100), 1e-9);
 }
 
+TEST(CameraModel, OCamCalibsAffineTermsPlacePixelsAsTheToolboxDoes)
+{
+	// The toolbox's world2cam: the ideal point (x along rows, y along
+	// columns) lands at row cy + c x + d y, column cx + e x + y. Worked by hand for a direction straight "up" on screen
+	// (x = -rho, y = 0) and one to the right (x = 0, y = rho).
+	CameraParams p;
+	p.mirror_model = MirrorModel::OCamCalib;
+	p.ocam_poly = {-p.R / 2, 0.0, 1 / (2 * p.R)};
+	EXPECT_TRUE(OmniCameraModel(p).radial());
+	p.ocam_affine = {1.02, 0.004, -0.003};
+	const OmniCameraModel m(p);
+	EXPECT_FALSE(m.radial());
+	const Pixel up = m.pixelFromPolar(m.bearingFromScreenAzimuth(M_PI / 2), 100);
+	EXPECT_NEAR(up.v, p.cy - 1.02 * 100, 1e-9);
+	EXPECT_NEAR(up.u, p.cx + 0.003 * 100, 1e-9);
+	const Pixel right = m.pixelFromPolar(m.bearingFromScreenAzimuth(0), 100);
+	EXPECT_NEAR(right.v, p.cy + 0.004 * 100, 1e-9);
+	EXPECT_NEAR(right.u, p.cx + 100, 1e-9);
+	// ...and back, all round.
+	for (double b = -3; b < 3.1; b += 0.37)
+		for (double rho = 20; rho < 300; rho += 40)
+		{
+			const auto [b2, rho2] = m.polarFromPixel(m.pixelFromPolar(b, rho));
+			EXPECT_NEAR(std::remainder(b2 - b, 2 * M_PI), 0.0, 1e-12);
+			EXPECT_NEAR(rho2, rho, 1e-9);
+		}
+	p.ocam_affine = {1.0, 0.0};
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);  // three numbers
+	p.ocam_affine = {3.0, 0.0, 0.0};
+	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);  // not a camera's
+}
+
+TEST(CameraModel, MeisNonRadialTermsRoundTripAndMoveTheFloorsRays)
+{
+	CameraParams p;
+	p.mirror_model = MirrorModel::Mei;
+	p.xi = 0.8, p.gamma = 160;
+	p.aspect = 1.03, p.skew = -3, p.p1 = 0.003, p.p2 = -0.002;
+	const OmniCameraModel m(p);
+	EXPECT_FALSE(m.radial());
+	for (double b = -3; b < 3.1; b += 0.37)
+		for (double rho = 20; rho < 200; rho += 30)
+		{
+			const auto [b2, rho2] = m.polarFromPixel(m.pixelFromPolar(b, rho));
+			EXPECT_NEAR(std::remainder(b2 - b, 2 * M_PI), 0.0, 1e-9);
+			EXPECT_NEAR(rho2, rho, 1e-7);
+		}
+	// The floor's rays are not where the radial part alone puts them: at
+	// 2 m, fy = 1.03 fx alone moves the pixels along v by 3 % of their
+	// radius (about 4 px); the floor point comes back from its pixel.
+	CameraParams radial_part = p;
+	radial_part.aspect = 1, radial_part.skew = 0, radial_part.p1 = 0, radial_part.p2 = 0;
+	const OmniCameraModel r(radial_part);
+	double worst = 0;
+	for (double b = -3; b < 3.1; b += 0.5)
+	{
+		const Pixel x = m.pixelFromFloor({2 * std::cos(b), 2 * std::sin(b)});
+		const Pixel y = r.pixelFromFloor({2 * std::cos(b), 2 * std::sin(b)});
+		worst = std::max(worst, std::hypot(x.u - y.u, x.v - y.v));
+	}
+	EXPECT_GT(worst, 3.0);
+	const Pixel c = m.pixelFromFloor({3.0, 3.0});
+	const auto f = m.floorFromPixel(c);
+	ASSERT_TRUE(f.has_value());
+	EXPECT_NEAR(f->x, 3.0, 1e-6);
+	EXPECT_NEAR(f->y, 3.0, 1e-6);
+}
+
 TEST(CameraModel, OCamCalibPolynomialsThatCannotBeAMirrorAreRejected)
 {
 	CameraParams p;

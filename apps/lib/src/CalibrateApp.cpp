@@ -180,11 +180,11 @@ CameraParams CalibrateApp::runOCamCalib()
 	std::printf("OCamCalib model: %zu coefficients, centre cx = %.2f px, cy = %.2f px, image %d x %d; "
 				"the horizon at %.1f px\n",
 				f.poly.size(), cam.cx, cam.cy, cam.image_width, cam.image_height, model.horizonRho());
-	std::printf("the rangefinder's model is radial: it leaves out the affine terms c - 1 = %.5f, d = %.5f, e = %.5f\n",
-				f.c - 1, f.d, f.e);
+	std::printf("affine terms c %.5f, d %.5f, e %.5f%s\n", f.c, f.d, f.e,
+				model.radial() ? " (none: the image is radial)" : " (the scanlines follow them)");
 	if (!o_.save_to.empty())
 	{
-		saveCameraKeys(o_.save_to, o_.section, cam, {"ocam_poly"});
+		saveCameraKeys(o_.save_to, o_.section, cam, {"ocam_poly", "ocam_affine"});
 	}
 	return cam;
 }

@@ -89,6 +89,10 @@ const OptionsTable<CameraParams>& CameraParams::table()
 		.add("ocam_poly", "-", "OCamCalib's direct polynomial a0 a1 a2 ..., blank-separated (the ocamcalib model; "
 							   "omnirange-calibrate --ocamcalib reads it from calib_results.txt)",
 			 [](P& p) -> auto& { return p.ocam_poly; })
+		.add("ocam_affine", "-",
+			 "OCamCalib's affine terms c d e (calib_results.txt's #affine; the ocamcalib model): the ideal point "
+			 "(x along rows, y along columns) lands at row cy + c x + d y, column cx + e x + y; 1 0 0: none",
+			 [](P& p) -> auto& { return p.ocam_affine; })
 		.addAngle("forward_azimuth",
 				  "on-screen angle, counter-clockwise from the image's +u axis as the picture is viewed, where "
 				  "the sensor's forward axis appears (180: the image's left)",
@@ -119,6 +123,9 @@ void CameraParams::validate() const
 	{
 		require(ocam_poly.size() >= 2 && ocam_poly.size() <= 20, "ocam_poly needs 2 to 20 coefficients a0 a1 ...");
 		require(ocam_poly[0] < 0, "ocam_poly's a0 must be < 0 (OCamCalib's image centre looks along -z)");
+		require(ocam_affine.size() == 3, "ocam_affine needs three numbers, c d e");
+		require(std::abs(ocam_affine[0] - ocam_affine[1] * ocam_affine[2] - 1) < 0.5,
+				"ocam_affine's c - d e must be within 0.5 of 1 (it scales the image)");
 		// theta must grow with rho out to the image's diagonal (or to 170 degrees).
 		const double limit = std::hypot(image_width, image_height);
 		double last = 0;
@@ -150,8 +157,10 @@ OmniCameraModel::OmniCameraModel(const CameraParams& p) : p_(p)
 {
 	p_.validate();
 	rho_limit_ = std::hypot(p_.image_width, p_.image_height);
-	radial_ = p_.mirror_model != MirrorModel::Mei ||
-			  (p_.aspect == 1.0 && p_.skew == 0.0 && p_.p1 == 0.0 && p_.p2 == 0.0);
+	if (p_.mirror_model == MirrorModel::Mei)
+		radial_ = p_.aspect == 1.0 && p_.skew == 0.0 && p_.p1 == 0.0 && p_.p2 == 0.0;
+	if (p_.mirror_model == MirrorModel::OCamCalib)
+		radial_ = p_.ocam_affine == std::vector<double>{1.0, 0.0, 0.0};
 }
 
 Pixel OmniCameraModel::meiPixel(double x, double y) const
@@ -264,6 +273,12 @@ Pixel OmniCameraModel::pixelFromPolar(double bearing, double rho) const
 	const double a = screenAzimuthFromBearing(bearing);
 	// Rows grow downwards, so the on-screen counter-clockwise angle flips v.
 	if (radial_) return {p_.cx + rho * std::cos(a), p_.cy - rho * std::sin(a)};
+	if (p_.mirror_model == MirrorModel::OCamCalib)
+	{
+		const double x = -rho * std::sin(a), y = rho * std::cos(a);  // along rows, along columns
+		const auto& A = p_.ocam_affine;
+		return {p_.cx + A[2] * x + y, p_.cy + A[0] * x + A[1] * y};
+	}
 	const double theta = thetaFromRho(rho);
 	const double r = std::sin(theta) / (std::cos(theta) + p_.xi);  // the normalised plane's radius
 	return meiPixel(r * std::cos(a), -r * std::sin(a));
@@ -277,6 +292,14 @@ std::pair<double, double> OmniCameraModel::polarFromPixel(const Pixel& px) const
 	{
 		const double du = px.u - p_.cx, dv = px.v - p_.cy;
 		return {bearingFromScreenAzimuth(std::atan2(-dv, du)), std::hypot(du, dv)};
+	}
+	if (p_.mirror_model == MirrorModel::OCamCalib)
+	{
+		const auto& A = p_.ocam_affine;
+		const double dv = px.v - p_.cy, du = px.u - p_.cx;
+		const double det = A[0] - A[1] * A[2];
+		const double x = (dv - A[1] * du) / det, y = (A[0] * du - A[2] * dv) / det;
+		return {bearingFromScreenAzimuth(std::atan2(-x, y)), std::hypot(x, y)};
 	}
 	const auto [x, y] = meiNormalised(px);
 	const double r = std::hypot(x, y);

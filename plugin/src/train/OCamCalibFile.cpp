@@ -41,6 +41,7 @@ CameraParams ocamCamera(const OCamCalibFile& f, CameraParams start)
 {
 	start.mirror_model = MirrorModel::OCamCalib;
 	start.ocam_poly = f.poly;
+	start.ocam_affine = {f.c, f.d, f.e};
 	start.cx = f.column, start.cy = f.row;
 	start.image_width = f.width, start.image_height = f.height;
 	return start;

@@ -65,6 +65,10 @@ struct CameraParams
 	 * mirror_model = ocamcalib (a0 < 0). For a paraboloid it is exactly
 	 * -R/2, 0, 1/(2R). */
 	std::vector<double> ocam_poly{};
+	/** OCamCalib's affine terms c d e (calib_results.txt's #affine): the
+	 * ideal image point (x along rows, y along columns) lands at row
+	 * cy + c x + d y, column cx + e x + y. 1 0 0: none (the image is radial). */
+	std::vector<double> ocam_affine{1.0, 0.0, 0.0};
 	/** [rad] on-screen angle (counter-clockwise from the image's +u axis, as
 	 * the picture is viewed) where the sensor's forward axis appears (pi:
 	 * forward is at the image's left). */
@@ -95,7 +99,8 @@ struct Pixel
  *
  * "rho" is a direction's radius in the ideal radial image: the image
  * radius for the radial models, and for a mei model with non-radial terms
- * the radius its radial part alone would give. The pixel functions apply
+ * (or an ocamcalib model with affine ones) the radius its radial part
+ * alone would give. The pixel functions apply
  * the whole model, so a scanline stepped in rho along one bearing follows
  * the image of that floor ray, straight or not. */
 class OmniCameraModel
@@ -126,7 +131,8 @@ class OmniCameraModel
 	Pixel pixelFromPolar(double bearing, double rho) const;
 	/** rho [px] of a pixel (u, v): its distance from the centre when the model is radial. */
 	double rhoOfPixel(const Pixel& px) const;
-	/** false for a mei model with aspect, skew, p1 or p2 set. */
+	/** false for a mei model with aspect, skew, p1 or p2 set, or an
+	 * ocamcalib model with affine terms. */
 	bool radial() const { return radial_; }
 	/** (bearing [rad], rho [px]) of a pixel. */
 	std::pair<double, double> polarFromPixel(const Pixel& px) const;

@@ -25,8 +25,8 @@ struct OCamCalibFile
 OCamCalibFile readOCamCalib(const std::string& path);
 
 /** The rangefinder's camera from it: mirror_model = ocamcalib, ocam_poly,
- * cx = column, cy = row, the image size; the rest of `start` is kept. The
- * model is radial: the affine terms (c - 1, d, e) are left out. */
+ * ocam_affine, cx = column, cy = row, the image size; the rest of `start`
+ * is kept. */
 CameraParams ocamCamera(const OCamCalibFile& f, CameraParams start = {});
 
 }  // namespace omnirange
