@@ -27,6 +27,7 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 			 "sigma of a Gaussian over the histogram's bins (floor and obstacle colours) before eq. (5); 0: as counted",
 			 [](P& p) -> auto& { return p.histogram_smoothing; })
 		.include(OutlierFilterParams::table(), [](P& p) -> auto& { return p.outliers; })
+		.include(WallFitParams::table(), [](P& p) -> auto& { return p.walls; })
 		.add("exposure_compensation", "bool",
 			 "bring each image's floor just beyond the base back to its colour in training before classifying "
 			 "(needs a histogram file that records it)",
@@ -88,6 +89,7 @@ void RangefinderParams::validate() const
 	camera.validate();
 	scanner.validate(OmniCameraModel(camera));
 	outliers.validate();
+	walls.validate();
 	require(threshold >= 0.0 && threshold <= 1.0, "threshold (Theta) must be within [0, 1]");
 	require(obstacle_ratio >= 0.0 && obstacle_ratio <= 1000.0, "obstacle_ratio must be within [0, 1000]");
 	require(histogram_smoothing >= 0.0 && histogram_smoothing <= 16.0, "histogram_smoothing must be within [0, 16] bins");
@@ -136,6 +138,8 @@ RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapte
 	withClassifierFor(bgr, adapted, [&](const PixelClassifier& seen) { out.rays = scanner_.scan(bgr, seen); });
 	// 4. Reject the rays that disagree with both their neighbours.
 	out.outliers = rejectOutliers(out.rays, p_.outliers);
+	// 5. Thin walls: hits on one straight wall onto its fitted line.
+	out.wall_fitted = fitWalls(out.rays, camera_, p_.walls);
 	return out;
 }
 

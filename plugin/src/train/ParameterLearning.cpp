@@ -167,8 +167,12 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 								p.threshold = theta, p.obstacle_ratio = ratio, p.histogram_smoothing = smoothing;
 								p.scanner.filter.N = N, p.scanner.filter.K = K, p.scanner.boundary_model = boundary;
 								const auto& [space, b, light] = key;
+								// Scored on the classifier's own ranges: the wall fit
+								// smooths over the very errors learning must see.
+								RangefinderParams scored = p;
+								scored.walls.wall_fit = false;
 								const LearnedCandidate c{space, b, light, theta, ratio, smoothing, N, K, boundary,
-														 score(Rangefinder(p, model), validation)};
+														 score(Rangefinder(scored, model), validation)};
 								r.tried.push_back(c);
 								if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
 							}

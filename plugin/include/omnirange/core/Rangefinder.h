@@ -8,6 +8,7 @@
 #include <omnirange/core/ExposureCompensation.h>
 #include <omnirange/core/FreeSpaceClassifier.h>
 #include <omnirange/core/OutlierFilter.h>
+#include <omnirange/core/WallFit.h>
 #include <omnirange/core/PolarScanner.h>
 #include <omnirange/io/SensorLabels.h>
 
@@ -33,6 +34,7 @@ struct RangefinderParams
 	CameraParams camera;
 	PolarScannerParams scanner;
 	OutlierFilterParams outliers;
+	WallFitParams walls;  ///< thin walls (WallFit.h)
 	double threshold{0.05};  ///< Theta of eq. (5) [-] (the maze's, paper Table I)
 	/** [-] with obstacle colours in the model: free also needs
 	 * P(c | floor) >= obstacle_ratio * P(c | obstacle); 0: the paper's one-class model. */
@@ -83,6 +85,7 @@ struct RangeScan
 {
 	std::vector<Ray> rays;  ///< S rays, in scanline order
 	int outliers{0};  ///< rays the outlier filter rejected
+	int wall_fitted{0};  ///< hits moved onto a fitted wall line
 	int count(RayStatus s) const;
 };
 
