@@ -184,6 +184,9 @@ run_case "import: a laser row with a range missing" error imp.rawlog -- "$apps/o
 mkdir -p imp_bad && printf 'not an image' > imp_bad/100.0.jpg
 run_case "import: an image that does not decode" error imp.rawlog -- "$apps/omnirange-import" -q --images imp_bad --laser imp_laser.csv -o imp.rawlog
 run_case "import: output is the laser log" error imp_laser.csv.none -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv -o imp_laser.csv
+printf 'ODOM 0 0 0 0 0 0 100.0 h 0\nFLASER 3 1 2 0 0 0 0 0 0 100.4 h 0\n' > imp_short.carmen
+run_case "import: a CARMEN FLASER with a range missing" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --carmen imp_short.carmen -o imp.rawlog
+run_case "import: a CARMEN log and a laser CSV both" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --carmen imp_short.carmen --laser imp_laser.csv -o imp.rawlog
 mkdir -p exp && cp -r "$src/ini" exp/ini && ln -sf "$src/worlds" exp/worlds
 awk '{print} /^\[experiment\]/{print "unknown_key = 1"}' "$ini" > exp/ini/exp_bad.ini
 run_case "experiment: unknown key" error report -- "$apps/omnirange-experiment" -q exp/ini/exp_bad.ini -o report

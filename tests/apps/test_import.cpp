@@ -38,6 +38,7 @@ struct UserLogs
 {
 	std::string images, laser, odometry;
 	mrpt::poses::CPose3D omni_pose, laser_pose;
+	std::string carmen;  ///< the laser and odometry again, as a CARMEN log (FLASER, ODOM)
 };
 
 std::string timeText(mrpt::Clock::time_point t)
@@ -50,10 +51,11 @@ std::string timeText(mrpt::Clock::time_point t)
 /** The sample as a user's logs: TIME.jpg files, laser and odometry CSVs. */
 UserLogs takeApart(const std::string& dir)
 {
-	UserLogs u{dir + "/images", dir + "/laser.csv", dir + "/odometry.csv", {}, {}};
+	UserLogs u{dir + "/images", dir + "/laser.csv", dir + "/odometry.csv", {}, {}, dir + "/log.carmen"};
 	fs::create_directories(u.images);
-	std::ofstream laser(u.laser), odometry(u.odometry);
+	std::ofstream laser(u.laser), odometry(u.odometry), carmen(u.carmen);
 	laser << "# time, ranges\n";
+	carmen << "# CARMEN Logfile\nPARAM robot_front_laser_max 19.8 nohost 0\n";
 	RawlogProcessor loop(test::kSample);
 	loop.on<CObservationImage>("OMNICAM", [&](const CObservationImage::Ptr& o) {
 		fs::copy_file(o->image.getExternalStorageFileAbsolutePath(), u.images + "/" + timeText(o->timestamp) + ".jpg");
@@ -69,10 +71,20 @@ UserLogs takeApart(const std::string& dir)
 		}
 		laser << "\n";
 		u.laser_pose = o->sensorPose;
+		carmen << "FLASER " << o->getScanSize();
+		for (std::size_t i = 0; i < o->getScanSize(); ++i)
+		{
+			char r[32];
+			std::snprintf(r, sizeof r, " %.9g", o->getScanRangeValidity(i) ? o->getScanRange(i) : 0.0f);
+			carmen << r;
+		}
+		carmen << " 0 0 0 0 0 0 " << timeText(o->timestamp) << " nohost 0\n";
 	});
 	loop.on<CObservationOdometry>("ODOMETRY", [&](const CObservationOdometry::Ptr& o) {
 		odometry << timeText(o->timestamp) << ", " << o->odometry.x() << ", " << o->odometry.y() << ", "
 				 << o->odometry.phi() << "\n";
+		carmen << "ODOM " << o->odometry.x() << " " << o->odometry.y() << " " << o->odometry.phi() << " 0 0 0 "
+			   << timeText(o->timestamp) << " nohost 0\n";
 	});
 	loop.run();
 	return u;
@@ -158,6 +170,58 @@ TEST(Import, AUsersLogsImportedScoreAsTheOriginal)
 	EXPECT_GT(original, 0.0);
 	EXPECT_LT(original, 0.1375);  // the paper's worst Table II figure
 	EXPECT_NEAR(imported, original, 1e-9);
+}
+
+TEST(Import, ACarmenLogStandsForTheTwoCsvs)
+{
+	const std::string dir = test::freshDir("omnirange_import", "carmen");
+	const UserLogs u = takeApart(dir);
+	ImportApp::Options o = importOf(u, dir + "/carmen.rawlog");
+	o.import.laser_csv.clear(), o.import.odometry_csv.clear();
+	o.import.carmen_log = u.carmen;
+	const LogImportSummary s = ImportApp(o).run();
+	EXPECT_EQ(s.scans, 20u);
+	EXPECT_EQ(s.odometry, 20u);
+	EXPECT_EQ(s.rays, 181);
+	const double csv = meanAbsOf(test::kSample, test::freshDir("omnirange_import", "carmen_original"));
+	EXPECT_NEAR(meanAbsOf(dir + "/carmen.rawlog", test::freshDir("omnirange_import", "carmen_scored")), csv, 1e-9);
+
+	// ROBOTLASER1 states its laser: 3 rays from -60 degrees over 120, 8 m.
+	std::ofstream(dir + "/robot.carmen")
+		<< "ROBOTLASER1 0 -1.0471975512 2.0943951024 1.0471975512 8.0 0.01 0 3 1.5 9.0 2.5 0 0.1 0 0 1 2 0.5 0 0 0 0 0 "
+		   "1767225600.5 nohost 0\n";
+	o.import.carmen_log = dir + "/robot.carmen";
+	o.import.output = dir + "/robot.rawlog";
+	ASSERT_EQ(ImportApp(o).run().scans, 1u);
+	int scans = 0, odometry = 0;
+	RawlogProcessor loop(dir + "/robot.rawlog");
+	loop.on<CObservation2DRangeScan>("LASER", [&](const CObservation2DRangeScan::Ptr& scan) {
+		++scans;
+		EXPECT_NEAR(scan->aperture, 2.0943951024, 1e-6);
+		EXPECT_FLOAT_EQ(scan->maxRange, 8.0f);
+		EXPECT_FALSE(scan->getScanRangeValidity(1));  // 9 m: past the max range
+		// The 120 degrees start at -60: centred on the sensor's axis, as MRPT wants.
+		EXPECT_NEAR(scan->sensorPose.yaw(), u.laser_pose.yaw(), 1e-9);
+	});
+	loop.on<CObservationOdometry>("ODOMETRY", [&](const CObservationOdometry::Ptr& odo) {
+		++odometry;
+		EXPECT_NEAR(odo->odometry.x(), 1.0, 1e-12);  // ROBOTLASER1's robot pose
+		EXPECT_NEAR(odo->odometry.phi(), 0.5, 1e-12);
+	});
+	loop.run();
+	EXPECT_EQ(scans, 1);
+	EXPECT_EQ(odometry, 1);
+
+	// Bad messages are named by line.
+	std::ofstream(dir + "/bad.carmen") << "# a log\nODOM 1 2 3 0 0 0 10.0 h 0\nFLASER 3 1 2 0 0 0 0 0 0 10.5 h 0\n";
+	o.import.carmen_log = dir + "/bad.carmen";
+	EXPECT_NE(errorOf(o).find("bad.carmen:3: FLASER"), std::string::npos) << errorOf(o);
+	std::ofstream(dir + "/late.carmen") << "ODOM 1 2 3 0 0 0 10.0 h 0\nODOM 1 2 3 0 0 0 9.0 h 0\n";
+	o.import.carmen_log = dir + "/late.carmen";
+	EXPECT_NE(errorOf(o).find("late.carmen:2: ODOM time 9"), std::string::npos) << errorOf(o);
+	o.import.laser_csv = u.laser;
+	EXPECT_NE(errorOf(o).find("not with laser or odometry CSVs too"), std::string::npos) << errorOf(o);
+	EXPECT_FALSE(fs::exists(dir + "/out.rawlog"));
 }
 
 TEST(Import, BadLogsAreNamedByFileAndLineAndNothingIsWritten)

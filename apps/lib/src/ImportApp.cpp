@@ -27,6 +27,7 @@ ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> list("", "image-list", "CSV of TIME, FILE rows instead of timed names (FILE relative to the CSV)", false, "", "CSV", cmd);
 	TCLAP::ValueArg<std::string> laser("", "laser", "laser log: CSV of TIME, r_0, ..., r_{n-1} rows [s, m]", false, "", "CSV", cmd);
 	TCLAP::ValueArg<std::string> odometry("", "odometry", "odometry: CSV of TIME, x, y, phi rows [s, m, m, rad]", false, "", "CSV", cmd);
+	TCLAP::ValueArg<std::string> carmen("", "carmen", "a CARMEN log (FLASER, RAWLASER1 or ROBOTLASER1, and ODOM) instead of --laser and --odometry", false, "", "LOG", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "rawlog to write (images go to NAME_Images beside it)", true, "", "RAWLOG", cmd);
 	TCLAP::ValueArg<std::string> ini("c", "config", "ini whose [rangefinder] pose_* keys give the omnicam's pose on the robot", false, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
@@ -39,7 +40,7 @@ ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	i.images_dir = images.getValue(), i.image_list = list.getValue(), i.laser_csv = laser.getValue();
-	i.odometry_csv = odometry.getValue(), i.output = out.getValue();
+	i.odometry_csv = odometry.getValue(), i.carmen_log = carmen.getValue(), i.output = out.getValue();
 	i.omni_label = omni_label.getValue(), i.laser_label = laser_label.getValue();
 	i.laser_pose = poseFromText(laser_pose.getValue());
 	i.laser_fov = fov.getValue() * M_PI / 180, i.laser_max_range = max_range.getValue();

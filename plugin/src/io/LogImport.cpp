@@ -1,6 +1,7 @@
 #include "omnirange/io/LogImport.h"
 
 #include "omnirange/io/AtomicWrite.h"
+#include "omnirange/io/CarmenLog.h"
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/OptionsTable.h"
 #include "omnirange/io/RawlogWriter.h"
@@ -149,16 +150,30 @@ LogImportSummary importLogs(const LogImportOptions& o)
 {
 	require(o.laser_fov > 0 && o.laser_fov <= 2 * M_PI, "the laser's field of view must be within (0, 360] degrees");
 	require(o.laser_max_range > 0, "the laser's max range must be > 0 m");
-	requireOutputsAreNotInputs({o.output}, {o.image_list, o.laser_csv, o.odometry_csv});
+	requireOutputsAreNotInputs({o.output}, {o.image_list, o.laser_csv, o.odometry_csv, o.carmen_log});
+	require(o.carmen_log.empty() || (o.laser_csv.empty() && o.odometry_csv.empty()),
+			"a CARMEN log gives the laser and the odometry: not with laser or odometry CSVs too");
 	// 1. Read and check everything before writing anything.
 	const std::vector<TimedImage> images = listImages(o.images_dir, o.image_list);
 	// The output's image folder is replaced at the end: it must hold no input.
 	std::set<std::string> image_dirs;
 	for (const TimedImage& im : images) image_dirs.insert(fs::path(im.file).parent_path().string());
 	requireOutputsAreNotInputs({imagesDirFor(o.output)}, {image_dirs.begin(), image_dirs.end()});
-	const std::vector<LaserRow> scans = o.laser_csv.empty() ? std::vector<LaserRow>{} : readLaserCsv(o.laser_csv);
-	const std::vector<OdometryRow> odometry =
+	std::vector<LaserRow> scans = o.laser_csv.empty() ? std::vector<LaserRow>{} : readLaserCsv(o.laser_csv);
+	std::vector<OdometryRow> odometry =
 		o.odometry_csv.empty() ? std::vector<OdometryRow>{} : readOdometryCsv(o.odometry_csv);
+	double laser_fov = o.laser_fov, laser_max_range = o.laser_max_range;
+	mrpt::poses::CPose3D laser_pose = o.laser_pose;
+	if (!o.carmen_log.empty())
+	{
+		CarmenLog log = readCarmenLog(o.carmen_log);
+		scans = std::move(log.laser), odometry = std::move(log.odometry);
+		laser_fov = log.fov;
+		if (log.max_range > 0) laser_max_range = log.max_range;
+		// MRPT's scans are centred on the sensor's x axis: turn the pose
+		// by where the log's field of view is centred.
+		laser_pose = laser_pose + mrpt::poses::CPose3D(0, 0, 0, log.start_angle + 0.5 * log.fov, 0, 0);
+	}
 	LogImportSummary s;
 	for (const TimedImage& im : images)
 	{
@@ -198,17 +213,17 @@ LogImportSummary importLogs(const LogImportOptions& o)
 			auto obs = mrpt::obs::CObservation2DRangeScan::Create();
 			obs->sensorLabel = o.laser_label;
 			obs->timestamp = mrpt::Clock::fromDouble(tj);
-			obs->sensorPose = o.laser_pose;
-			obs->aperture = static_cast<float>(o.laser_fov);
+			obs->sensorPose = laser_pose;
+			obs->aperture = static_cast<float>(laser_fov);
 			obs->rightToLeft = true;
-			obs->maxRange = static_cast<float>(o.laser_max_range);
+			obs->maxRange = static_cast<float>(laser_max_range);
 			obs->stdError = static_cast<float>(o.laser_std_error);
 			obs->resizeScan(scans[j].ranges.size());
 			for (std::size_t r = 0; r < scans[j].ranges.size(); ++r)
 			{
 				const double range = scans[j].ranges[r];
-				const bool valid = range > 0 && range < o.laser_max_range;
-				obs->setScanRange(r, static_cast<float>(valid ? range : o.laser_max_range));
+				const bool valid = range > 0 && range < laser_max_range;
+				obs->setScanRange(r, static_cast<float>(valid ? range : laser_max_range));
 				obs->setScanRangeValidity(r, valid);
 			}
 			out.write(*obs);

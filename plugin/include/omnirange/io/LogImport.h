@@ -3,8 +3,8 @@
 // a folder of timestamped omnicam images, a laser log as CSV and, if there
 // is one, odometry as CSV. Every observation gets its label, its sensor's
 // pose on the robot and its timestamp, and they are written in time order.
-// The image files are copied byte for byte. CARMEN logs go through MRPT's
-// own carmen2rawlog first (docs/users.md).
+// The image files are copied byte for byte. A CARMEN log can stand for the
+// laser and odometry CSVs (CarmenLog.h).
 //
 // Formats (one row per line; '#' starts a comment line; commas between fields):
 //   laser CSV:     TIME, r_0, r_1, ..., r_{n-1}     [s], [m]; n the same on every row;
@@ -53,6 +53,10 @@ struct LogImportOptions
 	std::string images_dir, image_list;  ///< the omnicam's images (see listImages)
 	std::string laser_csv;  ///< may be empty (no laser)
 	std::string odometry_csv;  ///< may be empty (no odometry)
+	/** A CARMEN log (CarmenLog.h) instead of the two CSVs: its laser (with
+	 * the field of view, first ray's angle and max range it states) and its
+	 * odometry. */
+	std::string carmen_log;
 	std::string output;  ///< the rawlog; its images go to NAME_Images beside it
 	std::string omni_label{kOmnicamLabel}, laser_label{kLaserLabel}, odometry_label{kOdometryLabel};
 	mrpt::poses::CPose3D omni_pose;  ///< the omnicam on the robot
