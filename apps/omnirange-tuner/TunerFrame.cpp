@@ -132,11 +132,17 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 	cy_ = real("cy [px]", 0, 20000, 0.5, 1);
 	r_ = real("R [px]", 1, 20000, 0.5, 1);
 	azimuth_ = real("forward [deg]", -360, 360, 1, 1);
-	label("mirrored");
-	mirrored_ = new wxCheckBox(p, wxID_ANY, "");
-	grid->Add(mirrored_);
+	const auto check = [&](const char* text) {
+		label(text);
+		auto* c = new wxCheckBox(p, wxID_ANY, "");
+		grid->Add(c);
+		c->Bind(wxEVT_CHECKBOX, [this](wxCommandEvent&) { onParamsChanged(); });
+		return c;
+	};
+	mirrored_ = check("mirrored");
+	walls_ = check("thin walls");
+	exposure_ = check("exposure comp.");
 	for (wxChoice* c : {boundary_, outliers_}) c->Bind(wxEVT_CHOICE, [this](wxCommandEvent&) { onParamsChanged(); });
-	mirrored_->Bind(wxEVT_CHECKBOX, [this](wxCommandEvent&) { onParamsChanged(); });
 	sizer->Add(grid, 0, wxALL, 4);
 
 	auto* shows = new wxBoxSizer(wxHORIZONTAL);
@@ -185,6 +191,8 @@ void TunerFrame::controlsFromParams()
 	r_->SetValue(p.camera.R);
 	azimuth_->SetValue(p.camera.forward_azimuth * kDeg);
 	mirrored_->SetValue(p.camera.mirrored);
+	walls_->SetValue(p.walls.wall_fit);
+	exposure_->SetValue(p.exposure_compensation);
 	updating_ = false;
 }
 
@@ -202,6 +210,8 @@ void TunerFrame::onParamsChanged()
 	p.camera.R = r_->GetValue();
 	p.camera.forward_azimuth = azimuth_->GetValue() / kDeg;
 	p.camera.mirrored = mirrored_->GetValue();
+	p.walls.wall_fit = walls_->GetValue();
+	p.exposure_compensation = exposure_->GetValue();
 	try
 	{
 		s_.setParams(p);

@@ -50,7 +50,7 @@ class TunerFrame : public wxFrame
 	wxSpinCtrl *n_{}, *k_{};
 	wxSpinCtrlDouble *threshold_{}, *cx_{}, *cy_{}, *r_{}, *azimuth_{};
 	wxChoice *boundary_{}, *outliers_{};
-	wxCheckBox* mirrored_{};
+	wxCheckBox *mirrored_{}, *walls_{}, *exposure_{};
 	wxTimer play_;
 	// What depends on the rangefinder only, not on the frame: rebuilt when it changes.
 	std::unique_ptr<omnirange::BirdsEyeView> view_;
