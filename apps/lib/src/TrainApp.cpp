@@ -31,6 +31,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<double> light("", "light-change", "also count every floor pixel as seen in light this much dimmer and brighter (gains 1-A, 1+A); 0: as seen", false, t.training.light_change, "A", cmd);
 	TCLAP::SwitchArg near_disc("", "near-disc-only", "count only the floor nearer than every laser hit, all round: a first histogram for omnirange-calibrate that does not depend on the ini's orientation", cmd);
 	TCLAP::ValueArg<std::string> validate_on("", "learn-validate-on", "with --learn: hold aside every fourth selected pair ('interleaved') or the 'later' quarter of them", false, "interleaved", "SPLIT", cmd);
+	TCLAP::ValueArg<int> hold_out("", "learn-hold-out-every", "with --learn (interleaved): hold aside every N-th selected pair to score the candidates on", false, o.learning.hold_out_every, "N", cmd);
 	TCLAP::ValueArg<double> learn_light("", "learn-light-change", "with --learn: show the held-aside images this much dimmer and brighter, and try histograms trained with that light change; 0: neither", false, o.learning.validation_light_change, "V", cmd);
 	TCLAP::ValueArg<std::string> figures("", "figures", "write PREFIX_birdseye.png, PREFIX_laser.png, PREFIX_fused.png (paper Fig. 1)", false, "", "PREFIX", cmd);
 	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
@@ -45,6 +46,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	t.training.light_change = light.getValue();
 	t.training.near_disc_only = near_disc.getValue();
 	o.learning.split = validationSplitFromString(validate_on.getValue());
+	o.learning.hold_out_every = hold_out.getValue();
 	o.learning.validation_light_change = learn_light.getValue();
 	o.learning.light_changes = {0.0};
 	if (learn_light.getValue() > 0) o.learning.light_changes.push_back(learn_light.getValue());

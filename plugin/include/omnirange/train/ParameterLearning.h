@@ -50,6 +50,8 @@ struct LearningOptions
 	 * route brings; measured, no better: docs/results.md). */
 	ValidationSplit split{ValidationSplit::Interleaved};
 	double validation_fraction{0.25};
+	/** Every second pair instead (twice the validation frames, at most 60)
+	 * was measured and not adopted: docs/results.md. */
 	int hold_out_every{4};
 	/** [-] the held-aside images are shown as seen, dimmer and brighter by
 	 * this (gains 1, 1 - v, 1 + v in turn): light changes after training. */
