@@ -216,6 +216,14 @@ TEST(Import, ACarmenLogStandsForTheTwoCsvs)
 	std::ofstream(dir + "/bad.carmen") << "# a log\nODOM 1 2 3 0 0 0 10.0 h 0\nFLASER 3 1 2 0 0 0 0 0 0 10.5 h 0\n";
 	o.import.carmen_log = dir + "/bad.carmen";
 	EXPECT_NE(errorOf(o).find("bad.carmen:3: FLASER"), std::string::npos) << errorOf(o);
+	std::ofstream(dir + "/remissions.carmen") << "RAWLASER1 0 -1.57 3.14 0.0175 80 0.01 0 2 1.0 1.0 4 1.5 host 1.5\n";
+	o.import.carmen_log = dir + "/remissions.carmen";
+	EXPECT_NE(errorOf(o).find("remissions.carmen:1: RAWLASER1: num_remissions 4 is not a count of the fields that follow"),
+			  std::string::npos)
+		<< errorOf(o);
+	std::ofstream(dir + "/formfeed.carmen") << "ODOM 1 2 3 0 0 0 10.0 h 0\n\f\n";
+	o.import.carmen_log = dir + "/formfeed.carmen";
+	EXPECT_NE(errorOf(o).find("formfeed.carmen:2: a line of blanks only"), std::string::npos) << errorOf(o);
 	std::ofstream(dir + "/late.carmen") << "ODOM 1 2 3 0 0 0 10.0 h 0\nODOM 1 2 3 0 0 0 9.0 h 0\n";
 	o.import.carmen_log = dir + "/late.carmen";
 	EXPECT_NE(errorOf(o).find("late.carmen:2: ODOM time 9"), std::string::npos) << errorOf(o);

@@ -18,6 +18,7 @@ RangefinderParams params()
 {
 	RangefinderParams p;
 	p.threshold = 0.05;
+	p.walls.wall_fit = false;  // the disc's edge is a circle: each ray's own range is checked
 	return p;
 }
 }  // namespace

@@ -80,7 +80,7 @@ TEST(WallFit, NoisyWallsComeCloserAndStepsStay)
 	Scan s = noisyScan(cam, 7);
 	const double before = rmsError(s, 0, 360);
 	const double box_before = rmsError(s, 200, 215);
-	const int moved = fitWalls(s.rays, cam, p);
+	const int moved = fitWalls(s.rays, cam, p, 0.4, 3.8);
 	EXPECT_GT(moved, 300);
 	EXPECT_LT(rmsError(s, 0, 360), before / 2);
 	// The box stays a box: its rays are near 1 m, not pulled to the wall.
@@ -89,7 +89,7 @@ TEST(WallFit, NoisyWallsComeCloserAndStepsStay)
 	EXPECT_FLOAT_EQ(s.rays[300].range, 3.8f);
 	// The corners stay corners: no ray ends up much worse than it was.
 	Scan again = noisyScan(cam, 7);
-	fitWalls(again.rays, cam, p);
+	fitWalls(again.rays, cam, p, 0.4, 3.8);
 	const Scan raw = noisyScan(cam, 7);
 	for (int i = 0; i < 360; ++i)
 	{
@@ -100,6 +100,56 @@ TEST(WallFit, NoisyWallsComeCloserAndStepsStay)
 	}
 }
 
+TEST(WallFit, AScanOfHitsAllRoundIsFittedAcrossItsWrapAndKeptInRange)
+{
+	// No ray without a hit (the doorway closed): the wall straight behind,
+	// across the scan's first and last rays, is fitted too; a fitted range
+	// never leaves [min_range, max_range].
+	const OmniCameraModel cam{CameraParams{}};
+	WallFitParams p;
+	p.wall_fit = true;
+	Scan s = noisyScan(cam, 11);
+	s.rays[300].status = RayStatus::Hit;
+	s.rays[300].range = static_cast<float>(s.truth[300]);
+	s.rays[300].hit_rho = static_cast<float>(cam.rhoFromDistance(s.truth[300]));
+	const Scan raw = s;
+	fitWalls(s.rays, cam, p, 0.4, 3.8);
+	int moved_behind = 0;
+	for (int i : {355, 356, 357, 358, 359, 0, 1, 2, 3, 4}) moved_behind += s.rays[i].range != raw.rays[i].range;
+	EXPECT_GE(moved_behind, 8);
+	Scan near = noisyScan(cam, 11);
+	fitWalls(near.rays, cam, p, 0.4, 2.0);  // a max range inside the room
+	const Scan near_raw = noisyScan(cam, 11);
+	for (int i = 0; i < 360; ++i)
+	{
+		if (near.rays[i].range > 2.0f)
+		{
+			EXPECT_EQ(near.rays[i].range, near_raw.rays[i].range) << i;
+		}
+	}
+}
+
+TEST(WallFit, ACurvedWallIsMovedByNoMoreThanTheTolerance)
+{
+	// A round room 1.33 m across, no noise: pieces of the circle pass as
+	// lines while their sagitta is within the tolerance, so each range
+	// moves, but by at most wall_fit_tolerance of its sigma.
+	const OmniCameraModel cam{CameraParams{}};
+	WallFitParams p;
+	p.wall_fit = true;
+	std::vector<Ray> rays(360);
+	for (int i = 0; i < 360; ++i)
+	{
+		rays[i].bearing = scanlineBearing(i, 360);
+		rays[i].range = 1.33f;
+		rays[i].hit_rho = static_cast<float>(cam.rhoFromDistance(1.33));
+		rays[i].status = RayStatus::Hit;
+	}
+	fitWalls(rays, cam, p, 0.4, 3.8);
+	const double sigma = rangeSigma(cam, cam.rhoFromDistance(1.33), p.boundary_sigma);
+	for (const Ray& r : rays) EXPECT_LE(std::abs(r.range - 1.33), p.wall_fit_tolerance * sigma + 1e-6);
+}
+
 TEST(WallFit, OffMovesNothingAndBadParametersAreRefused)
 {
 	const OmniCameraModel cam{CameraParams{}};
@@ -107,13 +157,13 @@ TEST(WallFit, OffMovesNothingAndBadParametersAreRefused)
 	const Scan raw = s;
 	WallFitParams off;
 	off.wall_fit = false;
-	EXPECT_EQ(fitWalls(s.rays, cam, off), 0);
+	EXPECT_EQ(fitWalls(s.rays, cam, off, 0.4, 3.8), 0);
 	for (int i = 0; i < 360; ++i) EXPECT_EQ(s.rays[i].range, raw.rays[i].range);
 	WallFitParams p;
 	p.wall_fit = true;
 	p.wall_fit_min_rays = 2;
-	EXPECT_THROW(fitWalls(s.rays, cam, p), std::invalid_argument);
+	EXPECT_THROW(fitWalls(s.rays, cam, p, 0.4, 3.8), std::invalid_argument);
 	p.wall_fit_min_rays = 6;
 	p.boundary_sigma = 0;
-	EXPECT_THROW(fitWalls(s.rays, cam, p), std::invalid_argument);
+	EXPECT_THROW(fitWalls(s.rays, cam, p, 0.4, 3.8), std::invalid_argument);
 }

@@ -55,8 +55,10 @@ std::array<double, 3> compensatingGains(const std::array<double, 3>& reference, 
 	bool small = true;
 	for (int c = 0; c < 3; ++c)
 	{
-		g[c] = std::clamp(reference[c] / std::max(1.0, current[c]), 0.5, 2.0);
-		small = small && std::abs(g[c] - 1.0) < deadband;
+		g[c] = std::clamp(std::max(1.0, reference[c]) / std::max(1.0, current[c]), 0.5, 2.0);
+		// A median moves in whole grey levels: one level is never a change
+		// of light, however dark the channel.
+		small = small && (std::abs(g[c] - 1.0) < deadband || std::abs(reference[c] - current[c]) <= 1.0);
 	}
 	if (small) g = {1.0, 1.0, 1.0};
 	return g;

@@ -139,7 +139,7 @@ RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapte
 	// 4. Reject the rays that disagree with both their neighbours.
 	out.outliers = rejectOutliers(out.rays, p_.outliers);
 	// 5. Thin walls: hits on one straight wall onto its fitted line.
-	out.wall_fitted = fitWalls(out.rays, camera_, p_.walls);
+	out.wall_fitted = fitWalls(out.rays, camera_, p_.walls, p_.scanner.min_range, p_.scanner.max_range);
 	return out;
 }
 

@@ -130,16 +130,28 @@ void fitRun(const std::vector<Point>& pts, int a, int b, const WallFitParams& p,
 }
 }  // namespace
 
-int fitWalls(std::vector<Ray>& rays, const OmniCameraModel& camera, const WallFitParams& p)
+int fitWalls(std::vector<Ray>& rays, const OmniCameraModel& camera, const WallFitParams& p, double min_range,
+			 double max_range)
 {
 	if (!p.wall_fit) return 0;
 	p.validate();
 	const int n = static_cast<int>(rays.size());
 	// Start the walk just after a ray that is not a hit, so no run is cut by
-	// the scan's wrap; a scan of hits all round starts anywhere.
-	int start = 0;
+	// the scan's wrap; a scan of hits all round starts at its largest jump
+	// in range (a corner or a step, where a run would be split anyway).
+	int start = -1;
 	for (int i = 0; i < n; ++i)
 		if (rays[i].status != RayStatus::Hit) start = (i + 1) % n;
+	if (start < 0)
+	{
+		start = 0;
+		double jump = -1;
+		for (int i = 0; i < n; ++i)
+		{
+			const double d = std::abs(rays[i].range - rays[(i + n - 1) % n].range);
+			if (d > jump) jump = d, start = i;
+		}
+	}
 	int moved = 0;
 	std::vector<Point> run;
 	std::vector<int> index;
@@ -147,7 +159,8 @@ int fitWalls(std::vector<Ray>& rays, const OmniCameraModel& camera, const WallFi
 		std::vector<double> fitted(run.size(), -1);
 		fitRun(run, 0, static_cast<int>(run.size()), p, fitted);
 		for (std::size_t k = 0; k < run.size(); ++k)
-			if (fitted[k] > 0) rays[index[k]].range = static_cast<float>(fitted[k]), ++moved;
+			if (fitted[k] >= min_range && fitted[k] <= max_range)
+				rays[index[k]].range = static_cast<float>(fitted[k]), ++moved;
 		run.clear(), index.clear();
 	};
 	for (int k = 0; k < n; ++k)

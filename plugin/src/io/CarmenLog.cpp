@@ -18,6 +18,7 @@ class Fields
 	{
 		std::istringstream in(line);
 		for (std::string f; in >> f;) f_.push_back(f);
+		if (f_.empty()) throw std::invalid_argument("a line of blanks only");
 	}
 	std::size_t left() const { return f_.size() - next_; }
 	void need(std::size_t n, const std::string& what) const
@@ -25,10 +26,10 @@ class Fields
 		if (left() < n)
 			throw std::invalid_argument(f_.front() + ": " + std::to_string(f_.size() - 1) + " fields; " + what);
 	}
-	std::string word() { return f_.at(next_++); }
+	std::string word() { return take("a word"); }
 	double number(const std::string& name)
 	{
-		const std::string& f = f_.at(next_++);
+		const std::string& f = take(name);
 		try
 		{
 			return parseDouble(f);
@@ -38,16 +39,28 @@ class Fields
 			throw std::invalid_argument(f_.front() + ": " + name + " '" + f + "': " + e.what());
 		}
 	}
-	int count(const std::string& name, std::size_t at_most)
+	/** A count of fields that must follow it. */
+	int count(const std::string& name)
 	{
 		const double v = number(name);
-		if (!(v >= 0 && v <= static_cast<double>(at_most) && v == std::floor(v)))
-			throw std::invalid_argument(f_.front() + ": " + name + " " + formatDouble(v) + " is not a count of the fields that follow");
+		if (!(v >= 0 && v <= static_cast<double>(left()) && v == std::floor(v)))
+			throw std::invalid_argument(f_.front() + ": " + name + " " + formatDouble(v) +
+										" is not a count of the fields that follow (" + std::to_string(left()) + ")");
 		return static_cast<int>(v);
 	}
-	void skip(std::size_t n) { next_ += n; }
+	void skip(std::size_t n, const std::string& what)
+	{
+		need(n, "expected " + what);
+		next_ += n;
+	}
 
    private:
+	const std::string& take(const std::string& name)
+	{
+		if (next_ >= f_.size()) throw std::invalid_argument(f_.front() + ": " + name + " is missing");
+		return f_[next_++];
+	}
+
 	std::vector<std::string> f_;
 	std::size_t next_{0};
 };
@@ -86,11 +99,11 @@ CarmenLog readCarmenLog(const std::string& path)
 		if (kind == "FLASER")
 		{
 			f.need(1, "expected the number of readings");
-			const int n = f.count("num_readings", f.left());
+			const int n = f.count("num_readings");
 			f.need(n + 9, "expected " + std::to_string(n) + " ranges, two poses and three time fields");
 			LaserRow row;
 			for (int i = 0; i < n; ++i) row.ranges.push_back(f.number("range " + std::to_string(i)));
-			f.skip(3);  // the laser's pose, corrected
+			f.skip(3, "the laser's pose");
 			OdometryRow pose;
 			pose.x = f.number("odom_x"), pose.y = f.number("odom_y"), pose.phi = f.number("odom_theta");
 			row.time = pose.time = f.number("ipc_timestamp");
@@ -104,25 +117,25 @@ CarmenLog readCarmenLog(const std::string& path)
 		else if (kind == "RAWLASER1" || kind == "ROBOTLASER1")
 		{
 			f.need(8, "expected type, start_angle, field_of_view, resolution, max_range, accuracy, mode, n");
-			f.skip(1);
+			f.skip(1, "laser_type");
 			const double start = f.number("start_angle"), fov = f.number("field_of_view");
-			f.skip(1);
+			f.skip(1, "angular_resolution");
 			const double max_range = f.number("maximum_range");
-			f.skip(2);
-			const int n = f.count("num_readings", f.left());
+			f.skip(2, "accuracy and remission_mode");
+			const int n = f.count("num_readings");
 			if (n < 2) throw std::invalid_argument(kind + ": a scan needs two or more ranges");
 			f.need(n + 1, "expected " + std::to_string(n) + " ranges and the number of remissions");
 			LaserRow row;
 			for (int i = 0; i < n; ++i) row.ranges.push_back(f.number("range " + std::to_string(i)));
-			const int m = f.count("num_remissions", f.left());
-			f.skip(m);
+			const int m = f.count("num_remissions");
+			f.skip(m, std::to_string(m) + " remissions");
 			OdometryRow pose;
 			if (kind == "ROBOTLASER1")
 			{
 				f.need(11, "expected the laser's and the robot's poses, five motion fields and the times");
-				f.skip(3);
+				f.skip(3, "the laser's pose");
 				pose.x = f.number("robot_x"), pose.y = f.number("robot_y"), pose.phi = f.number("robot_theta");
-				f.skip(5);
+				f.skip(5, "tv, rv and the safety fields");
 			}
 			f.need(3, "expected ipc_timestamp, ipc_hostname, logger_timestamp");
 			row.time = pose.time = f.number("ipc_timestamp");
@@ -139,7 +152,7 @@ CarmenLog readCarmenLog(const std::string& path)
 			f.need(9, "expected x, y, theta, tv, rv, accel and the times");
 			OdometryRow pose;
 			pose.x = f.number("x"), pose.y = f.number("y"), pose.phi = f.number("theta");
-			f.skip(3);
+			f.skip(3, "tv, rv and accel");
 			pose.time = f.number("ipc_timestamp");
 			requireLater(last_odom, pose.time, "ODOM");
 			last_odom = pose.time;

@@ -49,8 +49,8 @@ struct CameraParams
 	 * image centre). Fit it with omnirange-calibrate. */
 	double alpha{96.0};
 	/** Mei's unified model, used only when mirror_model = mei: the mirror
-	 * parameter xi [-], the generalised focal length gamma [px] (the mean of
-	 * cv::omnidir's fx and fy) and the radial distortion k1, k2 [-] of its
+	 * parameter xi [-], the generalised focal length gamma [px]
+	 * (cv::omnidir's fx) and the radial distortion k1, k2 [-] of its
 	 * normalised image plane. The defaults are the stock paraboloid. */
 	double xi{1.0};
 	double gamma{192.0};

@@ -38,8 +38,10 @@ struct WallFitParams
 double rangeSigma(const OmniCameraModel& camera, double rho, double boundary_sigma);
 
 /** Moves the hit rays of `rays` (a whole scan, in bearing order, wrapping
- * round) that lie on straight walls onto their fitted lines; returns how
- * many it moved. Nothing happens when p.wall_fit is false. */
-int fitWalls(std::vector<Ray>& rays, const OmniCameraModel& camera, const WallFitParams& p);
+ * round) that lie on straight walls onto their fitted lines, unless that
+ * would take a range out of [min_range, max_range]; returns how many it
+ * moved. Nothing happens when p.wall_fit is false. */
+int fitWalls(std::vector<Ray>& rays, const OmniCameraModel& camera, const WallFitParams& p, double min_range,
+			 double max_range);
 
 }  // namespace omnirange
