@@ -15,6 +15,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 
 #include "../common/FactorySample.h"
+#include "ScanAndScore.h"
 #include <omnirange_eval/SensoryFrameFormat.h>
 
 #include <gtest/gtest.h>
@@ -245,19 +246,8 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	std::string head((std::istreambuf_iterator<char>(comment)), {});
 	EXPECT_NE(head.find(", " + std::to_string(bins) + " bins,"), std::string::npos) << head.substr(0, 400);
 	EXPECT_NE(head.find("1024 candidates"), std::string::npos) << head.substr(0, 400);
-	ScanApp::Options s;
-	s.ini = t.learn_ini;
-	s.histogram = t.output;
-	s.scan.input = kSample;
-	s.scan.output = dir + "/scanned.rawlog";
-	s.verbosity = mrpt::system::LVL_ERROR;
-	ScanApp(s).run();
-	AccuracyApp::Options a;
-	a.input = s.scan.output;
-	a.output = dir + "/acc";
-	a.accuracy.first = 12;  // only the 8 frames learning never saw
-	a.verbosity = mrpt::system::LVL_ERROR;
-	const eval::AccuracyResult acc = AccuracyApp(a).run();
+	// Scored only on the 8 frames learning never saw.
+	const eval::AccuracyResult acc = test::scanAndScore(t.learn_ini, t.output, kSample, dir, 12);
 	EXPECT_EQ(acc.frames, 8);
 	EXPECT_LT(acc.stats.meanAbs(), 0.1375);  // within the paper's worst Table II figure
 }

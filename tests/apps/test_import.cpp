@@ -16,6 +16,7 @@
 #include <mrpt/obs/CObservationOdometry.h>
 
 #include "../common/FactorySample.h"
+#include "ScanAndScore.h"
 
 #include <gtest/gtest.h>
 
@@ -99,19 +100,7 @@ double meanAbsOf(const std::string& rawlog, const std::string& dir)
 	t.training.until = 12;
 	t.verbosity = mrpt::system::LVL_ERROR;
 	TrainApp(t).run();
-	ScanApp::Options s;
-	s.ini = test::kIni;
-	s.histogram = t.output;
-	s.scan.input = rawlog;
-	s.scan.output = dir + "/scanned.rawlog";
-	s.verbosity = mrpt::system::LVL_ERROR;
-	ScanApp(s).run();
-	AccuracyApp::Options a;
-	a.input = s.scan.output;
-	a.output = dir + "/acc";
-	a.accuracy.first = 12;
-	a.verbosity = mrpt::system::LVL_ERROR;
-	const auto acc = AccuracyApp(a).run();
+	const auto acc = test::scanAndScore(test::kIni, t.output, rawlog, dir, 12);
 	EXPECT_EQ(acc.frames, 8);
 	return acc.stats.meanAbs();
 }

@@ -2,6 +2,8 @@
 // icp-slam: its numbers must be within bounds a broken stage would miss.
 #include "Programs.h"
 
+#include "../common/FactorySample.h"
+
 #include <fstream>
 
 #include <mrpt/config/CConfigFile.h>
@@ -9,14 +11,7 @@
 using namespace omnirange::e2e;
 namespace fs = std::filesystem;
 
-namespace
-{
-std::string readFile(const std::string& path)
-{
-	std::ifstream in(path);
-	return {std::istreambuf_iterator<char>(in), {}};
-}
-}  // namespace
+using omnirange::test::readText;
 
 TEST(Experiment, SmallFactoryRunEndToEnd)
 {
@@ -101,8 +96,8 @@ TEST(Experiment, ACameraWhoseImageIsNotRadialEndToEnd)
 	const std::string dir = workDir("experiment_not_radial");
 	const std::string terms = "aspect = 1.03\nskew = -3\np1 = 0.003\np2 = -0.002\n";
 	const auto withTerms = [&](std::string text) { return text.replace(text.find("k2 = 0\n"), 7, "k2 = 0\n" + terms); };
-	std::ofstream(dir + "/robot.ini") << withTerms(readFile(kSource + "/ini/robot-hyperbolic.ini"));
-	std::string experiment = readFile(kSource + "/ini/factory-hyperbolic.ini");
+	std::ofstream(dir + "/robot.ini") << withTerms(readText(kSource + "/ini/robot-hyperbolic.ini"));
+	std::string experiment = readText(kSource + "/ini/factory-hyperbolic.ini");
 	for (const std::string key : {"world = ", "route = ", "robot = ", "icp_laser_ini = ", "icp_omni_ini = ", "map_laser_ini = ",
 								  "map_omni_ini = ", "rbpf_laser_ini = ", "rbpf_omni_ini = "})
 	{
@@ -118,7 +113,7 @@ TEST(Experiment, ACameraWhoseImageIsNotRadialEndToEnd)
 	EXPECT_GT(whole, 0.9);
 
 	// The same images and histogram through the radial part alone.
-	std::string learned = readFile(dir + "/whole/learned.ini");
+	std::string learned = readText(dir + "/whole/learned.ini");
 	for (const std::string key : {"aspect = ", "skew = ", "p1 = ", "p2 = "})
 	{
 		const auto at = learned.find("\n" + key);
@@ -133,7 +128,8 @@ TEST(Experiment, ACameraWhoseImageIsNotRadialEndToEnd)
 	const RunResult acc = run(app("omnirange-accuracy") + " -q -i " + q(dir + "/radial.rawlog") + " -o " + q(dir + "/radial"));
 	ASSERT_EQ(acc.code, 0) << acc.out;
 	// The truth table's "all" row: | all | rays | within 2 cm | within 5 cm | ...
-	std::istringstream row(readFile(dir + "/radial_truth.md").substr(readFile(dir + "/radial_truth.md").find("| all |")));
+	const std::string truth = readText(dir + "/radial_truth.md");
+	std::istringstream row(truth.substr(truth.find("| all |")));
 	std::string cell;
 	for (int i = 0; i < 5; ++i) std::getline(row, cell, '|');
 	const double radial = std::stod(cell) / 100;

@@ -43,11 +43,10 @@ RawlogScanSummary ScanApp::run()
 	// The rawlog input scanRawlog checks itself; these are the app's own inputs.
 	requireOutputsAreNotInputs({o_.scan.output}, {o_.ini, o_.histogram});
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
-	const ColourModel colours = ColourModel::load(o_.histogram);
-	if (params.exposure_compensation && !colours.hasReference())
+	const Rangefinder rf(params, ColourModel::load(o_.histogram));
+	if (rf.compensationMissing())
 		MRPT_LOG_WARN_FMT("'%s' records no floor colour from training: exposure compensation is off; train it again with "
 						  "this omnirange-train to have it", o_.histogram.c_str());
-	const Rangefinder rf(params, colours);
 	Progress progress("objects read");
 	const auto s = scanRawlog(rf, o_.scan, progressAt(o_.verbosity, progress));
 	for (const auto& why : s.skipped_reasons) MRPT_LOG_WARN_FMT("skipped: %s", why.c_str());

@@ -27,12 +27,31 @@ double ocamTheta(const std::vector<double>& poly, double rho)
 	return std::atan2(rho, -z);
 }
 
+/** Mei: the normalised plane's radius r with the radial distortion applied. */
+double meiDistorted(const CameraParams& p, double r)
+{
+	const double r2 = r * r;
+	return r * (1 + p.k1 * r2 + p.k2 * r2 * r2);
+}
+
 /** Mei: the normalised image radius of incidence theta, distortion included (times gamma: pixels). */
 double meiRadius(const CameraParams& p, double theta)
 {
-	const double r = std::sin(theta) / (std::cos(theta) + p.xi);  // the sphere's point, projected
-	const double r2 = r * r;
-	return r * (1 + p.k1 * r2 + p.k2 * r2 * r2);
+	return meiDistorted(p, std::sin(theta) / (std::cos(theta) + p.xi));  // the sphere's point, projected
+}
+
+/** Mei: the inverse of meiDistorted (Newton on r (1 + k1 r^2 + k2 r^4) = rd). */
+double meiUndistorted(const CameraParams& p, double rd)
+{
+	double r = rd;
+	for (int i = 0; i < 20; ++i)
+	{
+		const double r2 = r * r;
+		const double df = 1 + 3 * p.k1 * r2 + 5 * p.k2 * r2 * r2;
+		if (df <= 0) break;
+		r -= (meiDistorted(p, r) - rd) / df;
+	}
+	return r;
 }
 }  // namespace
 
@@ -204,18 +223,9 @@ double OmniCameraModel::thetaFromRho(double rho) const
 		case MirrorModel::OCamCalib: return ocamTheta(p_.ocam_poly, rho);
 		case MirrorModel::Mei: break;
 	}
-	// Undo the distortion (Newton on r (1 + k1 r^2 + k2 r^4) = rd), then lift
-	// the point of the normalised plane onto the unit sphere (Mei's model).
-	const double rd = rho / p_.gamma;
-	double r = rd;
-	for (int i = 0; i < 20; ++i)
-	{
-		const double r2 = r * r;
-		const double f = r * (1 + p_.k1 * r2 + p_.k2 * r2 * r2) - rd;
-		const double df = 1 + 3 * p_.k1 * r2 + 5 * p_.k2 * r2 * r2;
-		if (df <= 0) break;
-		r -= f / df;
-	}
+	// Undo the distortion, then lift the point of the normalised plane onto
+	// the unit sphere (Mei's model).
+	const double r = meiUndistorted(p_, rho / p_.gamma);
 	const double disc = 1 + (1 - p_.xi * p_.xi) * r * r;
 	if (disc < 0) return kPi;  // beyond the mirror's image
 	const double lift = (p_.xi + std::sqrt(disc)) / (r * r + 1);
@@ -279,8 +289,7 @@ Pixel OmniCameraModel::pixelFromPolar(double bearing, double rho) const
 		const auto& A = p_.ocam_affine;
 		return {p_.cx + A[2] * x + y, p_.cy + A[0] * x + A[1] * y};
 	}
-	const double theta = thetaFromRho(rho);
-	const double r = std::sin(theta) / (std::cos(theta) + p_.xi);  // the normalised plane's radius
+	const double r = meiUndistorted(p_, rho / p_.gamma);  // the normalised plane's radius
 	return meiPixel(r * std::cos(a), -r * std::sin(a));
 }
 
@@ -302,10 +311,8 @@ std::pair<double, double> OmniCameraModel::polarFromPixel(const Pixel& px) const
 		return {bearingFromScreenAzimuth(std::atan2(-x, y)), std::hypot(x, y)};
 	}
 	const auto [x, y] = meiNormalised(px);
-	const double r = std::hypot(x, y);
-	const double r2 = r * r;
 	// The radial part's radius of the same direction.
-	return {bearingFromScreenAzimuth(std::atan2(-y, x)), p_.gamma * r * (1 + p_.k1 * r2 + p_.k2 * r2 * r2)};
+	return {bearingFromScreenAzimuth(std::atan2(-y, x)), p_.gamma * meiDistorted(p_, std::hypot(x, y))};
 }
 
 Pixel OmniCameraModel::pixelFromFloor(const FloorPoint& f) const

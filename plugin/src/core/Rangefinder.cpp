@@ -123,7 +123,9 @@ void Rangefinder::withClassifierFor(const cv::Mat& bgr, const PixelClassifier* a
 {
 	const PixelClassifier& classifier = adapted ? *adapted : static_cast<const PixelClassifier&>(classifier_);
 	if (!compensate_) return use(classifier);
-	use(CompensatedClassifier(classifier, compensatingGains(reference_, ring_.medianColour(bgr), p_.exposure_deadband)));
+	const auto gains = compensatingGains(reference_, ring_.medianColour(bgr), p_.exposure_deadband);
+	if (gains == std::array<double, 3>{1.0, 1.0, 1.0}) return use(classifier);  // within the dead band
+	use(CompensatedClassifier(classifier, gains));
 }
 
 RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapted) const

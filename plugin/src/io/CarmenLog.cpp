@@ -64,34 +64,30 @@ class Fields
 	std::vector<std::string> f_;
 	std::size_t next_{0};
 };
-
-void requireLater(double previous, double time, const std::string& stream)
-{
-	if (!(time > previous))
-		throw std::invalid_argument(stream + " time " + formatDouble(time) + " is not after the one before it (" +
-									formatDouble(previous) + "): messages must be in time order");
-}
 }  // namespace
 
 CarmenLog readCarmenLog(const std::string& path)
 {
 	CarmenLog log;
 	std::vector<OdometryRow> laser_poses;
-	double last_laser = -INFINITY, last_odom = -INFINITY;
 	// The first laser message sets the laser; the others must agree with it.
-	const auto setLaser = [&](const std::string& kind, double start, double fov, double max_range, std::size_t rays) {
+	const auto addScan = [&](const std::string& kind, double start, double fov, double max_range, LaserRow row) {
+		if (row.ranges.size() < 2) throw std::invalid_argument(kind + ": a scan needs two or more ranges");
 		if (log.laser.empty())
-		{
 			log.laser_message = kind, log.start_angle = start, log.fov = fov, log.max_range = max_range;
-			return;
+		else
+		{
+			if (kind != log.laser_message)
+				throw std::invalid_argument(kind + " after " + log.laser_message + ": one laser message kind per log");
+			if (start != log.start_angle || fov != log.fov || max_range != log.max_range)
+				throw std::invalid_argument(kind + ": the laser's start angle, field of view or max range changed");
+			if (row.ranges.size() != log.laser.front().ranges.size())
+				throw std::invalid_argument(kind + ": " + std::to_string(row.ranges.size()) +
+											" ranges, but the first scan has " +
+											std::to_string(log.laser.front().ranges.size()));
+			requireTimeAfter(log.laser.back().time, row.time, "laser time");
 		}
-		if (kind != log.laser_message)
-			throw std::invalid_argument(kind + " after " + log.laser_message + ": one laser message kind per log");
-		if (start != log.start_angle || fov != log.fov || max_range != log.max_range)
-			throw std::invalid_argument(kind + ": the laser's start angle, field of view or max range changed");
-		if (rays != log.laser.front().ranges.size())
-			throw std::invalid_argument(kind + ": " + std::to_string(rays) + " ranges, but the first scan has " +
-										std::to_string(log.laser.front().ranges.size()));
+		log.laser.push_back(std::move(row));
 	};
 	forEachDataLine(path, "CARMEN log", [&](int, const std::string& line) {
 		Fields f(line);
@@ -107,11 +103,7 @@ CarmenLog readCarmenLog(const std::string& path)
 			OdometryRow pose;
 			pose.x = f.number("odom_x"), pose.y = f.number("odom_y"), pose.phi = f.number("odom_theta");
 			row.time = pose.time = f.number("ipc_timestamp");
-			if (n < 2) throw std::invalid_argument("FLASER: a scan needs two or more ranges");
-			setLaser(kind, log.start_angle, log.fov, 0, row.ranges.size());
-			requireLater(last_laser, row.time, "laser");
-			last_laser = row.time;
-			log.laser.push_back(std::move(row));
+			addScan(kind, log.start_angle, log.fov, 0, std::move(row));
 			laser_poses.push_back(pose);
 		}
 		else if (kind == "RAWLASER1" || kind == "ROBOTLASER1")
@@ -123,7 +115,6 @@ CarmenLog readCarmenLog(const std::string& path)
 			const double max_range = f.number("maximum_range");
 			f.skip(2, "accuracy and remission_mode");
 			const int n = f.count("num_readings");
-			if (n < 2) throw std::invalid_argument(kind + ": a scan needs two or more ranges");
 			f.need(n + 1, "expected " + std::to_string(n) + " ranges and the number of remissions");
 			LaserRow row;
 			for (int i = 0; i < n; ++i) row.ranges.push_back(f.number("range " + std::to_string(i)));
@@ -141,10 +132,7 @@ CarmenLog readCarmenLog(const std::string& path)
 			row.time = pose.time = f.number("ipc_timestamp");
 			if (!(fov > 0 && fov <= 2 * M_PI)) throw std::invalid_argument(kind + ": field_of_view must be within (0, 2 pi]");
 			if (!(max_range > 0)) throw std::invalid_argument(kind + ": maximum_range must be > 0");
-			setLaser(kind, start, fov, max_range, row.ranges.size());
-			requireLater(last_laser, row.time, "laser");
-			last_laser = row.time;
-			log.laser.push_back(std::move(row));
+			addScan(kind, start, fov, max_range, std::move(row));
 			if (kind == "ROBOTLASER1") laser_poses.push_back(pose);
 		}
 		else if (kind == "ODOM")
@@ -154,8 +142,7 @@ CarmenLog readCarmenLog(const std::string& path)
 			pose.x = f.number("x"), pose.y = f.number("y"), pose.phi = f.number("theta");
 			f.skip(3, "tv, rv and accel");
 			pose.time = f.number("ipc_timestamp");
-			requireLater(last_odom, pose.time, "ODOM");
-			last_odom = pose.time;
+			if (!log.odometry.empty()) requireTimeAfter(log.odometry.back().time, pose.time, "ODOM time");
 			log.odometry.push_back(pose);
 		}
 	});

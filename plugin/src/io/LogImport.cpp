@@ -52,13 +52,6 @@ double number(const std::string& field, const std::string& name)
 	}
 }
 
-/** Times must increase strictly down a file. */
-void requireAfter(double previous, double time)
-{
-	if (!(time > previous))
-		throw std::invalid_argument("time " + formatDouble(time) + " is not after the one before it (" +
-									formatDouble(previous) + "): rows must be in time order");
-}
 
 bool isImageFile(const fs::path& p)
 {
@@ -68,6 +61,13 @@ bool isImageFile(const fs::path& p)
 	return kinds.count(ext) > 0;
 }
 }  // namespace
+
+void requireTimeAfter(double previous, double time, const std::string& what)
+{
+	if (!(time > previous))
+		throw std::invalid_argument(what + " " + formatDouble(time) + " is not after the one before it (" +
+									formatDouble(previous) + "): rows must be in time order");
+}
 
 std::vector<TimedImage> listImages(const std::string& dir, const std::string& list_csv)
 {
@@ -79,7 +79,7 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 		forEachCsvRow(list_csv, "image list", [&](const std::vector<std::string>& f) {
 			if (f.size() != 2) throw std::invalid_argument("expected TIME, FILE");
 			const double t = number(f[0], "time");
-			requireAfter(previous, t);
+			requireTimeAfter(previous, t);
 			previous = t;
 			const fs::path file = base / f[1];
 			if (!fs::is_regular_file(file)) throw std::invalid_argument("no image file '" + file.string() + "'");
@@ -119,7 +119,7 @@ std::vector<LaserRow> readLaserCsv(const std::string& path)
 		if (f.size() < 3) throw std::invalid_argument("expected TIME, then two or more ranges");
 		LaserRow row;
 		row.time = number(f[0], "time");
-		requireAfter(previous, row.time);
+		requireTimeAfter(previous, row.time);
 		previous = row.time;
 		for (std::size_t i = 1; i < f.size(); ++i) row.ranges.push_back(number(f[i], "range " + std::to_string(i - 1)));
 		if (!rows.empty() && row.ranges.size() != rows.front().ranges.size())
@@ -138,7 +138,7 @@ std::vector<OdometryRow> readOdometryCsv(const std::string& path)
 		if (f.size() != 4) throw std::invalid_argument("expected TIME, x, y, phi");
 		OdometryRow row;
 		row.time = number(f[0], "time");
-		requireAfter(previous, row.time);
+		requireTimeAfter(previous, row.time);
 		previous = row.time;
 		row.x = number(f[1], "x"), row.y = number(f[2], "y"), row.phi = number(f[3], "phi");
 		rows.push_back(row);

@@ -43,6 +43,8 @@ void COmniRangefinderSensor::loadConfig_sensorSpecific(
 void COmniRangefinderSensor::initialize()
 {
 	rangefinder_ = std::make_unique<Rangefinder>(params_, ColourModel::load(histogram_file_));
+	if (rangefinder_->compensationMissing())
+		MRPT_LOG_WARN_STREAM(histogram_file_ << " records no floor colour from training: exposure compensation is off");
 	if (params_.floor_adaptation)
 		adaptation_ = std::make_unique<FloorAdaptation>(*rangefinder_, params_.adaptation_memory);
 	MRPT_LOG_INFO_STREAM("histogram " << histogram_file_ << ", rangefinder options:\n" << params_.asIni());

@@ -99,6 +99,9 @@ class Rangefinder
 	const OmniCameraModel& camera() const { return camera_; }
 	const FreeSpaceClassifier& classifier() const { return classifier_; }
 	const PolarScanner& scanner() const { return scanner_; }
+	/** true when exposure compensation is asked for but the histogram
+	 * records no colour from training to compensate towards. */
+	bool compensationMissing() const { return p_.exposure_compensation && !compensate_; }
 	/** The floor just beyond the base (ExposureCompensation.h, FloorAdaptation.h). */
 	const FloorRing& floorRing() const { return ring_; }
 

@@ -39,6 +39,10 @@ struct OdometryRow
 	double x{0}, y{0}, phi{0};  ///< [m], [m], [rad]
 };
 
+/** Times increase strictly down each log: throws std::invalid_argument
+ * ("WHAT T is not after the one before it (P): ...") unless time > previous. */
+void requireTimeAfter(double previous, double time, const std::string& what = "time");
+
 /** The images of `dir` (jpg, jpeg, png, pgm, ppm, bmp) timed by their names,
  * or the rows of `list_csv` when it is given. Throws std::runtime_error naming
  * the file (and line) on a name or row without a time, times out of order,
