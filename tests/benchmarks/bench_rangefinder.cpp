@@ -92,22 +92,45 @@ BENCHMARK(BM_FrameToObservation)->Unit(benchmark::kMillisecond);
 // the floor's colour: exposure compensation (the ring's median, classifying
 // through gains) and the sub-pixel boundary (on by default in both). The
 // training light is 5 % brighter, past the dead band, so the gains are used
-// (within it the compensation costs the ring's median only).
+// (within it the compensation costs the ring's median only). Arg 1: with the
+// brightness step as well, as learning may set it.
 void BM_FrameToScanCompensated(benchmark::State& state)
 {
 	const Scene& scene = ::scene(false);
+	RangefinderParams p = scene.params;
+	p.scanner.step_threshold = state.range(0) != 0 ? 0.35 : 0.0;
 	ColourModel model(scene.histogram);
 	const OmniCameraModel cam{scene.params.camera};
 	model.reference = FloorRing(cam, cam.distanceFromRho(scene.params.scanner.base_radius) + 0.05).medianColour(scene.frame);
 	for (double& c : model.reference) c *= 1.05;
-	const Rangefinder rf(scene.params, model);
+	const Rangefinder rf(p, model);
 	for (auto _ : state)
 	{
 		const RangeScan scan = rf.process(scene.frame);
 		benchmark::DoNotOptimize(scan.rays.data());
 	}
 }
-BENCHMARK(BM_FrameToScanCompensated)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FrameToScanCompensated)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The room with the brightness step on (learning switches it on where it
+// helps): each scanline is read again for steps up to the colour's hit.
+void BM_FrameToScanWithBrightnessStep(benchmark::State& state)
+{
+	const Scene& scene = ::scene(state.range(0) != 0);
+	RangefinderParams p = scene.params;
+	p.scanner.step_threshold = 0.35;
+	const Rangefinder rf(p, scene.histogram);
+	int by_step = 0;
+	for (auto _ : state)
+	{
+		const RangeScan scan = rf.process(scene.frame);
+		by_step = 0;
+		for (const Ray& r : scan.rays) by_step += r.by_step;
+		benchmark::DoNotOptimize(scan.rays.data());
+	}
+	state.counters["rays_ended_by_step"] = by_step;
+}
+BENCHMARK(BM_FrameToScanWithBrightnessStep)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -106,3 +106,34 @@ TEST(ParameterLearning, TheWinnersHistogramIsTrainedAgainOnEveryPair)
 	o.until = 9;  // the nine pairs before the held-aside ones
 	EXPECT_EQ(first.model.floor.total(), trainFromRawlog(rp, o).model.floor.total());
 }
+
+TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsScore)
+{
+	const RangefinderParams rp;
+	RawlogTrainingOptions o;
+	o.input = kSample;
+	o.until = 12;
+	LearningOptions lo;
+	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.01, 0.075};
+	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {20}, lo.Ks = {2};
+	lo.boundary_models = {BoundaryModel::Subpixel};
+	lo.step_thresholds = {0.25, 0.5}, lo.step_candidates = 1;
+	const LearningResult r = learnParameters(rp, o, lo);
+	ASSERT_EQ(r.tried.size(), 4u);  // the grid of two, then the step twice on its better one
+	const LearnedCandidate& grid_best = r.tried[0].score <= r.tried[1].score ? r.tried[0] : r.tried[1];
+	EXPECT_EQ(r.tried[0].step_threshold, 0.0);
+	EXPECT_EQ(r.tried[1].step_threshold, 0.0);
+	for (std::size_t i = 2; i < 4; ++i)
+	{
+		EXPECT_EQ(r.tried[i].threshold, grid_best.threshold);
+		EXPECT_EQ(r.tried[i].step_threshold, lo.step_thresholds[i - 2]);
+	}
+	double lowest = 1e9;
+	for (const auto& c : r.tried) lowest = std::min(lowest, c.score);
+	EXPECT_EQ(r.best.score, lowest);
+	EXPECT_EQ(r.params.scanner.step_threshold, r.best.step_threshold);
+	EXPECT_NE(learnedIni(r).find("\nstep_threshold = "), std::string::npos);
+
+	lo.step_thresholds.clear();  // not tried
+	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 2u);
+}

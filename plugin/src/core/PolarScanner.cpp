@@ -1,5 +1,6 @@
 #include "omnirange/core/PolarScanner.h"
 
+#include "omnirange/core/BrightnessStep.h"
 #include "omnirange/io/OptionsTable.h"
 
 #include <opencv2/core.hpp>
@@ -81,7 +82,14 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 		.add("N", "px", "false-positive filter: pixels behind a candidate that must be non-free (>= 1)",
 			 [](P& p) -> auto& { return p.filter.N; })
 		.add("K", "px", "false-negative filter: longest free run negated inside that window (>= 0)",
-			 [](P& p) -> auto& { return p.filter.K; });
+			 [](P& p) -> auto& { return p.filter.K; })
+		.add("step_threshold", "-",
+			 "a brightness step along a scanline, before the colour's hit, ends the ray when the means of "
+			 "step_window pixels either side differ by a ratio of at least e^step_threshold on some channel "
+			 "(0: off; omnirange-train --learn tries it)",
+			 [](P& p) -> auto& { return p.step_threshold; })
+		.add("step_window", "px", "pixels averaged on each side of a brightness step (>= 1)",
+			 [](P& p) -> auto& { return p.step_window; });
 	return t;
 }
 
@@ -90,6 +98,8 @@ void PolarScannerParams::validate(const OmniCameraModel& cam) const
 	require(scanlines >= 2 && scanlines <= 36000, "scanlines must be within [2, 36000]");
 	require(filter.N >= 1 && filter.N <= 10000, "N (false-positive filter) must be within [1, 10000] px");
 	require(filter.K >= 0 && filter.K <= 10000, "K (false-negative filter) must be within [0, 10000] px");
+	require(step_threshold >= 0 && step_threshold <= 5, "step_threshold must be within [0, 5]");
+	require(step_window >= 1 && step_window <= 100, "step_window must be within [1, 100] px");
 	require(base_radius >= 0, "base_radius must be >= 0 px");
 	require(min_range >= 0, "min_range must be >= 0 m");
 	require(max_range > min_range, "max_range must be > min_range");
@@ -116,7 +126,7 @@ PolarScanner::PolarScanner(const OmniCameraModel& cam, const PolarScannerParams&
 	lines_.reserve(p_.scanlines);
 	for (int s = 0; s < p_.scanlines; ++s)
 	{
-		Scanline line{scanlineBearing(s, p_.scanlines), pixel_.size(), 0, -1};
+		Scanline line{scanlineBearing(s, p_.scanlines), pixel_.size(), 0, -1, -1};
 		int past_max = -1;  // first pixel whose range exceeds max range
 		long prev = -1;
 		double prev_rho = 0;
@@ -148,6 +158,7 @@ PolarScanner::PolarScanner(const OmniCameraModel& cam, const PolarScannerParams&
 			rho_.push_back(static_cast<float>(rho));
 			mid_range_.push_back(static_cast<float>(range));
 			if (past_max < 0 && range > p_.max_range) past_max = line.count;
+			if (line.first_in_range < 0 && range >= p_.min_range) line.first_in_range = line.count;
 			++line.count;
 		}
 		line.last_candidate = past_max - 1;
@@ -191,13 +202,22 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 		Ray& ray = rays[s];
 		ray.bearing = line.bearing;
 		ray.search = findHit(is_free, line.count, line.last_candidate, p_.filter);
-		if (ray.search.status != HitSearch::Status::Hit)
+		const bool colour_hit = ray.search.status == HitSearch::Status::Hit;
+		int hit = colour_hit ? ray.search.index : -1;
+		if (p_.step_threshold > 0 && line.first_in_range >= 0)
+		{
+			// A face the colour model sees through still shows its foot.
+			const int to = (colour_hit ? hit : line.last_candidate + 1) - 1;
+			const int step = findBrightnessStep(data, pix, line.count, line.first_in_range, to, p_.step_threshold,
+												p_.step_window);
+			if (step >= 0) hit = step, ray.by_step = true;
+		}
+		if (hit < 0)
 		{
 			ray.status = RayStatus::NoHit;
 			ray.range = static_cast<float>(p_.max_range);
 			continue;
 		}
-		const int hit = ray.search.index;
 		float range = mid_range_[line.first + hit];
 		ray.hit_rho = mid_rho_[line.first + hit];
 		if (p_.boundary_model == BoundaryModel::Subpixel && hit > 0)

@@ -152,31 +152,49 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	r.validation = (lo.split == ValidationSplit::Later ? "the later part of the stretch" : "interleaved") + std::string(light);
 
 	r.best.score = 1e9;
+	std::map<TrainerKey, ColourModel> models;
+	const auto consider = [&](const LearnedCandidate& candidate) {
+		LearnedCandidate c = candidate;
+		RangefinderParams p = start;
+		p.threshold = c.threshold, p.obstacle_ratio = c.obstacle_ratio, p.histogram_smoothing = c.smoothing;
+		p.scanner.filter.N = c.N, p.scanner.filter.K = c.K, p.scanner.boundary_model = c.boundary;
+		p.scanner.step_threshold = c.step_threshold;
+		// Scored on the classifier's own ranges: the wall fit smooths over
+		// the very errors learning must see.
+		RangefinderParams scored = p;
+		scored.walls.wall_fit = false;
+		const ColourModel& model = models.at(TrainerKey{c.space, c.bins, c.light_change});
+		c.score = score(Rangefinder(scored, model), validation);
+		r.tried.push_back(c);
+		if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
+	};
 	for (const auto& [key, trainer] : trainers)
 	{
-		const ColourModel model = trainer.model();
+		ColourModel model = trainer.model();
 		if (model.floor.empty()) continue;
+		models.emplace(key, std::move(model));
+		const auto& [space, b, light] = key;
 		for (const double theta : lo.thresholds)
 			for (const double ratio : lo.obstacle_ratios)
 				for (const double smoothing : lo.smoothings)
 					for (const int N : lo.Ns)
 						for (const int K : lo.Ks)
 							for (const BoundaryModel boundary : lo.boundary_models)
-							{
-								RangefinderParams p = start;
-								p.threshold = theta, p.obstacle_ratio = ratio, p.histogram_smoothing = smoothing;
-								p.scanner.filter.N = N, p.scanner.filter.K = K, p.scanner.boundary_model = boundary;
-								const auto& [space, b, light] = key;
-								// Scored on the classifier's own ranges: the wall fit
-								// smooths over the very errors learning must see.
-								RangefinderParams scored = p;
-								scored.walls.wall_fit = false;
-								const LearnedCandidate c{space, b, light, theta, ratio, smoothing, N, K, boundary,
-														 score(Rangefinder(scored, model), validation)};
-								r.tried.push_back(c);
-								if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
-							}
+								consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0});
 	}
+	// The brightness step on the grid's best: it is for what colour cannot
+	// see, and scoring it on every candidate would multiply the cost.
+	std::vector<LearnedCandidate> best = r.tried;
+	const std::size_t top = std::min<std::size_t>(best.size(), std::max(0, lo.step_candidates));
+	std::partial_sort(best.begin(), best.begin() + top, best.end(),
+					  [](const LearnedCandidate& a, const LearnedCandidate& b) { return a.score < b.score; });
+	for (std::size_t i = 0; i < top; ++i)
+		for (const double step : lo.step_thresholds)
+		{
+			LearnedCandidate c = best[i];
+			c.step_threshold = step;
+			consider(c);
+		}
 	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
 	r.training = o.training;
 	r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
@@ -223,9 +241,9 @@ std::string describe(const LearnedCandidate& c)
 	char s[300];
 	std::snprintf(s, sizeof s,
 				  "colour space %s, %d bins, light change %g, threshold %g, obstacle_ratio %g, smoothing %g, N %d, K %d, "
-				  "%s boundary",
+				  "%s boundary, step %g",
 				  toString(c.space).c_str(), c.bins, c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K,
-				  toString(c.boundary).c_str());
+				  toString(c.boundary).c_str(), c.step_threshold);
 	return s;
 }
 

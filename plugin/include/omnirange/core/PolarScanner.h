@@ -42,6 +42,8 @@ struct Ray
 	/** What the N/K search found on this ray's scanline, and why (its pixel
 	 * indices count from the scanline's first pixel, at base_radius). */
 	HitSearch search{};
+	/** The brightness step (BrightnessStep.h), not the colour, ended this ray. */
+	bool by_step{false};
 };
 
 /** Bearing [rad] of scanline i of S: MRPT's angle of ray i in a scan of S
@@ -64,6 +66,10 @@ struct PolarScannerParams
 	/** How the edge is placed between pixels (BoundaryRefinement.h). */
 	BoundaryModel boundary_model{BoundaryModel::Subpixel};
 	HitFilterParams filter{};
+	/** [-] a brightness step of at least this (natural log of the ratio of
+	 * window means) before the colour's hit ends the ray there; 0: off. */
+	double step_threshold{0.0};
+	int step_window{4};  ///< [px] pixels averaged on each side of a step
 
 	static const OptionsTable<PolarScannerParams>& table();
 	/** Throws std::invalid_argument naming the key; the camera bounds the radii. */
@@ -99,6 +105,7 @@ class PolarScanner
 		std::size_t first;  // into pixel_/mid_range_
 		int count;  // pixels on this scanline
 		int last_candidate;  // last pixel whose range is within max range
+		int first_in_range;  // first pixel whose range is at least min range
 	};
 
 	/** Image radius [px] at fractional pixel index k of a scanline. */

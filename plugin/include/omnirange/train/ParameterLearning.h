@@ -40,6 +40,12 @@ struct LearningOptions
 	 * many (at most 64). */
 	std::vector<int> bins{};
 	std::vector<BoundaryModel> boundary_models{BoundaryModel::Subpixel, BoundaryModel::Midpoint};
+	/** PolarScannerParams::step_threshold, tried on the `step_candidates`
+	 * best candidates of the grid above (scored with it off): the brightness
+	 * step is for what colour cannot see, so it is tried with the colour
+	 * models that do best without it. Empty: not tried. */
+	std::vector<double> step_thresholds{0.15, 0.25, 0.35, 0.5};
+	int step_candidates{32};
 	/** TrainingParams::light_change of the candidate histograms ({0, 0.15}
 	 * was measured and did not help: docs/results.md). */
 	std::vector<double> light_changes{0.0};
@@ -72,6 +78,7 @@ struct LearnedCandidate
 	double smoothing{0};  ///< [bins]
 	int N{0}, K{0};
 	BoundaryModel boundary{BoundaryModel::Subpixel};
+	double step_threshold{0};  ///< PolarScannerParams::step_threshold; 0: off
 	/** [m] mean over the laser's rays of the error: |laser - omni| where
 	 * both see the boundary (at most 1.25), the false obstacle's shortfall
 	 * where the laser sees nothing within max range, 1.25 for a rejected ray
@@ -106,7 +113,7 @@ std::vector<PairRole> splitPairs(const LearningOptions& options, int selected);
 LearningResult learnParameters(const RangefinderParams& start, const RawlogTrainingOptions& training,
 							   const LearningOptions& options = {}, Progress* progress = nullptr);
 
-/** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, N 20, K 4, subpixel boundary". */
+/** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, N 20, K 4, subpixel boundary, step 0.25". */
 std::string describe(const LearnedCandidate& c);
 
 /** The learned keys as an ini a user can read: a comment saying how they

@@ -1,0 +1,27 @@
+#pragma once
+// A second cue for where the floor ends, beside colour: a step in brightness
+// along the scanline. Where a wall or an object has the floor's colour (paint
+// like the tiles, a grey floor among grey steel), the colour model sees
+// through it; but its foot is still an edge, because a vertical face is lit
+// unlike the floor. A step begins at pixel k when the mean brightness
+// (B + G + R) of the `window` pixels from k on and that of the `window` pixels
+// before k differ by a ratio of at least e^threshold. A ratio, so exposure,
+// which multiplies every pixel alike, does not move it; brightness, not each
+// channel, because a dark channel is mostly noise; means over a window, so a
+// thin line (tile joints, plank seams, noise) moves it far less than a
+// face's edge. Off (threshold 0) unless learning finds it helps (docs/method.md).
+
+#include <cstdint>
+
+namespace omnirange
+{
+/** The first step in [from, to] of a scanline (pixel k at `bgr + 3 *
+ * pixels[k]`, `count` pixels) where a step of at least `threshold` (natural
+ * log of the ratio of the window means), at its foot: the pixel, at most
+ * `window` past where the ratio first reaches it, where it peaks; -1 if
+ * none. Pixels without
+ * `window` neighbours on either side are not tested. */
+int findBrightnessStep(const std::uint8_t* bgr, const std::int32_t* pixels, int count, int from, int to,
+					   double threshold, int window);
+
+}  // namespace omnirange

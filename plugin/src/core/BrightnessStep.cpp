@@ -1,0 +1,56 @@
+#include "omnirange/core/BrightnessStep.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace omnirange
+{
+namespace
+{
+/** Grey levels added to each mean: near black, sensor noise alone makes large ratios. */
+constexpr double kDarkOffset = 12.0;  // 4 per channel
+}  // namespace
+
+int findBrightnessStep(const std::uint8_t* bgr, const std::int32_t* pixels, int count, int from, int to,
+					   double threshold, int window)
+{
+	if (threshold <= 0 || window < 1) return -1;
+	from = std::max(from, window);
+	to = std::min(to, count - window);
+	if (from > to) return -1;
+	const double ratio = std::exp(threshold), offset = kDarkOffset * window;
+	// Brightness, B + G + R: a single channel is too noisy where it is dark
+	// (a green floor's blue), and a face the floor's colour differs in brightness.
+	const auto at = [&](int k) {
+		const std::uint8_t* px = bgr + 3 * static_cast<std::size_t>(pixels[k]);
+		return px[0] + px[1] + px[2];
+	};
+	// Running sums of the windows [k - window, k) and [k, k + window).
+	int before = 0, after = 0;
+	for (int j = 0; j < window; ++j) before += at(from - window + j), after += at(from + j);
+	int found = -1;
+	double best = 0;
+	for (int k = from; k <= to; ++k)
+	{
+		if (k > from)
+		{
+			const int leaving = at(k - 1);
+			before += leaving - at(k - 1 - window);
+			after += at(k - 1 + window) - leaving;
+		}
+		const double b = before + offset, a = after + offset;
+		if (found < 0)
+		{
+			if (a >= ratio * b || b >= ratio * a) found = k, best = std::max(a / b, b / a);
+			continue;
+		}
+		// The windows straddle the step from `window` pixels before its foot;
+		// the foot is where they differ most: the first maximum after crossing.
+		const double c = std::max(a / b, b / a);
+		if (c <= best || k >= found + window) break;
+		found = k, best = c;
+	}
+	return found;
+}
+
+}  // namespace omnirange
