@@ -120,6 +120,7 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 	n_ = spin("N [px]", 1, 200);
 	k_ = spin("K [px]", 0, 50);
 	threshold_ = real("threshold", 0.0, 1.0, 0.0025, 4);
+	step_ = real("brightness step", 0.0, 5.0, 0.05, 2);
 	label("boundary");
 	boundary_ = new wxChoice(p, wxID_ANY);
 	boundary_->Append("midpoint"), boundary_->Append("subpixel");
@@ -184,6 +185,7 @@ void TunerFrame::controlsFromParams()
 	n_->SetValue(p.scanner.filter.N);
 	k_->SetValue(p.scanner.filter.K);
 	threshold_->SetValue(p.threshold);
+	step_->SetValue(p.scanner.step_threshold);
 	boundary_->SetSelection(p.scanner.boundary_model == BoundaryModel::Midpoint ? 0 : 1);
 	outliers_->SetSelection(p.outliers.outlier_filter == OutlierFilterKind::None ? 0 : 1);
 	cx_->SetValue(p.camera.cx);
@@ -203,6 +205,7 @@ void TunerFrame::onParamsChanged()
 	p.scanner.filter.N = n_->GetValue();
 	p.scanner.filter.K = k_->GetValue();
 	p.threshold = threshold_->GetValue();
+	p.scanner.step_threshold = step_->GetValue();
 	p.scanner.boundary_model = boundary_->GetSelection() == 0 ? BoundaryModel::Midpoint : BoundaryModel::Subpixel;
 	p.outliers.outlier_filter = outliers_->GetSelection() == 0 ? OutlierFilterKind::None : OutlierFilterKind::Spike;
 	p.camera.cx = cx_->GetValue();

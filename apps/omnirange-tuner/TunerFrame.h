@@ -48,7 +48,7 @@ class TunerFrame : public wxFrame
 	wxSlider* slider_{};
 	wxStaticText *frame_label_{}, *frame_score_{};
 	wxSpinCtrl *n_{}, *k_{};
-	wxSpinCtrlDouble *threshold_{}, *cx_{}, *cy_{}, *r_{}, *azimuth_{};
+	wxSpinCtrlDouble *threshold_{}, *step_{}, *cx_{}, *cy_{}, *r_{}, *azimuth_{};
 	wxChoice *boundary_{}, *outliers_{};
 	wxCheckBox *mirrored_{}, *walls_{}, *exposure_{};
 	wxTimer play_;

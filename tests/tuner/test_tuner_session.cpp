@@ -201,3 +201,21 @@ TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOf
 	EXPECT_GT(countColour(swatches, cv::Scalar(30, 30, 30)), 0);
 	EXPECT_LT(countColour(swatches, cv::Scalar(30, 30, 30)), 160 * 160);
 }
+
+TEST(TunerOverlays, RaysTheBrightnessStepEndedAreRinged)
+{
+	const std::string dir = workDir("step_rings");
+	TunerSession s = trainedSession(dir);
+	OverlayOptions rays;
+	rays.classification = rays.candidates = rays.laser = rays.truth = rays.camera = false;
+	const FrameScan off = s.scan(5);
+	EXPECT_EQ(countColour(drawOmniOverlay(off, s.rangefinder(), rays), colour::kByStep), 0);
+	RangefinderParams p = s.params();
+	p.scanner.step_threshold = 0.15;  // low: the sample's floor has steps that high
+	s.setParams(p);
+	const FrameScan on = s.scan(5);
+	int by_step = 0;
+	for (const Ray& r : on.scan.rays) by_step += r.by_step;
+	ASSERT_GT(by_step, 0);
+	EXPECT_GT(countColour(drawOmniOverlay(on, s.rangefinder(), rays), colour::kByStep), by_step);
+}

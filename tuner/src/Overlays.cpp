@@ -103,7 +103,10 @@ cv::Mat drawOmniOverlay(const FrameScan& s, const Rangefinder& rf, const Overlay
 		if (o.candidates && r.search.last_rejected >= 0)
 			cv::circle(img, at(cam.pixelFromPolar(r.bearing, base + r.search.last_rejected)), 1,
 					   colour::kRejectedCandidate, -1);
-		if (o.rays) cv::circle(img, at(cam.pixelFromPolar(r.bearing, endRho(r, rf))), 2, statusColour(r.status), -1);
+		if (!o.rays) continue;
+		const cv::Point end = at(cam.pixelFromPolar(r.bearing, endRho(r, rf)));
+		cv::circle(img, end, 2, statusColour(r.status), -1);
+		if (r.by_step) cv::circle(img, end, 4, colour::kByStep, 1);  // the brightness step ended it, not colour
 	}
 	return img;
 }

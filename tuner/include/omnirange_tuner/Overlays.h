@@ -26,7 +26,7 @@ namespace colour
 {
 inline const cv::Scalar kHit{0, 255, 0}, kNoHit{0, 255, 255}, kTooClose{0, 0, 255}, kOutlier{255, 0, 255},
 	kRejectedCandidate{0, 165, 255}, kLaser{255, 255, 0}, kTruth{255, 255, 255}, kFree{255, 0, 0},
-	kForward{0, 0, 255}, kCircle{200, 200, 200};
+	kForward{0, 0, 255}, kCircle{200, 200, 200}, kByStep{0, 90, 0};
 }
 
 /** The frame's image with the overlays `o` asks for. */
