@@ -168,6 +168,7 @@ void Experiment::learn(const RawlogTrainingOptions& o)
 	r_.training_pairs = l.training_pairs;
 	r_.learned = describe(l.best) + " (of " + std::to_string(l.tried.size()) + " candidates, validated on " +
 				 std::to_string(l.validation_pairs) + " held-aside pairs: `learned.ini`)";
+	if (const std::string warning = poorLearningWarning(l); !warning.empty()) r_.learned += ". Warning: " + warning;
 	// The figures of paper Fig. 1, from the first training pair.
 	RawlogTrainingOptions one = o;
 	one.max_frames = 1;

@@ -137,3 +137,18 @@ TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsSc
 	lo.step_thresholds.clear();  // not tried
 	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 2u);
 }
+
+TEST(ParameterLearning, APoorWinnerIsNamedInTheIniAndOnlyThen)
+{
+	LearningResult r;
+	r.best.score = 0.2027;  // the shop's
+	const std::string poor = learnedIni(r);
+	const auto warning = poor.find("; WARNING: ");
+	ASSERT_NE(warning, std::string::npos);
+	EXPECT_NE(poor.find("0.203 m"), std::string::npos);
+	EXPECT_LT(warning, poor.find("[rangefinder]"));  // a comment before the section, not inside it
+	EXPECT_FALSE(poorLearningWarning(r).empty());
+	r.best.score = 0.0460;  // the hallway's
+	EXPECT_EQ(learnedIni(r).find("WARNING"), std::string::npos);
+	EXPECT_TRUE(poorLearningWarning(r).empty());
+}

@@ -86,6 +86,7 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 	writeFileAtomically(o_.learn_ini, learnedIni(l, o_.section));
 	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: %s (mean error %.4f m) -> %s, %s", l.training_pairs,
 					  l.validation_pairs, describe(l.best).c_str(), l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
+	if (const std::string warning = poorLearningWarning(l); !warning.empty()) MRPT_LOG_WARN(warning);
 	RawlogTrainingResult r;
 	r.model = l.model;
 	r.used = l.refit_pairs > 0 ? l.refit_pairs : l.training_pairs;

@@ -247,6 +247,17 @@ std::string describe(const LearnedCandidate& c)
 	return s;
 }
 
+std::string poorLearningWarning(const LearningResult& r)
+{
+	if (!(r.best.score > kPoorLearningScore)) return {};
+	char s[300];
+	std::snprintf(s, sizeof s,
+				  "the best candidate's mean error on the held-aside frames is %.3f m (above %.2f m): colour does not "
+				  "separate this floor from what stands on it; expect poor ranges (docs/users.md, What to expect)",
+				  r.best.score, kPoorLearningScore);
+	return s;
+}
+
 std::string learnedIni(const LearningResult& r, const std::string& section)
 {
 	char head[900];
@@ -257,10 +268,11 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 				  "; image/laser pairs (%s; histograms trained on %d others). The winner:\n"
 				  "; %s;\n"
 				  "; mean error %.4f m. The histogram file written with this ini was made that way (%s);\n"
-				  "; to train one by hand, use the same colour space, bins and light change.\n[%s]\n",
+				  "; to train one by hand, use the same colour space, bins and light change.\n",
 				  r.tried.size(), r.validation_pairs, r.validation.c_str(), r.training_pairs, describe(r.best).c_str(), r.best.score,
-				  refit.c_str(), section.c_str());
-	return head + r.params.asIni();
+				  refit.c_str());
+	const std::string warning = poorLearningWarning(r);
+	return head + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" + r.params.asIni();
 }
 
 }  // namespace omnirange
