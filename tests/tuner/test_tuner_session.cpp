@@ -211,7 +211,7 @@ TEST(TunerOverlays, RaysTheBrightnessStepEndedAreRinged)
 	const FrameScan off = s.scan(5);
 	EXPECT_EQ(countColour(drawOmniOverlay(off, s.rangefinder(), rays), colour::kByStep), 0);
 	RangefinderParams p = s.params();
-	p.scanner.step_threshold = 0.15;  // low: the sample's floor has steps that high
+	p.scanner.step_threshold = 0.05;  // low: the sample's floor has steps that high
 	s.setParams(p);
 	const FrameScan on = s.scan(5);
 	int by_step = 0;

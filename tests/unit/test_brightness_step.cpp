@@ -112,22 +112,43 @@ TEST(BrightnessStep, TheScannerStopsAtAFaceTheColourModelSeesThrough)
 	}
 }
 
-TEST(BrightnessStep, ItNeverMovesAColourHitOutwards)
+TEST(BrightnessStep, AColourHitAtAFacesFootStaysTheColours)
 {
-	// Floor and wall differ in colour and by far more than the threshold in
-	// brightness: the colour's hit and the step coincide, and a floor disc
-	// reads the same with the cue on.
+	// A wall of another colour and 50 % brighter than the floor: colour and
+	// step agree on the edge, and the colour places it, with either
+	// boundary model, exactly as with the cue off.
 	const OmniCameraModel cam{CameraParams{}};
-	const cv::Mat img = test::drawFloorDisc(cam, 120.0);
+	const auto& p = cam.params();
+	const cv::Vec3b wall = test::kWall * 1.5;
+	cv::Mat img(p.image_height, p.image_width, CV_8UC3);
+	for (int v = 0; v < img.rows; ++v)
+		for (int u = 0; u < img.cols; ++u)
+			img.at<cv::Vec3b>(v, u) = std::hypot(u - p.cx, v - p.cy) <= 120.0 ? test::kFloor : wall;
 	const FreeSpaceClassifier classifier{test::floorHistogram(), 0.05};
-	PolarScannerParams off, on;
-	on.step_threshold = 0.1;
-	const auto a = PolarScanner(cam, off).scan(img, classifier);
-	const auto b = PolarScanner(cam, on).scan(img, classifier);
-	for (std::size_t i = 0; i < a.size(); ++i)
+	for (const BoundaryModel model : {BoundaryModel::Midpoint, BoundaryModel::Subpixel})
 	{
-		EXPECT_EQ(a[i].status, b[i].status);
-		EXPECT_LE(b[i].range, a[i].range + 1e-6);
-		EXPECT_NEAR(b[i].range, a[i].range, 0.02);
+		PolarScannerParams off, on;
+		off.boundary_model = on.boundary_model = model;
+		on.step_threshold = 0.1;  // the wall is ln(1.5) = 0.4 brighter
+		const auto a = PolarScanner(cam, off).scan(img, classifier);
+		const auto b = PolarScanner(cam, on).scan(img, classifier);
+		for (std::size_t i = 0; i < a.size(); ++i)
+		{
+			ASSERT_EQ(a[i].status, RayStatus::Hit);
+			EXPECT_EQ(b[i].status, RayStatus::Hit);
+			EXPECT_FALSE(b[i].by_step) << i;
+			EXPECT_FLOAT_EQ(b[i].range, a[i].range) << i;
+		}
 	}
+}
+
+TEST(BrightnessStep, TheFootIsAtMostAWindowPastWhereTheRatioIsReached)
+{
+	// Light falling faster and faster outwards from pixel 50: the windows'
+	// ratio first reaches e^0.2 at pixel 57 and keeps growing until about
+	// pixel 75; the foot is taken at most a window (4) past 57.
+	const cv::Mat r = row(120, [](int k) { return k < 50 ? 200.0 : 200.0 * std::exp(-0.004 * (k - 50) * (k - 50)); });
+	const int found = step(r, 0.2);
+	EXPECT_GE(found, 57);
+	EXPECT_LE(found, 57 + 4);
 }

@@ -120,14 +120,21 @@ TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsSc
 	lo.step_thresholds = {0.25, 0.5}, lo.step_candidates = 1;
 	const LearningResult r = learnParameters(rp, o, lo);
 	ASSERT_EQ(r.tried.size(), 4u);  // the grid of two, then the step twice on its better one
-	const LearnedCandidate& grid_best = r.tried[0].score <= r.tried[1].score ? r.tried[0] : r.tried[1];
+	const double grid_best = std::min(r.tried[0].score, r.tried[1].score);
 	EXPECT_EQ(r.tried[0].step_threshold, 0.0);
 	EXPECT_EQ(r.tried[1].step_threshold, 0.0);
 	for (std::size_t i = 2; i < 4; ++i)
 	{
-		EXPECT_EQ(r.tried[i].threshold, grid_best.threshold);
+		// The step went to a grid candidate with the best score (either one, on a tie).
+		const LearnedCandidate& base = r.tried[i].threshold == r.tried[0].threshold ? r.tried[0] : r.tried[1];
+		EXPECT_EQ(r.tried[i].threshold, base.threshold);
+		EXPECT_EQ(base.score, grid_best);
 		EXPECT_EQ(r.tried[i].step_threshold, lo.step_thresholds[i - 2]);
 	}
+	lo.step_thresholds = {0.0};
+	EXPECT_THROW(learnParameters(rp, o, lo), std::invalid_argument);  // 0 is the grid itself
+	lo.step_thresholds = {0.5, 0.25, 0.5};
+	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 4u);  // each threshold scored once
 	double lowest = 1e9;
 	for (const auto& c : r.tried) lowest = std::min(lowest, c.score);
 	EXPECT_EQ(r.best.score, lowest);

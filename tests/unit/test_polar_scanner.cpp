@@ -162,6 +162,9 @@ TEST(PolarScanner, ImpossibleParametersAreRejected)
 	rejects([](PolarScannerParams& p) { p.max_range = 0.1; });  // below min_range
 	rejects([](PolarScannerParams& p) { p.base_radius = 160; });  // beyond max range
 	rejects([](PolarScannerParams& p) { p.max_range = std::nan(""); });
+	rejects([](PolarScannerParams& p) { p.step_threshold = -0.1; });
+	rejects([](PolarScannerParams& p) { p.step_threshold = std::nan(""); });
+	rejects([](PolarScannerParams& p) { p.step_window = 0; });
 }
 
 TEST(PolarScanner, ScanCircleLargerThanTheImageIsRejected)

@@ -28,7 +28,7 @@ int findBrightnessStep(const std::uint8_t* bgr, const std::int32_t* pixels, int 
 	// Running sums of the windows [k - window, k) and [k, k + window).
 	int before = 0, after = 0;
 	for (int j = 0; j < window; ++j) before += at(from - window + j), after += at(from + j);
-	int found = -1;
+	int found = -1, first = -1;  // the peak so far; where the ratio first reached the threshold
 	double best = 0;
 	for (int k = from; k <= to; ++k)
 	{
@@ -41,13 +41,14 @@ int findBrightnessStep(const std::uint8_t* bgr, const std::int32_t* pixels, int 
 		const double b = before + offset, a = after + offset;
 		if (found < 0)
 		{
-			if (a >= ratio * b || b >= ratio * a) found = k, best = std::max(a / b, b / a);
+			if (a >= ratio * b || b >= ratio * a) found = first = k, best = std::max(a / b, b / a);
 			continue;
 		}
 		// The windows straddle the step from `window` pixels before its foot;
-		// the foot is where they differ most: the first maximum after crossing.
+		// the foot is where they differ most: the first maximum after crossing,
+		// at most `window` pixels on (a slow fall in light keeps rising).
 		const double c = std::max(a / b, b / a);
-		if (c <= best || k >= found + window) break;
+		if (c <= best || k > first + window) break;
 		found = k, best = c;
 	}
 	return found;

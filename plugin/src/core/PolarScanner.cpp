@@ -84,8 +84,8 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 		.add("K", "px", "false-negative filter: longest free run negated inside that window (>= 0)",
 			 [](P& p) -> auto& { return p.filter.K; })
 		.add("step_threshold", "-",
-			 "a brightness step along a scanline, before the colour's hit, ends the ray when the means of "
-			 "step_window pixels either side differ by a ratio of at least e^step_threshold on some channel "
+			 "a brightness step along a scanline, before the colour's hit, ends the ray when the mean brightness "
+			 "(B + G + R) of step_window pixels either side differs by a ratio of at least e^step_threshold "
 			 "(0: off; omnirange-train --learn tries it)",
 			 [](P& p) -> auto& { return p.step_threshold; })
 		.add("step_window", "px", "pixels averaged on each side of a brightness step (>= 1)",
@@ -206,11 +206,13 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 		int hit = colour_hit ? ray.search.index : -1;
 		if (p_.step_threshold > 0 && line.first_in_range >= 0)
 		{
-			// A face the colour model sees through still shows its foot.
-			const int to = (colour_hit ? hit : line.last_candidate + 1) - 1;
+			// A face the colour model sees through still shows its foot. The
+			// search may climb to the colour's hit: a step that peaks there is
+			// the colour's own edge, and the colour places it.
+			const int to = colour_hit ? hit : line.last_candidate;
 			const int step = findBrightnessStep(data, pix, line.count, line.first_in_range, to, p_.step_threshold,
 												p_.step_window);
-			if (step >= 0) hit = step, ray.by_step = true;
+			if (step >= 0 && (!colour_hit || step < hit)) hit = step, ray.by_step = true;
 		}
 		if (hit < 0)
 		{

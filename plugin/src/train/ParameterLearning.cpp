@@ -124,6 +124,11 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (!(lo.validation_light_change >= 0 && lo.validation_light_change < 1))
 		throw std::invalid_argument("validation_light_change must be within [0, 1)");
 	if (lo.max_validation_pairs < 1) throw std::invalid_argument("max_validation_pairs must be >= 1");
+	for (const double step : lo.step_thresholds)
+		if (!(step > 0 && step <= 5)) throw std::invalid_argument("step_thresholds must be within (0, 5]");
+	std::vector<double> steps = lo.step_thresholds;  // each scored once
+	std::sort(steps.begin(), steps.end());
+	steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
 	const OmniCameraModel camera(start.camera);
 	const double base_range = camera.distanceFromRho(start.scanner.base_radius) + 0.05;
 	std::vector<int> bins = lo.bins;
@@ -189,7 +194,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	std::partial_sort(best.begin(), best.begin() + top, best.end(),
 					  [](const LearnedCandidate& a, const LearnedCandidate& b) { return a.score < b.score; });
 	for (std::size_t i = 0; i < top; ++i)
-		for (const double step : lo.step_thresholds)
+		for (const double step : steps)
 		{
 			LearnedCandidate c = best[i];
 			c.step_threshold = step;
