@@ -74,3 +74,39 @@ TEST(ExposureCompensation, ADarkerImageOfTheFloorIsStillFloor)
 	p.exposure_compensation = false;
 	EXPECT_EQ(Rangefinder(p, model).process(dark).count(RayStatus::TooClose), 360);  // the switch
 }
+
+TEST(ExposureCompensation, AShadowOnTheRingIsNotAChangeOfLight)
+{
+	// The floor is seen lit and in shade in training; now the robot stands in
+	// a shadow that covers the ring and reaches 20 px past it, and the rest
+	// of the floor is lit. Gains from the ring would brighten the lit floor
+	// out of its colours; the check keeps the image as it is.
+	const OmniCameraModel cam{CameraParams{}};
+	const double rho = 110.0;
+	const cv::Mat lit = test::drawFloorDisc(cam, rho);
+	RangefinderParams p;
+	p.walls.wall_fit = false;
+	const double ring_rho = cam.rhoFromDistance(cam.distanceFromRho(p.scanner.base_radius) + 0.05);
+	const double shadow_rho = ring_rho + 10.0 + 20.0;
+	const cv::Vec3b shade = test::kFloor * 0.7;
+	cv::Mat img = lit.clone();
+	const auto& c = cam.params();
+	for (int v = 0; v < img.rows; ++v)
+		for (int u = 0; u < img.cols; ++u)
+			if (std::hypot(u - c.cx, v - c.cy) <= shadow_rho) img.at<cv::Vec3b>(v, u) = shade;
+	ColourHistogram h = test::floorHistogram();
+	for (int i = 0; i < 100; ++i) h.addPixel(&shade[0]);
+	ColourModel model(h);
+	model.reference = FloorRing(cam, cam.distanceFromRho(p.scanner.base_radius) + 0.05).medianColour(lit);
+	const double truth = cam.distanceFromRho(rho), pixel = cam.distanceFromRho(rho + 1) - truth;
+
+	const RangeScan checked = Rangefinder(p, model).process(img);
+	EXPECT_EQ(checked.count(RayStatus::Hit), 360);
+	for (const Ray& r : checked.rays) EXPECT_NEAR(r.range, truth, pixel);
+
+	p.exposure_check = false;  // the gains taken as they come: the lit floor ends at the shadow's edge
+	const RangeScan unchecked = Rangefinder(p, model).process(img);
+	int short_rays = 0;
+	for (const Ray& r : unchecked.rays) short_rays += r.status == RayStatus::Hit && r.range < cam.distanceFromRho(shadow_rho + 2);
+	EXPECT_EQ(short_rays, 360);
+}

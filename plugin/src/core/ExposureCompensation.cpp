@@ -8,11 +8,12 @@
 
 namespace omnirange
 {
-FloorRing::FloorRing(const OmniCameraModel& camera, double inner, double width)
+FloorRing::FloorRing(const OmniCameraModel& camera, double inner, double width, double rho_step)
 	: width_(camera.params().image_width), height_(camera.params().image_height)
 {
+	if (!(rho_step > 0)) throw std::invalid_argument("FloorRing: rho_step must be > 0");
 	const double from = camera.rhoFromDistance(inner);
-	for (double rho = from; rho < from + width; rho += 1.0)
+	for (double rho = from; rho < from + width; rho += rho_step)
 		for (int deg = 0; deg < 360; ++deg)
 		{
 			const Pixel p = camera.pixelFromPolar(deg * 3.14159265358979323846 / 180.0, rho);
@@ -47,6 +48,16 @@ std::array<double, 3> FloorRing::median(const std::vector<cv::Vec3b>& colours)
 }
 
 std::array<double, 3> FloorRing::medianColour(const cv::Mat& bgr) const { return median(colours(bgr)); }
+
+int FloorRing::countFree(const cv::Mat& bgr, const PixelClassifier& classifier) const
+{
+	if (bgr.type() != CV_8UC3 || bgr.cols != width_ || bgr.rows != height_)
+		throw std::invalid_argument("FloorRing: the image must be an 8-bit BGR image of the camera's size");
+	const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();  // pixel indices are row * width + col
+	std::vector<std::uint8_t> free(pixels_.size());
+	classifier.classify(image.ptr<std::uint8_t>(), pixels_.data(), static_cast<int>(pixels_.size()), free.data());
+	return static_cast<int>(std::count_if(free.begin(), free.end(), [](std::uint8_t f) { return f != 0; }));
+}
 
 std::array<double, 3> compensatingGains(const std::array<double, 3>& reference, const std::array<double, 3>& current,
 										double deadband)

@@ -32,6 +32,10 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 			 "bring each image's floor just beyond the base back to its colour in training before classifying "
 			 "(needs a histogram file that records it)",
 			 [](P& p) -> auto& { return p.exposure_compensation; })
+		.add("exposure_check", "bool",
+			 "drop exposure compensation's gains when, out to max range, they leave fewer than 90 % of the pixels "
+			 "free that no gains do (a shadow on the ring around the base is not a change of light)",
+			 [](P& p) -> auto& { return p.exposure_check; })
 		.add("exposure_deadband", "-",
 			 "the exposure compensation leaves an image as it is when every channel's gain is within this of 1",
 			 [](P& p) -> auto& { return p.exposure_deadband; })
@@ -114,7 +118,11 @@ Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& col
 	  scanner_(camera_, p_.scanner),
 	  reference_(colours.reference),
 	  compensate_(p_.exposure_compensation && colours.hasReference()),
-	  ring_(camera_, camera_.distanceFromRho(p_.scanner.base_radius) + 0.05)
+	  ring_(camera_, camera_.distanceFromRho(p_.scanner.base_radius) + 0.05),
+	  check_disc_(camera_, camera_.distanceFromRho(p_.scanner.base_radius) + 0.05,
+				  std::max(1.0, camera_.rhoFromDistance(p_.scanner.max_range) -
+									camera_.rhoFromDistance(camera_.distanceFromRho(p_.scanner.base_radius) + 0.05)),
+				  4.0)
 {
 }
 
@@ -125,7 +133,13 @@ void Rangefinder::withClassifierFor(const cv::Mat& bgr, const PixelClassifier* a
 	if (!compensate_) return use(classifier);
 	const auto gains = compensatingGains(reference_, ring_.medianColour(bgr), p_.exposure_deadband);
 	if (gains == std::array<double, 3>{1.0, 1.0, 1.0}) return use(classifier);  // within the dead band
-	use(CompensatedClassifier(classifier, gains));
+	const CompensatedClassifier compensated(classifier, gains);
+	// Gains that lose a clear share of the floor were asked for by a shadow
+	// on the ring, not by the light.
+	if (p_.exposure_check &&
+		check_disc_.countFree(bgr, compensated) < kExposureCheckShare * check_disc_.countFree(bgr, classifier))
+		return use(classifier);
+	use(compensated);
 }
 
 RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapted) const

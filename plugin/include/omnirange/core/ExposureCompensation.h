@@ -28,8 +28,9 @@ class FloorRing
 {
    public:
 	/** From the floor distance `inner` [m] (just beyond the base, where
-	 * training starts) outwards, `width` [px] wide, one pixel per degree. */
-	FloorRing(const OmniCameraModel& camera, double inner, double width = 10.0);
+	 * training starts) outwards, `width` [px] wide, one pixel per degree
+	 * every `rho_step` px of radius. */
+	FloorRing(const OmniCameraModel& camera, double inner, double width = 10.0, double rho_step = 1.0);
 
 	/** The ring's pixels' B, G, R in an 8-bit BGR image of the camera's size. */
 	std::vector<cv::Vec3b> colours(const cv::Mat& bgr) const;
@@ -37,6 +38,8 @@ class FloorRing
 	static std::array<double, 3> median(const std::vector<cv::Vec3b>& colours);
 	/** median(colours(bgr)). */
 	std::array<double, 3> medianColour(const cv::Mat& bgr) const;
+	/** How many of the ring's pixels `classifier` calls free floor. */
+	int countFree(const cv::Mat& bgr, const PixelClassifier& classifier) const;
 
    private:
 	std::vector<std::int32_t> pixels_;  // row * width + col

@@ -54,6 +54,12 @@ struct RangefinderParams
 	/** [-] ...and leaves an image as it is when every channel's gain is
 	 * within this of 1 (compensatingGains()). */
 	double exposure_deadband{0.03};
+	/** ...and drops the gains when, out to max range, they leave fewer than
+	 * kExposureCheckShare of the pixels free that no gains do: a ring in a
+	 * shadow the rest of the floor is not in (the robot beside a cabinet,
+	 * under a table's edge) asks for gains that would brighten the lit
+	 * floor out of its colours. */
+	bool exposure_check{true};
 	/** Adapt to the floor seen around the base in recent images
 	 * (FloorAdaptation.h); off by default (docs/results.md measures it). */
 	bool floor_adaptation{false};
@@ -88,6 +94,11 @@ struct RangeScan
 	int wall_fitted{0};  ///< hits moved onto a fitted wall line
 	int count(RayStatus s) const;
 };
+
+/** exposure_check keeps the gains unless they leave fewer than this share
+ * of the floor pixels free that no gains do: the ring's gains are the
+ * default, and only a clear loss overrules them. */
+inline constexpr double kExposureCheckShare = 0.9;
 
 class Rangefinder
 {
@@ -128,6 +139,7 @@ class Rangefinder
 	std::array<double, 3> reference_{};  // the floor's colour around the base in training
 	bool compensate_{false};
 	FloorRing ring_;
+	FloorRing check_disc_;  // from the ring out to max range, every fourth pixel of radius
 };
 
 }  // namespace omnirange
