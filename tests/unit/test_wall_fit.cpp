@@ -132,8 +132,8 @@ TEST(WallFit, AScanOfHitsAllRoundIsFittedAcrossItsWrapAndKeptInRange)
 TEST(WallFit, ACurvedWallIsMovedByNoMoreThanTheTolerance)
 {
 	// A round room 1.33 m across, no noise: pieces of the circle pass as
-	// lines while their sagitta is within the tolerance, so each range
-	// moves, but by at most wall_fit_tolerance of its sigma.
+	// lines while their sagitta is within the tolerance, so a range may be
+	// moved, but by at most wall_fit_tolerance of its sigma.
 	const OmniCameraModel cam{CameraParams{}};
 	WallFitParams p;
 	p.wall_fit = true;

@@ -54,9 +54,17 @@ int FloorRing::countFree(const cv::Mat& bgr, const PixelClassifier& classifier) 
 	if (bgr.type() != CV_8UC3 || bgr.cols != width_ || bgr.rows != height_)
 		throw std::invalid_argument("FloorRing: the image must be an 8-bit BGR image of the camera's size");
 	const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();  // pixel indices are row * width + col
-	std::vector<std::uint8_t> free(pixels_.size());
-	classifier.classify(image.ptr<std::uint8_t>(), pixels_.data(), static_cast<int>(pixels_.size()), free.data());
-	return static_cast<int>(std::count_if(free.begin(), free.end(), [](std::uint8_t f) { return f != 0; }));
+	// In runs, so a frame's check allocates nothing.
+	std::array<std::uint8_t, 256> free;
+	const int n = static_cast<int>(pixels_.size());
+	int count = 0;
+	for (int from = 0; from < n; from += static_cast<int>(free.size()))
+	{
+		const int run = std::min(static_cast<int>(free.size()), n - from);
+		classifier.classify(image.ptr<std::uint8_t>(), pixels_.data() + from, run, free.data());
+		count += static_cast<int>(std::count_if(free.begin(), free.begin() + run, [](std::uint8_t f) { return f != 0; }));
+	}
+	return count;
 }
 
 std::array<double, 3> compensatingGains(const std::array<double, 3>& reference, const std::array<double, 3>& current,

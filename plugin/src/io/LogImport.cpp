@@ -52,7 +52,6 @@ double number(const std::string& field, const std::string& name)
 	}
 }
 
-
 bool isImageFile(const fs::path& p)
 {
 	static const std::set<std::string> kinds{".jpg", ".jpeg", ".png", ".pgm", ".ppm", ".bmp"};
