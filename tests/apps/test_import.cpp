@@ -131,6 +131,14 @@ std::string errorOf(const ImportApp::Options& o)
 	return "no error";
 }
 
+/** A log that must be refused: its file name, its text and what the error says. */
+struct BadLog
+{
+	const char* name;
+	const char* text;
+	const char* error;
+};
+
 /** Writes `text` to `path`, points `input` (one of o's input files) at it and returns the import's error. */
 std::string errorWithFile(const ImportApp::Options& o, std::string& input, const std::string& path, const std::string& text)
 {
@@ -210,23 +218,15 @@ TEST(Import, ACarmenLogStandsForTheTwoCsvs)
 	EXPECT_EQ(odometry, 1);
 
 	// Bad messages are named by line.
-	std::string& log = o.import.carmen_log;
-	EXPECT_NE(errorWithFile(o, log, dir + "/bad.carmen", "# a log\nODOM 1 2 3 0 0 0 10.0 h 0\nFLASER 3 1 2 0 0 0 0 0 0 10.5 h 0\n")
-				  .find("bad.carmen:3: FLASER"),
-			  std::string::npos)
-		<< errorOf(o);
-	EXPECT_NE(errorWithFile(o, log, dir + "/remissions.carmen", "RAWLASER1 0 -1.57 3.14 0.0175 80 0.01 0 2 1.0 1.0 4 1.5 host 1.5\n")
-				  .find("remissions.carmen:1: RAWLASER1: num_remissions 4 is not a count of the fields that follow"),
-			  std::string::npos)
-		<< errorOf(o);
-	EXPECT_NE(errorWithFile(o, log, dir + "/formfeed.carmen", "ODOM 1 2 3 0 0 0 10.0 h 0\n\f\n")
-				  .find("formfeed.carmen:2: a line of blanks only"),
-			  std::string::npos)
-		<< errorOf(o);
-	EXPECT_NE(errorWithFile(o, log, dir + "/late.carmen", "ODOM 1 2 3 0 0 0 10.0 h 0\nODOM 1 2 3 0 0 0 9.0 h 0\n")
-				  .find("late.carmen:2: ODOM time 9"),
-			  std::string::npos)
-		<< errorOf(o);
+	const BadLog carmen[] = {
+		{"bad.carmen", "# a log\nODOM 1 2 3 0 0 0 10.0 h 0\nFLASER 3 1 2 0 0 0 0 0 0 10.5 h 0\n", "bad.carmen:3: FLASER"},
+		{"remissions.carmen", "RAWLASER1 0 -1.57 3.14 0.0175 80 0.01 0 2 1.0 1.0 4 1.5 host 1.5\n",
+		 "remissions.carmen:1: RAWLASER1: num_remissions 4 is not a count of the fields that follow"},
+		{"formfeed.carmen", "ODOM 1 2 3 0 0 0 10.0 h 0\n\f\n", "formfeed.carmen:2: a line of blanks only"},
+		{"late.carmen", "ODOM 1 2 3 0 0 0 10.0 h 0\nODOM 1 2 3 0 0 0 9.0 h 0\n", "late.carmen:2: ODOM time 9"}};
+	for (const BadLog& b : carmen)
+		EXPECT_NE(errorWithFile(o, o.import.carmen_log, dir + "/" + b.name, b.text).find(b.error), std::string::npos)
+			<< errorOf(o);
 	o.import.laser_csv = u.laser;
 	EXPECT_NE(errorOf(o).find("not with laser or odometry CSVs too"), std::string::npos) << errorOf(o);
 	EXPECT_FALSE(fs::exists(dir + "/out.rawlog"));
@@ -249,16 +249,12 @@ TEST(Import, BadLogsAreNamedByFileAndLineAndNothingIsWritten)
 	ImportApp::Options o = importOf(u, out);
 	o.import.laser_csv = dir + "/unsorted.csv";
 	EXPECT_NE(errorOf(o).find("unsorted.csv:3: time"), std::string::npos) << errorOf(o);
-	// A row with one range too few.
-	EXPECT_NE(errorWithFile(o, o.import.laser_csv, dir + "/short.csv", "100.0, 1, 2, 3\n100.1, 1, 2\n")
-				  .find("short.csv:2: 2 ranges, but the first row has 3"),
-			  std::string::npos)
-		<< errorOf(o);
-	// A missing time.
-	EXPECT_NE(errorWithFile(o, o.import.laser_csv, dir + "/notime.csv", "100.0, 1, 2, 3\n, 1, 2, 3\n")
-				  .find("notime.csv:2: time ''"),
-			  std::string::npos)
-		<< errorOf(o);
+	// A row with one range too few, and a missing time.
+	const BadLog csvs[] = {{"short.csv", "100.0, 1, 2, 3\n100.1, 1, 2\n", "short.csv:2: 2 ranges, but the first row has 3"},
+						   {"notime.csv", "100.0, 1, 2, 3\n, 1, 2, 3\n", "notime.csv:2: time ''"}};
+	for (const BadLog& b : csvs)
+		EXPECT_NE(errorWithFile(o, o.import.laser_csv, dir + "/" + b.name, b.text).find(b.error), std::string::npos)
+			<< errorOf(o);
 	// An image that is not one, and one without a time in its name.
 	o = importOf(u, out);
 	std::ofstream(u.images + "/1767225699.000000.jpg") << "not a jpeg";
