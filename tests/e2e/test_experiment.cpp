@@ -46,14 +46,16 @@ TEST(Experiment, SmallFactoryRunEndToEnd)
 	EXPECT_LT(v("icp_LASER_ate_rmse"), 0.2);
 	EXPECT_LT(v("icp_OMNISCAN_ate_rmse"), 1.0);
 	EXPECT_GE(v("icp_LASER_keyframes"), 5);
-	// rbpf-slam ran for both sensors on the frames MRPT's other format holds
-	// (a particle filter, not seeded: only that it ran and mapped is asserted).
+	// rbpf-slam ran for both sensors on the frames MRPT's other format holds.
+	// Its inis fix the particle filter's seed, so a run repeats; over seeds 1
+	// to 5 and three unseeded runs the laser's ATE read 0.023 to 0.043 m and
+	// its precision 0.77 to 0.93, while the omnicam's ATE spread from 0.16 to
+	// 8.1 m: for it, only that it ran and mapped is asserted.
 	EXPECT_TRUE(fs::exists(dir + "/report/maps_rbpf.png"));
-	for (const std::string sensor : {"LASER", "OMNISCAN"})
-	{
-		EXPECT_GT(v("rbpf_" + sensor + "_precision"), 0.3) << sensor;
-		EXPECT_GE(v("rbpf_" + sensor + "_ate_rmse"), 0.0) << sensor;
-	}
+	EXPECT_LT(v("rbpf_LASER_ate_rmse"), 0.1);
+	EXPECT_GT(v("rbpf_LASER_precision"), 0.6);
+	EXPECT_GT(v("rbpf_OMNISCAN_precision"), 0.3);
+	EXPECT_GE(v("rbpf_OMNISCAN_ate_rmse"), 0.0);
 }
 
 TEST(Experiment, AHyperbolicMirrorThroughTheMeiModelEndToEnd)
