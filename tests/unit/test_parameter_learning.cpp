@@ -159,3 +159,40 @@ TEST(ParameterLearning, APoorWinnerIsNamedInTheIniAndOnlyThen)
 	EXPECT_EQ(learnedIni(r).find("WARNING"), std::string::npos);
 	EXPECT_TRUE(poorLearningWarning(r).empty());
 }
+
+TEST(ParameterLearning, AFilterWindowTheImageCannotHoldIsNoCandidate)
+{
+	// A camera whose centre sits high in the frame leaves room above the
+	// scan circle for N = 10's window but not for N = 20's.
+	RangefinderParams rp;
+	rp.scanner.filter.N = 10;
+	const auto fits = [&](int N) {
+		PolarScannerParams s = rp.scanner;
+		s.filter.N = N;
+		try
+		{
+			PolarScanner(OmniCameraModel(rp.camera), s);
+			return true;
+		}
+		catch (const std::invalid_argument&)
+		{
+			return false;
+		}
+	};
+	for (rp.camera.cy = 100; rp.camera.cy < 384 && !(fits(10) && !fits(20));) rp.camera.cy += 1;
+	ASSERT_TRUE(fits(10) && !fits(20)) << "no centre row separates the two windows";
+
+	RawlogTrainingOptions o;
+	o.input = kSample;
+	o.until = 8;
+	LearningOptions lo;
+	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.01};
+	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {10, 20}, lo.Ks = {2};
+	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear();
+	const LearningResult r = learnParameters(rp, o, lo);
+	ASSERT_EQ(r.tried.size(), 1u);
+	EXPECT_EQ(r.tried[0].N, 10);
+
+	lo.Ns = {20};
+	EXPECT_THROW(learnParameters(rp, o, lo), std::invalid_argument);
+}

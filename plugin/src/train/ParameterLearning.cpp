@@ -173,6 +173,26 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 		r.tried.push_back(c);
 		if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
 	};
+	// A filter window that the image cannot hold past the scan circle is no
+	// candidate: a user's camera may leave little room round it.
+	std::vector<std::pair<int, int>> windows;
+	for (const int N : lo.Ns)
+		for (const int K : lo.Ks)
+		{
+			PolarScannerParams scanner = start.scanner;
+			scanner.filter.N = N, scanner.filter.K = K;
+			try
+			{
+				PolarScanner(camera, scanner);
+				windows.emplace_back(N, K);
+			}
+			catch (const std::invalid_argument&)
+			{
+			}
+		}
+	if (windows.empty())
+		throw std::invalid_argument("no N and K of the learning grid fit the image past max_range (" +
+									std::to_string(start.scanner.max_range) + " m)");
 	for (const auto& [key, trainer] : trainers)
 	{
 		ColourModel model = trainer.model();
@@ -182,10 +202,9 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 		for (const double theta : lo.thresholds)
 			for (const double ratio : lo.obstacle_ratios)
 				for (const double smoothing : lo.smoothings)
-					for (const int N : lo.Ns)
-						for (const int K : lo.Ks)
-							for (const BoundaryModel boundary : lo.boundary_models)
-								consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0});
+					for (const auto& [N, K] : windows)
+						for (const BoundaryModel boundary : lo.boundary_models)
+							consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0});
 	}
 	// The brightness step on the grid's best: it is for what colour cannot
 	// see, and scoring it on every candidate would multiply the cost.
