@@ -84,6 +84,46 @@ TEST(HistogramTraining, ALightChangeCountsEveryPixelAsSeenAndInTwoOtherLights)
 	EXPECT_THROW(trainFromRawlog(rp, o), std::invalid_argument);
 }
 
+TEST(ParameterLearning, BlocksAreRunsOfConsecutivePairsAndEveryPairTrains)
+{
+	LearningOptions lo;
+	lo.split = ValidationSplit::Blocks;
+	const std::vector<int> block = blockOfPairs(lo, 10);  // 4 blocks by default
+	EXPECT_EQ(block, (std::vector<int>{0, 0, 0, 1, 1, 2, 2, 2, 3, 3}));
+	lo.blocks = 20;  // never more blocks than pairs
+	EXPECT_EQ(blockOfPairs(lo, 3), (std::vector<int>{0, 1, 2}));
+	EXPECT_EQ(blockOfPairs(LearningOptions{}, 5), (std::vector<int>(5, 0)));  // the default split has one
+
+	lo.max_validation_pairs = 5;
+	const auto roles = splitPairs(lo, 10);
+	EXPECT_EQ(countOf(roles, PairRole::Validate), 5);  // evenly: 0, 2, 4, 6, 8
+	EXPECT_EQ(countOf(roles, PairRole::Unused), 0);  // the rest still train the other blocks
+	for (int s : {0, 2, 4, 6, 8}) EXPECT_EQ(roles[s], PairRole::Validate) << s;
+	EXPECT_EQ(validationSplitFromString("blocks"), ValidationSplit::Blocks);
+	EXPECT_THROW(validationSplitFromString("folds"), std::invalid_argument);
+}
+
+TEST(ParameterLearning, WithBlocksEveryPairIsScoredAndTheHistogramHasThemAll)
+{
+	const RangefinderParams rp;
+	RawlogTrainingOptions o;
+	o.input = kSample;
+	o.until = 12;
+	LearningOptions lo;  // one candidate: only the split matters here
+	lo.split = ValidationSplit::Blocks, lo.blocks = 3;
+	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.05};
+	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {20}, lo.Ks = {2};
+	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear();
+	const LearningResult r = learnParameters(rp, o, lo);
+	EXPECT_EQ(r.training_pairs, 12);
+	EXPECT_EQ(r.validation_pairs, 12);
+	EXPECT_EQ(r.refit_pairs, 12);
+	EXPECT_EQ(r.model.floor.total(), trainFromRawlog(rp, o).model.floor.total());
+	EXPECT_NE(learnedIni(r).find("3 blocks of consecutive pairs"), std::string::npos);
+	lo.blocks = 1;  // a block would be scored on its own counts
+	EXPECT_THROW(learnParameters(rp, o, lo), std::invalid_argument);
+}
+
 TEST(ParameterLearning, TheWinnersHistogramIsTrainedAgainOnEveryPair)
 {
 	const RangefinderParams rp;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <tuple>
 
 namespace omnirange
@@ -23,9 +24,11 @@ struct Validation
 {
 	cv::Mat image;
 	CObservation2DRangeScan::Ptr laser;
+	int block{0};  ///< scored with the histograms trained without this block
 };
 
 using TrainerKey = std::tuple<ColourSpace, int, double>;  // colour space, bins, light change
+using Trainers = std::map<TrainerKey, HistogramTrainer>;
 
 /** How many pairs the options select: a pass that decodes no image. */
 int countSelected(const RawlogTrainingOptions& o)
@@ -46,14 +49,18 @@ cv::Mat inChangedLight(const cv::Mat& bgr, int k, double v)
 	return withGain(bgr, k % 3 == 0 ? 1.0 : k % 3 == 1 ? 1.0 - v : 1.0 + v);
 }
 
-/** Trains one histogram per key on the training pairs and keeps the
- * held-aside ones; `aside` counts the held-aside pairs too (every one, kept
- * for validation or not), for the refit. */
+/** Counts every selected pair into the trainers of its block (with the
+ * Blocks split; `blocks` holds one set of trainers per block) or into the
+ * training set (blocks[0]) and, when held aside, into `aside` (for the
+ * refit); keeps the images to validate on. */
 void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const LearningOptions& lo,
-			 std::map<TrainerKey, HistogramTrainer>& trainers, std::map<TrainerKey, HistogramTrainer>& aside,
-			 std::vector<Validation>& validation, int& trained, int& set_aside, Progress* progress)
+			 std::vector<Trainers>& blocks, Trainers& aside, std::vector<Validation>& validation, int& trained,
+			 int& set_aside, Progress* progress)
 {
-	const std::vector<PairRole> roles = splitPairs(lo, countSelected(o));
+	const int n = countSelected(o);
+	const std::vector<PairRole> roles = splitPairs(lo, n);
+	const std::vector<int> block = blockOfPairs(lo, n);
+	const bool by_block = lo.split == ValidationSplit::Blocks;
 	RawlogProcessor loop(o.input);
 	int pairs = 0, selected = 0;
 	loop.onPair<CObservationImage, CObservation2DRangeScan>(
@@ -65,37 +72,37 @@ void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const 
 			const bool refit = lo.refit && !aside.empty();
 			if (roles[s] == PairRole::Unused && !refit) return;
 			const cv::Mat bgr = decodeImage(*image, rp.camera);
-			if (roles[s] != PairRole::Train)
+			if (roles[s] == PairRole::Validate)
+				validation.push_back({inChangedLight(bgr, static_cast<int>(validation.size()), lo.validation_light_change),
+									  laser, block[s]});
+			if (by_block || roles[s] == PairRole::Train)
 			{
-				if (refit)
-				{
-					for (auto& [key, trainer] : aside) trainer.add(bgr, *laser);
-					++set_aside;
-				}
-				if (roles[s] == PairRole::Validate)
-					validation.push_back(
-						{inChangedLight(bgr, static_cast<int>(validation.size()), lo.validation_light_change), laser});
-				return;
+				for (auto& [key, trainer] : blocks[block[s]]) trainer.add(bgr, *laser);
+				++trained;
 			}
-			for (auto& [key, trainer] : trainers) trainer.add(bgr, *laser);
-			++trained;
+			else if (refit)
+			{
+				for (auto& [key, trainer] : aside) trainer.add(bgr, *laser);
+				++set_aside;
+			}
 		});
 	loop.run(progress);
 	if (pairs == 0) throw std::runtime_error(loop.describeNoPair() + "; learning needs both");
-	if (trained == 0 || validation.empty())
+	if (trained == 0 || validation.empty() || (by_block && blocks.size() < 2))
 		throw std::runtime_error("'" + o.input + "' has too few image/laser pairs to learn from (" +
 								 std::to_string(selected) + " selected; some are needed to train and some to validate)");
 }
 
 /** The candidate's error on the held-aside pairs (see LearnedCandidate::score). */
-double score(const Rangefinder& rf, const std::vector<Validation>& validation)
+double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& validation)
 {
 	double sum = 0;
 	std::size_t n = 0;
-	const double max_range = rf.params().scanner.max_range, cap = kDefaultMaxDifference;
+	const double max_range = rf[0].params().scanner.max_range, cap = kDefaultMaxDifference;
 	for (const auto& v : validation)
 	{
-		const auto omni = rf.toObservation(rf.process(v.image), v.laser->timestamp);
+		const Rangefinder& by = rf[v.block];
+		const auto omni = by.toObservation(by.process(v.image), v.laser->timestamp);
 		for (const RangePair& p : pairScans(*v.laser, *omni, cap))
 		{
 			const bool hit = omni->getScanRangeValidity(p.omni_ray);
@@ -135,7 +142,9 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (bins.empty()) bins = {o.training.bins, std::min(64, 2 * o.training.bins)};
 	std::sort(bins.begin(), bins.end());
 	bins.erase(std::unique(bins.begin(), bins.end()), bins.end());
-	std::map<TrainerKey, HistogramTrainer> trainers, aside;
+	const bool by_block = lo.split == ValidationSplit::Blocks;
+	if (by_block && lo.blocks < 2) throw std::invalid_argument("blocks must be >= 2");
+	Trainers trainers, aside;
 	for (const ColourSpace space : lo.spaces)
 		for (const int b : bins)
 			for (const double light : lo.light_changes)
@@ -144,20 +153,38 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 				tp.space = space, tp.bins = b, tp.light_change = light;
 				const HistogramTrainer t(camera, start.sensor_pose, base_range, start.scanner.max_range, tp);
 				trainers.emplace(TrainerKey{space, b, light}, t);
-				if (lo.refit) aside.emplace(TrainerKey{space, b, light}, t);
+				if (lo.refit && !by_block) aside.emplace(TrainerKey{space, b, light}, t);
 			}
+	// One set of trainers per block (one block but with the Blocks split).
+	const int n_blocks = by_block ? std::max(1, std::min(lo.blocks, countSelected(o))) : 1;
+	std::vector<Trainers> blocks(n_blocks, trainers);
 	std::vector<Validation> validation;
 	LearningResult r;
 	int set_aside = 0;
-	collect(start, o, lo, trainers, aside, validation, r.training_pairs, set_aside, progress);
+	collect(start, o, lo, blocks, aside, validation, r.training_pairs, set_aside, progress);
 	r.validation_pairs = static_cast<int>(validation.size());
+	r.split = lo.split;
 	char light[100] = ", as seen";
 	if (lo.validation_light_change > 0)
 		std::snprintf(light, sizeof light, ", a third each as seen, dimmer and brighter by %g", lo.validation_light_change);
-	r.validation = (lo.split == ValidationSplit::Later ? "the later part of the stretch" : "interleaved") + std::string(light);
+	r.validation = (by_block ? std::to_string(n_blocks) + " blocks of consecutive pairs, each scored with histograms trained on the others"
+				   : lo.split == ValidationSplit::Later ? std::string("the later part of the stretch")
+														: std::string("interleaved")) +
+				   light;
+	// Each key's histogram without each block (with one block: the training pairs').
+	const auto without = [&](const TrainerKey& key, int skipped) {
+		std::optional<HistogramTrainer> t;
+		for (int b = 0; b < n_blocks; ++b)
+			if (b != skipped || n_blocks == 1)
+			{
+				if (!t) t = blocks[b].at(key);
+				else t->merge(blocks[b].at(key));
+			}
+		return t->model();
+	};
 
 	r.best.score = 1e9;
-	std::map<TrainerKey, ColourModel> models;
+	std::map<TrainerKey, std::vector<ColourModel>> models;  // per block
 	const auto consider = [&](const LearnedCandidate& candidate) {
 		LearnedCandidate c = candidate;
 		RangefinderParams p = start;
@@ -168,10 +195,12 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 		// the very errors learning must see.
 		RangefinderParams scored = p;
 		scored.walls.wall_fit = false;
-		const ColourModel& model = models.at(TrainerKey{c.space, c.bins, c.light_change});
-		c.score = score(Rangefinder(scored, model), validation);
+		const std::vector<ColourModel>& model = models.at(TrainerKey{c.space, c.bins, c.light_change});
+		std::vector<Rangefinder> rf;
+		for (const ColourModel& m : model) rf.emplace_back(scored, m);
+		c.score = score(rf, validation);
 		r.tried.push_back(c);
-		if (c.score < r.best.score) r.best = c, r.params = p, r.model = model;
+		if (c.score < r.best.score) r.best = c, r.params = p, r.model = model[0];
 	};
 	// A filter window that the image cannot hold past the scan circle is no
 	// candidate: a user's camera may leave little room round it.
@@ -193,11 +222,13 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (windows.empty())
 		throw std::invalid_argument("no N and K of the learning grid fit the image past max_range (" +
 									std::to_string(start.scanner.max_range) + " m)");
-	for (const auto& [key, trainer] : trainers)
+	for (const auto& [key, unused] : trainers)
 	{
-		ColourModel model = trainer.model();
-		if (model.floor.empty()) continue;
-		models.emplace(key, std::move(model));
+		std::vector<ColourModel> per_block;
+		for (int b = 0; b < n_blocks; ++b) per_block.push_back(without(key, b));
+		if (std::any_of(per_block.begin(), per_block.end(), [](const ColourModel& m) { return m.floor.empty(); }))
+			continue;
+		models.emplace(key, std::move(per_block));
 		const auto& [space, b, light] = key;
 		for (const double theta : lo.thresholds)
 			for (const double ratio : lo.obstacle_ratios)
@@ -222,10 +253,15 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
 	r.training = o.training;
 	r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
-	if (lo.refit)  // the winner's histogram with the held-aside pairs' counts added
+	const TrainerKey winner{r.best.space, r.best.bins, r.best.light_change};
+	if (by_block)  // every block's counts: what each block's score stood for
 	{
-		const TrainerKey winner{r.best.space, r.best.bins, r.best.light_change};
-		HistogramTrainer all = trainers.at(winner);
+		r.model = without(winner, -1);
+		r.refit_pairs = r.training_pairs;
+	}
+	else if (lo.refit)  // the winner's histogram with the held-aside pairs' counts added
+	{
+		HistogramTrainer all = blocks[0].at(winner);
 		all.merge(aside.at(winner));
 		r.model = all.model();
 		r.refit_pairs = r.training_pairs + set_aside;
@@ -237,7 +273,11 @@ std::vector<PairRole> splitPairs(const LearningOptions& lo, int selected)
 {
 	std::vector<PairRole> roles(std::max(0, selected), PairRole::Train);
 	std::vector<int> held;
-	if (lo.split == ValidationSplit::Interleaved)
+	if (lo.split == ValidationSplit::Blocks)
+	{
+		for (int s = 0; s < selected; ++s) held.push_back(s);  // every pair, in its block's turn
+	}
+	else if (lo.split == ValidationSplit::Interleaved)
 	{
 		for (int s = lo.hold_out_every - 1; s < selected; s += lo.hold_out_every) held.push_back(s);
 	}
@@ -250,14 +290,27 @@ std::vector<PairRole> splitPairs(const LearningOptions& lo, int selected)
 	const std::size_t keep = std::min<std::size_t>(held.size(), std::max(1, lo.max_validation_pairs));
 	for (std::size_t i = 0; i < held.size(); ++i) roles[held[i]] = PairRole::Unused;
 	for (std::size_t j = 0; j < keep; ++j) roles[held[j * held.size() / keep]] = PairRole::Validate;
+	if (lo.split == ValidationSplit::Blocks)
+		for (PairRole& role : roles)
+			if (role == PairRole::Unused) role = PairRole::Train;  // trains the other blocks all the same
 	return roles;
+}
+
+std::vector<int> blockOfPairs(const LearningOptions& lo, int selected)
+{
+	std::vector<int> block(std::max(0, selected), 0);
+	if (lo.split != ValidationSplit::Blocks) return block;
+	const int n = std::max(1, std::min(lo.blocks, selected));
+	for (int s = 0; s < selected; ++s) block[s] = static_cast<int>(static_cast<long>(s) * n / selected);
+	return block;
 }
 
 ValidationSplit validationSplitFromString(const std::string& s)
 {
 	if (s == "later") return ValidationSplit::Later;
 	if (s == "interleaved") return ValidationSplit::Interleaved;
-	throw std::invalid_argument("validation split '" + s + "' is neither 'later' nor 'interleaved'");
+	if (s == "blocks") return ValidationSplit::Blocks;
+	throw std::invalid_argument("validation split '" + s + "' is not 'later', 'interleaved' or 'blocks'");
 }
 
 std::string describe(const LearnedCandidate& c)
@@ -285,16 +338,19 @@ std::string poorLearningWarning(const LearningResult& r)
 std::string learnedIni(const LearningResult& r, const std::string& section)
 {
 	char head[900];
+	const bool by_block = r.split == ValidationSplit::Blocks;
 	const std::string refit = r.refit_pairs > 0 ? "trained again on all " + std::to_string(r.refit_pairs) + " pairs"
 												: "trained on the " + std::to_string(r.training_pairs) + " others";
+	const std::string trained = by_block ? std::to_string(r.training_pairs) + " pairs in all"
+										 : "histograms trained on " + std::to_string(r.training_pairs) + " others";
 	std::snprintf(head, sizeof head,
-				  "; Learned by omnirange-train --learn: %zu candidates scored against the laser on %d held-aside\n"
-				  "; image/laser pairs (%s; histograms trained on %d others). The winner:\n"
+				  "; Learned by omnirange-train --learn: %zu candidates scored against the laser on %d %s\n"
+				  "; image/laser pairs (%s; %s). The winner:\n"
 				  "; %s;\n"
 				  "; mean error %.4f m. The histogram file written with this ini was made that way (%s);\n"
 				  "; to train one by hand, use the same colour space, bins and light change.\n",
-				  r.tried.size(), r.validation_pairs, r.validation.c_str(), r.training_pairs, describe(r.best).c_str(), r.best.score,
-				  refit.c_str());
+				  r.tried.size(), r.validation_pairs, by_block ? "scored" : "held-aside", r.validation.c_str(),
+				  trained.c_str(), describe(r.best).c_str(), r.best.score, refit.c_str());
 	const std::string warning = poorLearningWarning(r);
 	return head + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" + r.params.asIni();
 }
