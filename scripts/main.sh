@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
-for experiment in maze factory office warehouse lab hallway library classroom canteen kitchen garage shop livingroom factory-hyperbolic; do
+for experiment in maze factory office warehouse lab hallway library classroom canteen kitchen garage shop livingroom meetingroom reception factory-hyperbolic; do
   echo "== experiment: $experiment"
   build/apps/omnirange-experiment "ini/$experiment.ini"
 done
