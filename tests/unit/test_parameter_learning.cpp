@@ -20,6 +20,26 @@ int countOf(const std::vector<PairRole>& roles, PairRole role)
 	return static_cast<int>(std::count(roles.begin(), roles.end(), role));
 }
 
+/** The factory sample's pairs before `until`. */
+RawlogTrainingOptions samplePairs(int until)
+{
+	RawlogTrainingOptions o;
+	o.input = kSample;
+	o.until = until;
+	return o;
+}
+
+/** A grid of one candidate (no brightness step): what a test sets on top
+ * is all that varies. */
+LearningOptions oneCandidate()
+{
+	LearningOptions lo;
+	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.05};
+	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {20}, lo.Ks = {2};
+	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear();
+	return lo;
+}
+
 std::uint32_t occupiedBins(const ColourHistogram& h)
 {
 	const int n = h.binsPerChannel();
@@ -106,14 +126,9 @@ TEST(ParameterLearning, BlocksAreRunsOfConsecutivePairsAndEveryPairTrains)
 TEST(ParameterLearning, WithBlocksEveryPairIsScoredAndTheHistogramHasThemAll)
 {
 	const RangefinderParams rp;
-	RawlogTrainingOptions o;
-	o.input = kSample;
-	o.until = 12;
-	LearningOptions lo;  // one candidate: only the split matters here
+	RawlogTrainingOptions o = samplePairs(12);
+	LearningOptions lo = oneCandidate();  // only the split matters here
 	lo.split = ValidationSplit::Blocks, lo.blocks = 3;
-	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.05};
-	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {20}, lo.Ks = {2};
-	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear();
 	const LearningResult r = learnParameters(rp, o, lo);
 	EXPECT_EQ(r.training_pairs, 12);
 	EXPECT_EQ(r.validation_pairs, 12);
@@ -127,13 +142,9 @@ TEST(ParameterLearning, WithBlocksEveryPairIsScoredAndTheHistogramHasThemAll)
 TEST(ParameterLearning, TheWinnersHistogramIsTrainedAgainOnEveryPair)
 {
 	const RangefinderParams rp;
-	RawlogTrainingOptions o;
-	o.input = kSample;
-	o.until = 12;
-	LearningOptions lo;  // one candidate: only the split and the refit matter here
+	RawlogTrainingOptions o = samplePairs(12);
+	LearningOptions lo = oneCandidate();  // only the split and the refit matter here
 	lo.split = ValidationSplit::Later;  // train on pairs 0..8, validate on 9..11
-	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.05};
-	lo.obstacle_ratios = {0.0}, lo.Ns = {20}, lo.Ks = {2}, lo.boundary_models = {BoundaryModel::Subpixel};
 	const LearningResult refitted = learnParameters(rp, o, lo);
 	EXPECT_EQ(refitted.training_pairs, 9);
 	EXPECT_EQ(refitted.validation_pairs, 3);
@@ -150,13 +161,9 @@ TEST(ParameterLearning, TheWinnersHistogramIsTrainedAgainOnEveryPair)
 TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsScore)
 {
 	const RangefinderParams rp;
-	RawlogTrainingOptions o;
-	o.input = kSample;
-	o.until = 12;
-	LearningOptions lo;
-	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.01, 0.075};
-	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {20}, lo.Ks = {2};
-	lo.boundary_models = {BoundaryModel::Subpixel};
+	RawlogTrainingOptions o = samplePairs(12);
+	LearningOptions lo = oneCandidate();
+	lo.thresholds = {0.01, 0.075};
 	lo.step_thresholds = {0.25, 0.5}, lo.step_candidates = 1;
 	const LearningResult r = learnParameters(rp, o, lo);
 	ASSERT_EQ(r.tried.size(), 4u);  // the grid of two, then the step twice on its better one
@@ -222,13 +229,9 @@ TEST(ParameterLearning, AFilterWindowTheImageCannotHoldIsNoCandidate)
 	for (rp.camera.cy = 100; rp.camera.cy < 384 && !(fits(10) && !fits(20));) rp.camera.cy += 1;
 	ASSERT_TRUE(fits(10) && !fits(20)) << "no centre row separates the two windows";
 
-	RawlogTrainingOptions o;
-	o.input = kSample;
-	o.until = 8;
-	LearningOptions lo;
-	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.01};
-	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {10, 20}, lo.Ks = {2};
-	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear();
+	RawlogTrainingOptions o = samplePairs(8);
+	LearningOptions lo = oneCandidate();
+	lo.Ns = {10, 20};
 	const LearningResult r = learnParameters(rp, o, lo);
 	ASSERT_EQ(r.tried.size(), 1u);
 	EXPECT_EQ(r.tried[0].N, 10);
