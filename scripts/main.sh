@@ -11,4 +11,4 @@ for experiment in maze factory office warehouse lab hallway library classroom ca
   echo "== experiment: $experiment"
   build/apps/omnirange-experiment "ini/$experiment.ini"
 done
-echo "reports: results/{maze,factory,office,warehouse,lab,hallway,library,classroom,canteen,kitchen,garage,shop,livingroom,factory-hyperbolic}/report.md"
+echo "reports: results/{maze,factory,office,warehouse,lab,hallway,library,classroom,canteen,kitchen,garage,shop,livingroom,meetingroom,reception,factory-hyperbolic}/report.md"
