@@ -207,6 +207,33 @@ TEST(ParameterLearning, APoorWinnerIsNamedInTheIniAndOnlyThen)
 	EXPECT_TRUE(poorLearningWarning(r).empty());
 }
 
+TEST(ParameterLearning, TheIniNamesTheBestInTheOtherColourSpace)
+{
+	// The meeting room's near tie: RGB won by 1.8 mm over CHROMA.
+	LearningResult r;
+	const auto candidate = [](ColourSpace space, double threshold, double score) {
+		LearnedCandidate c;
+		c.space = space, c.bins = 13, c.threshold = threshold, c.score = score;
+		return c;
+	};
+	r.tried = {candidate(ColourSpace::RGB, 0.0001, 0.0450), candidate(ColourSpace::Chroma, 0.005, 0.0490),
+			   candidate(ColourSpace::Chroma, 0.02, 0.0468), candidate(ColourSpace::RGB, 0.01, 0.0455)};
+	r.best = r.tried[0];
+	const auto other = bestInOtherSpace(r);
+	ASSERT_TRUE(other.has_value());
+	EXPECT_EQ(other->space, ColourSpace::Chroma);
+	EXPECT_EQ(other->threshold, 0.02);
+	const std::string ini = learnedIni(r);
+	const auto line = ini.find("; The best in another colour space: colour space CHROMA");
+	ASSERT_NE(line, std::string::npos) << ini;
+	EXPECT_NE(ini.find("(1.8 mm more)"), std::string::npos) << ini;
+	EXPECT_LT(line, ini.find("[rangefinder]"));
+
+	r.tried.erase(r.tried.begin() + 1, r.tried.begin() + 3);  // RGB only
+	EXPECT_FALSE(bestInOtherSpace(r).has_value());
+	EXPECT_EQ(learnedIni(r).find("another colour space"), std::string::npos);
+}
+
 TEST(ParameterLearning, AFilterWindowTheImageCannotHoldIsNoCandidate)
 {
 	// A camera whose centre sits high in the frame leaves room above the

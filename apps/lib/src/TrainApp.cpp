@@ -24,7 +24,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<int> max_frames("n", "max-frames", "use at most this many pairs (0: all)", false, t.max_frames, "N", cmd);
 	TCLAP::ValueArg<int> until("", "until", "use only the pairs before this one (0: to the end)", false, t.until, "N", cmd);
 	TCLAP::ValueArg<int> bins("", "bins", "bins per colour channel", false, t.training.bins, "N", cmd);
-	TCLAP::ValueArg<std::string> space("", "colour-space", "RGB or HSV", false, toString(t.training.space), "SPACE", cmd);
+	TCLAP::ValueArg<std::string> space("", "colour-space", "RGB, HSV or CHROMA", false, toString(t.training.space), "SPACE", cmd);
 	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
 	TCLAP::ValueArg<double> band("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only", false, t.training.obstacle_band, "M", cmd);
 	TCLAP::ValueArg<std::string> learn("", "learn", "also learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser on held-aside pairs, and write them to this ini", false, "", "INI", cmd);
@@ -86,6 +86,9 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 	writeFileAtomically(o_.learn_ini, learnedIni(l, o_.section));
 	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: %s (mean error %.4f m) -> %s, %s", l.training_pairs,
 					  l.validation_pairs, describe(l.best).c_str(), l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
+	if (const auto other = bestInOtherSpace(l))
+		MRPT_LOG_INFO_FMT("the best in another colour space: %s (mean error %.4f m, %.1f mm more)",
+						  describe(*other).c_str(), other->score, 1000 * (other->score - l.best.score));
 	if (const std::string warning = poorLearningWarning(l); !warning.empty()) MRPT_LOG_WARN(warning);
 	RawlogTrainingResult r;
 	r.model = l.model;

@@ -324,6 +324,14 @@ std::string describe(const LearnedCandidate& c)
 	return s;
 }
 
+std::optional<LearnedCandidate> bestInOtherSpace(const LearningResult& r)
+{
+	std::optional<LearnedCandidate> other;
+	for (const LearnedCandidate& c : r.tried)
+		if (c.space != r.best.space && (!other || c.score < other->score)) other = c;
+	return other;
+}
+
 std::string poorLearningWarning(const LearningResult& r)
 {
 	if (!(r.best.score > kPoorLearningScore)) return {};
@@ -351,8 +359,20 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 				  "; to train one by hand, use the same colour space, bins and light change.\n",
 				  r.tried.size(), r.validation_pairs, by_block ? "scored" : "held-aside", r.validation.c_str(),
 				  trained.c_str(), describe(r.best).c_str(), r.best.score, refit.c_str());
+	std::string other_space;
+	if (const auto other = bestInOtherSpace(r))
+	{
+		char line[600];
+		std::snprintf(line, sizeof line,
+					  "; The best in another colour space: %s;\n"
+					  "; mean error %.4f m (%.1f mm more). When that is close, train both and score each on a\n"
+					  "; later part of the log (docs/users.md): the held-aside frames cannot tell them apart.\n",
+					  describe(*other).c_str(), other->score, 1000 * (other->score - r.best.score));
+		other_space = line;
+	}
 	const std::string warning = poorLearningWarning(r);
-	return head + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" + r.params.asIni();
+	return head + other_space + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" +
+		   r.params.asIni();
 }
 
 }  // namespace omnirange

@@ -12,6 +12,7 @@
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/train/RawlogTraining.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -140,6 +141,13 @@ inline constexpr double kPoorLearningScore = 0.10;
 /** A one-line warning for a user when learning's best score is above
  * kPoorLearningScore; empty otherwise. */
 std::string poorLearningWarning(const LearningResult& r);
+
+/** The best candidate tried in another colour space than the winner's,
+ * or none when only one was tried. When it scores within millimetres of
+ * the winner, which of the two holds on the rest of a route is a coin
+ * toss for the held-aside frames (the meeting room: 14 points,
+ * docs/results.md); learnedIni names it so a user can check both. */
+std::optional<LearnedCandidate> bestInOtherSpace(const LearningResult& r);
 
 /** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, N 20, K 4, subpixel boundary, step 0.25". */
 std::string describe(const LearnedCandidate& c);
