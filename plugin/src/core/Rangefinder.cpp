@@ -111,6 +111,11 @@ int RangeScan::count(RayStatus s) const
 		rays.begin(), rays.end(), [s](const Ray& r) { return r.status == s; }));
 }
 
+double floorBeyondBase(const OmniCameraModel& camera, const PolarScannerParams& scanner)
+{
+	return camera.distanceFromRho(scanner.base_radius) + 0.05;
+}
+
 Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& colours)
 	: p_((params.validate(), params)),
 	  camera_(p_.camera),
@@ -118,10 +123,10 @@ Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& col
 	  scanner_(camera_, p_.scanner),
 	  reference_(colours.reference),
 	  compensate_(p_.exposure_compensation && colours.hasReference()),
-	  ring_(camera_, camera_.distanceFromRho(p_.scanner.base_radius) + 0.05),
-	  check_disc_(camera_, camera_.distanceFromRho(p_.scanner.base_radius) + 0.05,
+	  ring_(camera_, floorBeyondBase(camera_, p_.scanner)),
+	  check_disc_(camera_, floorBeyondBase(camera_, p_.scanner),
 				  std::max(1.0, camera_.rhoFromDistance(p_.scanner.max_range) -
-									camera_.rhoFromDistance(camera_.distanceFromRho(p_.scanner.base_radius) + 0.05)),
+									camera_.rhoFromDistance(floorBeyondBase(camera_, p_.scanner))),
 				  4.0)
 {
 }

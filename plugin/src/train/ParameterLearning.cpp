@@ -52,12 +52,12 @@ cv::Mat inChangedLight(const cv::Mat& bgr, int k, double v)
 /** Counts every selected pair into the trainers of its block (with the
  * Blocks split; `blocks` holds one set of trainers per block) or into the
  * training set (blocks[0]) and, when held aside, into `aside` (for the
- * refit); keeps the images to validate on. */
-void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const LearningOptions& lo,
+ * refit); keeps the images to validate on. `n`: how many pairs the
+ * options select (countSelected). */
+void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const LearningOptions& lo, int n,
 			 std::vector<Trainers>& blocks, Trainers& aside, std::vector<Validation>& validation, int& trained,
 			 int& set_aside, Progress* progress)
 {
-	const int n = countSelected(o);
 	const std::vector<PairRole> roles = splitPairs(lo, n);
 	const std::vector<int> block = blockOfPairs(lo, n);
 	const bool by_block = lo.split == ValidationSplit::Blocks;
@@ -137,7 +137,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	std::sort(steps.begin(), steps.end());
 	steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
 	const OmniCameraModel camera(start.camera);
-	const double base_range = camera.distanceFromRho(start.scanner.base_radius) + 0.05;
+	const double base_range = floorBeyondBase(camera, start.scanner);
 	std::vector<int> bins = lo.bins;
 	if (bins.empty()) bins = {o.training.bins, std::min(64, 2 * o.training.bins)};
 	std::sort(bins.begin(), bins.end());
@@ -156,12 +156,13 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 				if (lo.refit && !by_block) aside.emplace(TrainerKey{space, b, light}, t);
 			}
 	// One set of trainers per block (one block but with the Blocks split).
-	const int n_blocks = by_block ? std::max(1, std::min(lo.blocks, countSelected(o))) : 1;
+	const int selected = countSelected(o);
+	const int n_blocks = by_block ? std::max(1, std::min(lo.blocks, selected)) : 1;
 	std::vector<Trainers> blocks(n_blocks, trainers);
 	std::vector<Validation> validation;
 	LearningResult r;
 	int set_aside = 0;
-	collect(start, o, lo, blocks, aside, validation, r.training_pairs, set_aside, progress);
+	collect(start, o, lo, selected, blocks, aside, validation, r.training_pairs, set_aside, progress);
 	r.validation_pairs = static_cast<int>(validation.size());
 	r.split = lo.split;
 	char light[100] = ", as seen";

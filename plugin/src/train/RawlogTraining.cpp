@@ -27,9 +27,9 @@ RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTr
 	o.validate();
 	rp.validate();
 	const OmniCameraModel camera(rp.camera);
-	// The base, and a margin; out to the max range the scans will use.
-	const double base_range = camera.distanceFromRho(rp.scanner.base_radius) + 0.05;
-	HistogramTrainer trainer(camera, rp.sensor_pose, base_range, rp.scanner.max_range, o.training);
+	// Beyond the base, out to the max range the scans will use.
+	HistogramTrainer trainer(camera, rp.sensor_pose, floorBeyondBase(camera, rp.scanner), rp.scanner.max_range,
+							 o.training);
 
 	RawlogProcessor loop(o.input);
 	RawlogTrainingResult r;

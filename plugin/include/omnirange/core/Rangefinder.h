@@ -100,6 +100,11 @@ struct RangeScan
  * default, and only a clear loss overrules them. */
 inline constexpr double kExposureCheckShare = 0.9;
 
+/** [m] The floor just beyond the robot's base: 5 cm past base_radius, so
+ * that the base's own edge is never counted. Training counts floor pixels
+ * from here and exposure compensation reads its ring here. */
+double floorBeyondBase(const OmniCameraModel& camera, const PolarScannerParams& scanner);
+
 class Rangefinder
 {
    public:
