@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <opencv2/core.hpp>
 
@@ -251,4 +252,67 @@ TEST(ColourHistogram, SmoothingSpreadsABinOverItsNeighboursAsAGaussian)
 	EXPECT_EQ(FreeSpaceClassifier(ColourModel(h), 0.03, 0.0, 0.0).freeBinCount(), 1u);
 	EXPECT_EQ(FreeSpaceClassifier(ColourModel(h), 0.03, 0.0, 1.0).freeBinCount(), 7u);
 	EXPECT_THROW(h.smoothedProbabilities(-1.0), std::invalid_argument);
+}
+
+TEST(ColourBinner, ADarkerBinKeepsTheBinAtGainOneAndMovesOnlyBrightness)
+{
+	for (const ColourSpace space : {ColourSpace::RGB, ColourSpace::HSV, ColourSpace::Chroma})
+	{
+		SCOPED_TRACE(toString(space));
+		const std::uint32_t n = 13;
+		const ColourBinner binner(space, n);
+		const auto channels = [n](std::uint32_t b) {
+			return std::array<int, 3>{int(b / (n * n)), int(b / n % n), int(b % n)};
+		};
+		for (std::uint32_t b = 0; b < binner.binCount(); ++b)
+		{
+			ASSERT_EQ(binner.darkerBin(b, 1.0), b);
+			const auto lit = channels(b), dim = channels(binner.darkerBin(b, 0.6));
+			for (int c = 0; c < 3; ++c)
+			{
+				if (space == ColourSpace::RGB || c == 2)
+					ASSERT_LE(dim[c], lit[c]);  // darker, never brighter
+				else
+					ASSERT_EQ(dim[c], lit[c]);  // hue and saturation, chromaticity: unchanged
+			}
+			if (space == ColourSpace::RGB)  // the bin's centre times 0.6, in bins
+				for (int c = 0; c < 3; ++c) ASSERT_EQ(dim[c], int((lit[c] + 0.5) * 0.6));
+		}
+		// A colour and the same colour in 60 % of the light (away from bin edges).
+		const std::uint8_t lit[3] = {167, 187, 206}, dim[3] = {100, 112, 124};
+		EXPECT_EQ(binner.darkerBin(binner.binOf(lit), 0.6), binner.binOf(dim));
+	}
+}
+
+TEST(FreeSpaceClassifier, ShadowDepthFreesTheFloorInShadowAndNothingElse)
+{
+	const std::uint8_t floor[3] = {160, 188, 206};  // B, G, R: beige stone
+	const std::uint8_t shaded[3] = {112, 132, 144};  // in 70 % of the light
+	const std::uint8_t deep[3] = {56, 66, 72};  // in 35 %
+	const std::uint8_t brighter[3] = {192, 226, 247};  // in 120 %
+	const std::uint8_t other_hue[3] = {150, 120, 100};  // a blue-grey as dark as the shade
+	for (const ColourSpace space : {ColourSpace::RGB, ColourSpace::HSV, ColourSpace::Chroma})
+	{
+		ColourHistogram h(space, 13);
+		for (int i = 0; i < 90; ++i) h.addPixel(floor);
+		for (int i = 0; i < 10; ++i) h.addPixel(other_hue);
+		const FreeSpaceClassifier as_trained(h, 0.2), in_shadow(h, 0.2, 0.0, 0.0, 0.5);
+		SCOPED_TRACE(toString(space));
+		EXPECT_TRUE(as_trained.isFree(floor));
+		EXPECT_FALSE(as_trained.isFree(shaded));
+		EXPECT_TRUE(in_shadow.isFree(floor));
+		EXPECT_TRUE(in_shadow.isFree(shaded));
+		EXPECT_FALSE(in_shadow.isFree(deep));  // darker than the depth
+		EXPECT_EQ(in_shadow.isFree(brighter), as_trained.isFree(brighter));  // nothing brighter is added
+		EXPECT_FALSE(in_shadow.isFree(other_hue));  // P = 0.1, and its darker self is not the floor's
+		// An obstacle coloured like the floor in shadow, seen in training, stays an obstacle.
+		ColourHistogram obstacles(space, 13);
+		for (int i = 0; i < 10; ++i) obstacles.addPixel(shaded);
+		EXPECT_FALSE(FreeSpaceClassifier(ColourModel(h, obstacles), 0.2, 1.0, 0.0, 0.5).isFree(shaded));
+		// ...even in the one-class model, which ignores the obstacles for the colours trained as floor.
+		EXPECT_FALSE(FreeSpaceClassifier(ColourModel(h, obstacles), 0.2, 0.0, 0.0, 0.5).isFree(shaded));
+		EXPECT_TRUE(FreeSpaceClassifier(ColourModel(h, obstacles), 0.2, 0.0, 0.0, 0.5).isFree(floor));
+	}
+	EXPECT_THROW(FreeSpaceClassifier(sample(), 0.05, 0.0, 0.0, 0.95), std::invalid_argument);
+	EXPECT_THROW(FreeSpaceClassifier(sample(), 0.05, 0.0, 0.0, -0.1), std::invalid_argument);
 }

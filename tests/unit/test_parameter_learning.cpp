@@ -9,6 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
+
+#include <algorithm>
 
 using namespace omnirange;
 using test::kSample;
@@ -29,14 +33,14 @@ RawlogTrainingOptions samplePairs(int until)
 	return o;
 }
 
-/** A grid of one candidate (no brightness step): what a test sets on top
+/** A grid of one candidate (no brightness step, no shadow): what a test sets on top
  * is all that varies. */
 LearningOptions oneCandidate()
 {
 	LearningOptions lo;
 	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.05};
 	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {20}, lo.Ks = {2};
-	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear();
+	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear(), lo.shadow_depths.clear();
 	return lo;
 }
 
@@ -190,6 +194,39 @@ TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsSc
 
 	lo.step_thresholds.clear();  // not tried
 	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 2u);
+}
+
+TEST(ParameterLearning, TheFloorInShadowIsTriedOnTheGridsBestEachDepthOnce)
+{
+	const RangefinderParams rp;
+	RawlogTrainingOptions o = samplePairs(12);
+	LearningOptions lo = oneCandidate();
+	lo.thresholds = {0.01, 0.075};
+	lo.step_candidates = 1, lo.shadow_depths = {0.5, 0.3, 0.5};
+	const LearningResult r = learnParameters(rp, o, lo);
+	ASSERT_EQ(r.tried.size(), 4u);  // the grid of two, then two depths on its better one
+	const double grid_best = std::min(r.tried[0].score, r.tried[1].score);
+	for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(r.tried[i].shadow_depth, 0.0);
+	EXPECT_EQ(r.tried[2].shadow_depth, 0.3);
+	EXPECT_EQ(r.tried[3].shadow_depth, 0.5);
+	for (std::size_t i = 2; i < 4; ++i)
+	{
+		const LearnedCandidate& base = r.tried[i].threshold == r.tried[0].threshold ? r.tried[0] : r.tried[1];
+		EXPECT_EQ(base.score, grid_best);
+		EXPECT_EQ(r.tried[i].step_threshold, 0.0);
+	}
+	EXPECT_EQ(r.params.shadow_depth, r.best.shadow_depth);
+	EXPECT_NE(learnedIni(r).find("\nshadow_depth = "), std::string::npos);
+	EXPECT_NE(describe(r.tried[3]).find("shadow 0.5"), std::string::npos) << describe(r.tried[3]);
+	// The CSV of candidates: a header, then one row per candidate in the order tried.
+	const std::string csv = candidatesCsv(r);
+	EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
+	EXPECT_EQ(csv.rfind("colour_space,bins,", 0), 0u);
+	char last[64];
+	std::snprintf(last, sizeof last, ",0.5,%.6f\n", r.tried[3].score);
+	EXPECT_EQ(csv.substr(csv.size() - std::strlen(last)), last) << csv;
+	lo.shadow_depths = {0.95};
+	EXPECT_THROW(learnParameters(rp, o, lo), std::invalid_argument);
 }
 
 TEST(ParameterLearning, APoorWinnerIsNamedInTheIniAndOnlyThen)

@@ -28,6 +28,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
 	TCLAP::ValueArg<double> band("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only", false, t.training.obstacle_band, "M", cmd);
 	TCLAP::ValueArg<std::string> learn("", "learn", "also learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser on held-aside pairs, and write them to this ini", false, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> candidates("", "learn-candidates", "with --learn: also write every candidate tried and its score to this CSV", false, "", "CSV", cmd);
 	TCLAP::ValueArg<double> light("", "light-change", "also count every floor pixel as seen in light this much dimmer and brighter (gains 1-A, 1+A); 0: as seen", false, t.training.light_change, "A", cmd);
 	TCLAP::SwitchArg near_disc("", "near-disc-only", "count only the floor nearer than every laser hit, all round: a first histogram for omnirange-calibrate that does not depend on the ini's orientation", cmd);
 	TCLAP::ValueArg<std::string> validate_on("", "learn-validate-on", "with --learn: hold aside every fourth selected pair ('interleaved') or the 'later' quarter of them, or score each of 4 'blocks' of consecutive pairs with histograms trained on the other three", false, "interleaved", "SPLIT", cmd);
@@ -38,6 +39,9 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	o.output = out.getValue(), o.ini = ini.getValue(), o.section = section.getValue(), o.learn_ini = learn.getValue();
+	o.learn_candidates = candidates.getValue();
+	if (!o.learn_candidates.empty() && o.learn_ini.empty())
+		throw std::invalid_argument("--learn-candidates needs --learn");
 	t.input = in.getValue(), t.omni_label = omni.getValue(), t.laser_label = laser.getValue();
 	t.max_dt = max_dt.getValue(), t.every = every.getValue(), t.first = first.getValue();
 	t.max_frames = max_frames.getValue(), t.until = until.getValue();
@@ -64,7 +68,7 @@ RawlogTrainingResult TrainApp::run()
 {
 	const auto& t = o_.training;
 	const std::string fig = t.figures_prefix;
-	requireOutputsAreNotInputs({o_.output, o_.learn_ini, fig.empty() ? "" : fig + "_birdseye.png",
+	requireOutputsAreNotInputs({o_.output, o_.learn_ini, o_.learn_candidates, fig.empty() ? "" : fig + "_birdseye.png",
 								fig.empty() ? "" : fig + "_laser.png", fig.empty() ? "" : fig + "_fused.png"},
 							   {t.input, o_.ini});
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
@@ -84,6 +88,7 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 	const LearningResult l = learnParameters(params, o_.training, o_.learning, progressAt(o_.verbosity, progress));
 	l.model.save(o_.output);
 	writeFileAtomically(o_.learn_ini, learnedIni(l, o_.section));
+	if (!o_.learn_candidates.empty()) writeFileAtomically(o_.learn_candidates, candidatesCsv(l));
 	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: %s (mean error %.4f m) -> %s, %s", l.training_pairs,
 					  l.validation_pairs, describe(l.best).c_str(), l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
 	if (const auto other = bestInOtherSpace(l))

@@ -107,4 +107,27 @@ ColourBinner::ColourBinner(ColourSpace space, int bins)
 	}
 }
 
+std::uint32_t ColourBinner::darkerBin(std::uint32_t bin, double gain) const
+{
+	const std::uint32_t n = static_cast<std::uint32_t>(bins_);
+	std::uint32_t c[3] = {bin / (n * n), (bin / n) % n, bin % n};
+	// A channel value at its bin's centre, darkened, back into a bin.
+	const auto binOfValue = [n](double v) {
+		return static_cast<std::uint32_t>(std::clamp(v, 0.0, 255.0) * n / 256.0);
+	};
+	const auto darker = [&](std::uint32_t k) { return binOfValue((k + 0.5) * 256.0 / n * gain); };
+	if (space_ == ColourSpace::RGB)
+		for (auto& k : c) k = darker(k);
+	else if (space_ == ColourSpace::HSV)
+		c[2] = darker(c[2]);
+	else
+	{
+		// Brightness channel: 255 log(1 + mean) / log(256) (bgrToChroma).
+		const double v = (c[2] + 0.5) * 256.0 / n, log256 = std::log(256.0);
+		const double mean = std::expm1(v / 255.0 * log256);
+		c[2] = binOfValue(255.0 * std::log1p(mean * gain) / log256);
+	}
+	return (c[0] * n + c[1]) * n + c[2];
+}
+
 }  // namespace omnirange

@@ -9,14 +9,38 @@
 
 namespace omnirange
 {
+namespace
+{
+/** Per bin, the largest probability of the bins whose colours darken into
+ * it in light down to 1 - depth times as strong (steps of 2 %, finer than
+ * a bin at the bin counts used, so no bin along the way is skipped). */
+std::vector<double> inShadow(const ColourBinner& binner, const std::vector<double>& lit, double depth)
+{
+	std::vector<double> p(lit.size(), 0.0);
+	const int steps = static_cast<int>(std::ceil(depth / 0.02));
+	for (std::uint32_t b = 0; b < lit.size(); ++b)
+	{
+		if (lit[b] <= 0) continue;
+		for (int k = 1; k <= steps; ++k)
+		{
+			double& q = p[binner.darkerBin(b, 1.0 - depth * k / steps)];
+			q = std::max(q, lit[b]);
+		}
+	}
+	return p;
+}
+}  // namespace
+
 FreeSpaceClassifier::FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio,
-										 double smoothing)
+										 double smoothing, double shadow_depth)
 	: binner_(model.floor.binner()), free_(binner_.binCount(), 0), needed_(binner_.binCount(), 0.0f)
 {
 	if (!(threshold >= 0.0 && threshold <= 1.0))
 		throw std::invalid_argument(
 			"threshold (Theta) must be within [0, 1], not " +
 			std::to_string(threshold));
+	if (!(shadow_depth >= 0.0 && shadow_depth <= 0.9))
+		throw std::invalid_argument("shadow_depth must be within [0, 0.9], not " + std::to_string(shadow_depth));
 	if (!(obstacle_ratio >= 0.0 && obstacle_ratio <= 1000.0))
 		throw std::invalid_argument("obstacle_ratio must be within [0, 1000], not " + std::to_string(obstacle_ratio));
 	const ColourHistogram& hist = model.floor;
@@ -25,13 +49,18 @@ FreeSpaceClassifier::FreeSpaceClassifier(const ColourModel& model, double thresh
 			"the colour histogram is empty: train it before classifying");
 	const bool two_class = model.hasObstacles() && obstacle_ratio > 0;
 	const std::vector<double> floor = hist.smoothedProbabilities(smoothing);
-	const std::vector<double> obstacle =
-		two_class ? model.obstacles.smoothedProbabilities(smoothing) : std::vector<double>(floor.size(), 0.0);
+	const std::vector<double> obstacle = model.hasObstacles() ? model.obstacles.smoothedProbabilities(smoothing)
+															  : std::vector<double>(floor.size(), 0.0);
+	const std::vector<double> shaded = shadow_depth > 0 ? inShadow(binner_, floor, shadow_depth) : std::vector<double>();
 	for (std::uint32_t b = 0; b < binner_.binCount(); ++b)
 	{
 		const double need = two_class ? std::max(threshold, obstacle_ratio * obstacle[b]) : threshold;
 		needed_[b] = static_cast<float>(need);
 		free_[b] = floor[b] >= need;  // eq. (5)
+		// A colour training never saw on the floor but that the floor in
+		// shadow explains is free only if the obstacles' colours, whenever
+		// known, do not explain it as well: a dark obstacle is no shadow.
+		if (!shaded.empty() && shaded[b] > 0 && shaded[b] >= std::max(need, obstacle[b])) free_[b] = 1;
 	}
 }
 

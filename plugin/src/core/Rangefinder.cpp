@@ -26,6 +26,10 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 		.add("histogram_smoothing", "bins",
 			 "sigma of a Gaussian over the histogram's bins (floor and obstacle colours) before eq. (5); 0: as counted",
 			 [](P& p) -> auto& { return p.histogram_smoothing; })
+		.add("shadow_depth", "-",
+			 "a colour is also free when it is a free floor colour in light down to 1 - shadow_depth times as "
+			 "strong (the floor in shadow), in [0, 0.9]; 0: the colours as trained",
+			 [](P& p) -> auto& { return p.shadow_depth; })
 		.include(OutlierFilterParams::table(), [](P& p) -> auto& { return p.outliers; })
 		.include(WallFitParams::table(), [](P& p) -> auto& { return p.walls; })
 		.add("exposure_compensation", "bool",
@@ -97,6 +101,7 @@ void RangefinderParams::validate() const
 	require(threshold >= 0.0 && threshold <= 1.0, "threshold (Theta) must be within [0, 1]");
 	require(obstacle_ratio >= 0.0 && obstacle_ratio <= 1000.0, "obstacle_ratio must be within [0, 1000]");
 	require(histogram_smoothing >= 0.0 && histogram_smoothing <= 16.0, "histogram_smoothing must be within [0, 16] bins");
+	require(shadow_depth >= 0.0 && shadow_depth <= 0.9, "shadow_depth must be within [0, 0.9]");
 	require(exposure_deadband >= 0.0 && exposure_deadband < 1.0, "exposure_deadband must be within [0, 1)");
 	require(!sensor_label.empty(), "sensor_label is empty");
 	require(std_error >= 0, "std_error must be >= 0 m");
@@ -119,7 +124,7 @@ double floorBeyondBase(const OmniCameraModel& camera, const PolarScannerParams& 
 Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& colours)
 	: p_((params.validate(), params)),
 	  camera_(p_.camera),
-	  classifier_(colours, p_.threshold, p_.obstacle_ratio, p_.histogram_smoothing),
+	  classifier_(colours, p_.threshold, p_.obstacle_ratio, p_.histogram_smoothing, p_.shadow_depth),
 	  scanner_(camera_, p_.scanner),
 	  reference_(colours.reference),
 	  compensate_(p_.exposure_compensation && colours.hasReference()),

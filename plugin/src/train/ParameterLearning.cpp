@@ -133,9 +133,14 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (lo.max_validation_pairs < 1) throw std::invalid_argument("max_validation_pairs must be >= 1");
 	for (const double step : lo.step_thresholds)
 		if (!(step > 0 && step <= 5)) throw std::invalid_argument("step_thresholds must be within (0, 5]");
-	std::vector<double> steps = lo.step_thresholds;  // each scored once
-	std::sort(steps.begin(), steps.end());
-	steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+	for (const double depth : lo.shadow_depths)
+		if (!(depth > 0 && depth <= 0.9)) throw std::invalid_argument("shadow_depths must be within (0, 0.9]");
+	const auto eachOnce = [](std::vector<double> v) {
+		std::sort(v.begin(), v.end());
+		v.erase(std::unique(v.begin(), v.end()), v.end());
+		return v;
+	};
+	const std::vector<double> steps = eachOnce(lo.step_thresholds), shadows = eachOnce(lo.shadow_depths);
 	const OmniCameraModel camera(start.camera);
 	const double base_range = floorBeyondBase(camera, start.scanner);
 	std::vector<int> bins = lo.bins;
@@ -191,7 +196,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 		RangefinderParams p = start;
 		p.threshold = c.threshold, p.obstacle_ratio = c.obstacle_ratio, p.histogram_smoothing = c.smoothing;
 		p.scanner.filter.N = c.N, p.scanner.filter.K = c.K, p.scanner.boundary_model = c.boundary;
-		p.scanner.step_threshold = c.step_threshold;
+		p.scanner.step_threshold = c.step_threshold, p.shadow_depth = c.shadow_depth;
 		// Scored on the classifier's own ranges: the wall fit smooths over
 		// the very errors learning must see.
 		RangefinderParams scored = p;
@@ -238,19 +243,28 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 						for (const BoundaryModel boundary : lo.boundary_models)
 							consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0});
 	}
-	// The brightness step on the grid's best: it is for what colour cannot
-	// see, and scoring it on every candidate would multiply the cost.
+	// The brightness step and the floor in shadow on the grid's best: both
+	// are for what the trained colours miss, and scoring them on every
+	// candidate would multiply the cost.
 	std::vector<LearnedCandidate> best = r.tried;
 	const std::size_t top = std::min<std::size_t>(best.size(), std::max(0, lo.step_candidates));
 	std::partial_sort(best.begin(), best.begin() + top, best.end(),
 					  [](const LearnedCandidate& a, const LearnedCandidate& b) { return a.score < b.score; });
 	for (std::size_t i = 0; i < top; ++i)
+	{
 		for (const double step : steps)
 		{
 			LearnedCandidate c = best[i];
 			c.step_threshold = step;
 			consider(c);
 		}
+		for (const double depth : shadows)
+		{
+			LearnedCandidate c = best[i];
+			c.shadow_depth = depth;
+			consider(c);
+		}
+	}
 	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
 	r.training = o.training;
 	r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
@@ -319,10 +333,26 @@ std::string describe(const LearnedCandidate& c)
 	char s[300];
 	std::snprintf(s, sizeof s,
 				  "colour space %s, %d bins, light change %g, threshold %g, obstacle_ratio %g, smoothing %g, N %d, K %d, "
-				  "%s boundary, step %g",
+				  "%s boundary, step %g, shadow %g",
 				  toString(c.space).c_str(), c.bins, c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K,
-				  toString(c.boundary).c_str(), c.step_threshold);
+				  toString(c.boundary).c_str(), c.step_threshold, c.shadow_depth);
 	return s;
+}
+
+std::string candidatesCsv(const LearningResult& r)
+{
+	std::string csv =
+		"colour_space,bins,light_change,threshold,obstacle_ratio,histogram_smoothing,N,K,boundary_model,step_threshold,"
+		"shadow_depth,score_m\n";
+	for (const LearnedCandidate& c : r.tried)
+	{
+		char row[300];
+		std::snprintf(row, sizeof row, "%s,%d,%g,%g,%g,%g,%d,%d,%s,%g,%g,%.6f\n", toString(c.space).c_str(), c.bins,
+					  c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K, toString(c.boundary).c_str(),
+					  c.step_threshold, c.shadow_depth, c.score);
+		csv += row;
+	}
+	return csv;
 }
 
 std::optional<LearnedCandidate> bestInOtherSpace(const LearningResult& r)

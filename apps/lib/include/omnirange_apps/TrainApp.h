@@ -20,6 +20,7 @@ class TrainApp : public mrpt::system::COutputLogger
 		/** If not empty: learn the parameters too (ParameterLearning.h) and
 		 * write them, as a [rangefinder] section, to this ini. */
 		std::string learn_ini;
+		std::string learn_candidates;  ///< with learn_ini: every candidate and its score, as CSV
 		LearningOptions learning;
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};

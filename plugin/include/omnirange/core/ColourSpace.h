@@ -42,6 +42,12 @@ class ColourBinner
 		return static_cast<std::uint32_t>(bins_) * bins_ * bins_;
 	}
 
+	/** The bin that the colours of `bin` fall into in light `gain` times as
+	 * strong (gain in (0, 1]: a shadow), taken at the bin's centre: RGB
+	 * scales every channel, HSV its value, CHROMA its brightness (its
+	 * chromaticity does not change). */
+	std::uint32_t darkerBin(std::uint32_t bin, double gain) const;
+
 	/** Bin index of a pixel stored as B, G, R bytes. */
 	std::uint32_t binOf(const std::uint8_t* bgr) const
 	{

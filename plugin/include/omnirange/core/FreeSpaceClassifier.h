@@ -23,10 +23,15 @@ class FreeSpaceClassifier final : public PixelClassifier
 	 * with obstacle colours in the model and obstacle_ratio > 0, when also
 	 * P(colour | floor) >= obstacle_ratio * P(colour | obstacle); both
 	 * probabilities after a Gaussian of `smoothing` bins over the histogram
-	 * (ColourHistogram::smoothedProbabilities). Throws std::invalid_argument
-	 * if the floor histogram is empty or a parameter is out of range. */
+	 * (ColourHistogram::smoothedProbabilities). With shadow_depth > 0 a
+	 * colour is also free when it is a floor colour in light down to
+	 * 1 - shadow_depth times as strong that passes the same test: its
+	 * P(colour | floor) is then the largest of the colours it darkens from
+	 * (the floor in shadow; the obstacles' colours still decide). Throws
+	 * std::invalid_argument if the floor histogram is empty or a parameter
+	 * is out of range. */
 	FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio = 0.0,
-						double smoothing = 0.0);
+						double smoothing = 0.0, double shadow_depth = 0.0);
 
 	const ColourBinner& binner() const { return binner_; }
 

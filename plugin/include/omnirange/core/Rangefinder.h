@@ -44,6 +44,10 @@ struct RangefinderParams
 	 * small change of light or a darker far floor does not fall out of a
 	 * handful of bins; 0: the paper's histogram as counted. */
 	double histogram_smoothing{0.0};
+	/** [-] a colour is also free when it is a free floor colour in light
+	 * down to 1 - shadow_depth times as strong (FreeSpaceClassifier.h): the
+	 * floor in a shadow training did not see. 0: the colours as trained. */
+	double shadow_depth{0.0};
 	/** Bring each image's floor, just beyond the base, back to the colour it
 	 * had in training before classifying (ExposureCompensation.h); only with
 	 * a histogram file that records that colour. On by default: cameras'

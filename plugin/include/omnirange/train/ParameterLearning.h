@@ -52,6 +52,10 @@ struct LearningOptions
 	 * models that do best without it. Empty: not tried. */
 	std::vector<double> step_thresholds{0.15, 0.25, 0.35, 0.5};
 	int step_candidates{32};
+	/** RangefinderParams::shadow_depth, tried like the step (on the same
+	 * best candidates, step off): the floor in shadows the training pairs
+	 * may not show. Empty: not tried. */
+	std::vector<double> shadow_depths{0.3, 0.5};
 	/** TrainingParams::light_change of the candidate histograms ({0, 0.15}
 	 * was measured and did not help: docs/results.md). */
 	std::vector<double> light_changes{0.0};
@@ -91,6 +95,7 @@ struct LearnedCandidate
 	int N{0}, K{0};
 	BoundaryModel boundary{BoundaryModel::Subpixel};
 	double step_threshold{0};  ///< PolarScannerParams::step_threshold; 0: off
+	double shadow_depth{0};  ///< RangefinderParams::shadow_depth; 0: off
 	/** [m] mean over the laser's rays of the error: |laser - omni| where
 	 * both see the boundary (at most 1.25), the false obstacle's shortfall
 	 * where the laser sees nothing within max range, 1.25 for a rejected ray
@@ -149,7 +154,11 @@ std::string poorLearningWarning(const LearningResult& r);
  * docs/results.md); learnedIni names it so a user can check both. */
 std::optional<LearnedCandidate> bestInOtherSpace(const LearningResult& r);
 
-/** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, N 20, K 4, subpixel boundary, step 0.25". */
+/** Every candidate tried, one CSV row each in the order tried, with its
+ * score [m]: to see how near the runners-up came. */
+std::string candidatesCsv(const LearningResult& r);
+
+/** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, smoothing 0, N 20, K 4, subpixel boundary, step 0.25, shadow 0". */
 std::string describe(const LearnedCandidate& c);
 
 /** The learned keys as an ini a user can read: a comment saying how they
