@@ -246,9 +246,8 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	std::ifstream comment(t.learn_ini);
 	std::string head((std::istreambuf_iterator<char>(comment)), {});
 	EXPECT_NE(head.find(", " + std::to_string(bins) + " bins,"), std::string::npos) << head.substr(0, 400);
-	// The grid of 1024, then its 32 best with each of 4 brightness-step
-	// thresholds and each of 2 shadow depths.
-	EXPECT_NE(head.find("1216 candidates"), std::string::npos) << head.substr(0, 400);
+	// The grid of 1024, then its 32 best with each of 4 brightness-step thresholds.
+	EXPECT_NE(head.find("1152 candidates"), std::string::npos) << head.substr(0, 400);
 	// Scored only on the 8 frames learning never saw.
 	const eval::AccuracyResult acc = test::scanAndScore(t.learn_ini, t.output, kSample, dir, 12);
 	EXPECT_EQ(acc.frames, 8);

@@ -305,9 +305,11 @@ TEST(FreeSpaceClassifier, ShadowDepthFreesTheFloorInShadowAndNothingElse)
 		EXPECT_FALSE(in_shadow.isFree(deep));  // darker than the depth
 		EXPECT_EQ(in_shadow.isFree(brighter), as_trained.isFree(brighter));  // nothing brighter is added
 		EXPECT_FALSE(in_shadow.isFree(other_hue));  // P = 0.1, and its darker self is not the floor's
-		// An obstacle coloured like the floor in shadow, seen in training, stays an obstacle.
+		// A colour training saw on an obstacle, even once in a hundred obstacle
+		// pixels (the floor explaining it ninety times better), is no shadow.
 		ColourHistogram obstacles(space, 13);
-		for (int i = 0; i < 10; ++i) obstacles.addPixel(shaded);
+		obstacles.addPixel(shaded);
+		for (int i = 0; i < 99; ++i) obstacles.addPixel(other_hue);
 		EXPECT_FALSE(FreeSpaceClassifier(ColourModel(h, obstacles), 0.2, 1.0, 0.0, 0.5).isFree(shaded));
 		// ...even in the one-class model, which ignores the obstacles for the colours trained as floor.
 		EXPECT_FALSE(FreeSpaceClassifier(ColourModel(h, obstacles), 0.2, 0.0, 0.0, 0.5).isFree(shaded));

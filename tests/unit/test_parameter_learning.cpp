@@ -33,14 +33,14 @@ RawlogTrainingOptions samplePairs(int until)
 	return o;
 }
 
-/** A grid of one candidate (no brightness step, no shadow): what a test sets on top
+/** A grid of one candidate (no brightness step): what a test sets on top
  * is all that varies. */
 LearningOptions oneCandidate()
 {
 	LearningOptions lo;
 	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.05};
 	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {20}, lo.Ks = {2};
-	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear(), lo.shadow_depths.clear();
+	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear();
 	return lo;
 }
 
@@ -191,42 +191,20 @@ TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsSc
 	EXPECT_EQ(r.best.score, lowest);
 	EXPECT_EQ(r.params.scanner.step_threshold, r.best.step_threshold);
 	EXPECT_NE(learnedIni(r).find("\nstep_threshold = "), std::string::npos);
-
-	lo.step_thresholds.clear();  // not tried
-	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 2u);
-}
-
-TEST(ParameterLearning, TheFloorInShadowIsTriedOnTheGridsBestEachDepthOnce)
-{
-	const RangefinderParams rp;
-	RawlogTrainingOptions o = samplePairs(12);
-	LearningOptions lo = oneCandidate();
-	lo.thresholds = {0.01, 0.075};
-	lo.step_candidates = 1, lo.shadow_depths = {0.5, 0.3, 0.5};
-	const LearningResult r = learnParameters(rp, o, lo);
-	ASSERT_EQ(r.tried.size(), 4u);  // the grid of two, then two depths on its better one
-	const double grid_best = std::min(r.tried[0].score, r.tried[1].score);
-	for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(r.tried[i].shadow_depth, 0.0);
-	EXPECT_EQ(r.tried[2].shadow_depth, 0.3);
-	EXPECT_EQ(r.tried[3].shadow_depth, 0.5);
-	for (std::size_t i = 2; i < 4; ++i)
-	{
-		const LearnedCandidate& base = r.tried[i].threshold == r.tried[0].threshold ? r.tried[0] : r.tried[1];
-		EXPECT_EQ(base.score, grid_best);
-		EXPECT_EQ(r.tried[i].step_threshold, 0.0);
-	}
-	EXPECT_EQ(r.params.shadow_depth, r.best.shadow_depth);
-	EXPECT_NE(learnedIni(r).find("\nshadow_depth = "), std::string::npos);
-	EXPECT_NE(describe(r.tried[3]).find("shadow 0.5"), std::string::npos) << describe(r.tried[3]);
 	// The CSV of candidates: a header, then one row per candidate in the order tried.
 	const std::string csv = candidatesCsv(r);
 	EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
 	EXPECT_EQ(csv.rfind("colour_space,bins,", 0), 0u);
-	char last[64];
-	std::snprintf(last, sizeof last, ",0.5,%.6f\n", r.tried[3].score);
-	EXPECT_EQ(csv.substr(csv.size() - std::strlen(last)), last) << csv;
-	lo.shadow_depths = {0.95};
-	EXPECT_THROW(learnParameters(rp, o, lo), std::invalid_argument);
+	const std::string last_row = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
+	char step_and_score[64];
+	std::snprintf(step_and_score, sizeof step_and_score, ",0.5,%.6f,", r.tried[3].score);
+	EXPECT_NE(last_row.find(step_and_score), std::string::npos) << last_row;
+	const std::string frames = last_row.substr(last_row.rfind(',') + 1);
+	EXPECT_EQ(static_cast<std::size_t>(std::count(frames.begin(), frames.end(), ' ')) + 1,
+			  r.tried[3].frame_errors.size());
+
+	lo.step_thresholds.clear();  // not tried
+	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 2u);
 }
 
 TEST(ParameterLearning, APoorWinnerIsNamedInTheIniAndOnlyThen)
@@ -302,4 +280,75 @@ TEST(ParameterLearning, AFilterWindowTheImageCannotHoldIsNoCandidate)
 
 	lo.Ns = {20};
 	EXPECT_THROW(learnParameters(rp, o, lo), std::invalid_argument);
+}
+
+TEST(ParameterLearning, WithinNoiseIsTwiceTheStandardErrorOfThePairedDifference)
+{
+	LearnedCandidate a, b;
+	b.frame_errors = {0.05, 0.06, 0.04, 0.05, 0.05, 0.06};
+	a.frame_errors = {0.051, 0.061, 0.041, 0.051, 0.051, 0.061};  // 1 mm worse on every frame: no noise at all
+	EXPECT_FALSE(withinNoiseOf(a, b));
+	a.frame_errors = {0.06, 0.052, 0.052, 0.044, 0.06, 0.052};  // 1 mm worse on average, frames disagreeing by ~1 cm
+	EXPECT_TRUE(withinNoiseOf(a, b));
+	a.frame_errors = {0.04, 0.05, 0.03, 0.04, 0.04, 0.05};  // better: within noise whatever the noise
+	EXPECT_TRUE(withinNoiseOf(a, b));
+	a.frame_errors = {0.2, 0.3, 0.25, 0.2, 0.2, 0.3};
+	EXPECT_FALSE(withinNoiseOf(a, b));
+	a.frame_errors.resize(5), b.frame_errors.resize(5);  // five frames: too few for the sign test
+	a.frame_errors = {0.04, 0.05, 0.03, 0.04, 0.04};
+	EXPECT_FALSE(withinNoiseOf(a, b));
+	// Worse on 10 of 12 frames, by a little, with two frames far better:
+	// the mean is within noise, the sign test is not (p = 0.039).
+	b.frame_errors.assign(12, 0.05);
+	a.frame_errors.assign(10, 0.06);
+	a.frame_errors.push_back(0.0), a.frame_errors.push_back(0.0);
+	EXPECT_FALSE(withinNoiseOf(a, b));
+	a.frame_errors[9] = 0.0;  // worse on 9 of 12 (p = 0.146): chance
+	EXPECT_TRUE(withinNoiseOf(a, b));
+}
+
+TEST(ParameterLearning, ATieGoesToTheBestChromaCandidate)
+{
+	LearnedCandidate rgb, chroma_best, chroma_other;
+	rgb.space = ColourSpace::RGB, rgb.frame_errors = {0.05, 0.06, 0.04, 0.05, 0.05, 0.06}, rgb.score = 0.0517;
+	chroma_best.space = ColourSpace::Chroma, chroma_best.threshold = 0.01;
+	chroma_best.frame_errors = {0.06, 0.052, 0.052, 0.044, 0.06, 0.052}, chroma_best.score = 0.0533;
+	chroma_other.space = ColourSpace::Chroma, chroma_other.threshold = 0.05;
+	chroma_other.frame_errors = {0.3, 0.3, 0.3, 0.3, 0.3, 0.3}, chroma_other.score = 0.3;
+	const std::vector<LearnedCandidate> tried{chroma_other, rgb, chroma_best};
+	const auto kept = chromaOnTie(tried, rgb);
+	ASSERT_TRUE(kept);
+	EXPECT_EQ(kept->threshold, 0.01);  // the best CHROMA candidate, not the first
+	EXPECT_FALSE(chromaOnTie(tried, chroma_best));  // CHROMA already
+	EXPECT_FALSE(chromaOnTie({rgb, chroma_other}, rgb));  // CHROMA far behind
+	EXPECT_FALSE(chromaOnTie({rgb}, rgb));  // no CHROMA candidate
+}
+
+TEST(ParameterLearning, LearningKeepsTheLowestScoreWhenChromaIsClearlyBehind)
+{
+	// The maze sample: RGB scores lowest and CHROMA is worse on every
+	// held-aside frame, so the rule changes nothing; the wiring of a tie is
+	// the test above.
+	const RangefinderParams rp = RangefinderParams::loadFromFile(test::kSource + "/ini/maze.ini", "rangefinder");
+	RawlogTrainingOptions o = samplePairs(12);
+	o.input = test::kSource + "/rawlogs/maze-sample.rawlog";
+	LearningOptions lo = oneCandidate();
+	lo.spaces = {ColourSpace::RGB, ColourSpace::Chroma}, lo.thresholds = {0.01}, lo.smoothings = {1.0}, lo.Ns = {10};
+	lo.hold_out_every = 2;  // six frames to validate on: the fewest the rule decides with
+	const LearningResult r = learnParameters(rp, o, lo);
+	ASSERT_GE(r.validation_pairs, 6);
+	for (const auto& c : r.tried) EXPECT_EQ(c.frame_errors.size(), static_cast<std::size_t>(r.validation_pairs));
+	ASSERT_EQ(r.tried.size(), 2u);
+	const LearnedCandidate& rgb = r.tried[0].space == ColourSpace::RGB ? r.tried[0] : r.tried[1];
+	const LearnedCandidate& chroma = r.tried[0].space == ColourSpace::RGB ? r.tried[1] : r.tried[0];
+	ASSERT_LT(rgb.score, chroma.score);
+	EXPECT_FALSE(withinNoiseOf(chroma, rgb));
+	EXPECT_EQ(r.best.space, ColourSpace::RGB);
+	EXPECT_FALSE(r.overruled);
+	EXPECT_EQ(learnedIni(r).find("CHROMA was kept"), std::string::npos);
+	// The same learning run with an RGB candidate the rule must overrule:
+	// CHROMA's own errors, a hair lower on one frame and higher on another.
+	LearnedCandidate twin = chroma;
+	twin.space = ColourSpace::RGB, twin.frame_errors[0] -= 0.001, twin.frame_errors[1] += 0.0005;
+	EXPECT_TRUE(chromaOnTie({twin, chroma}, twin));
 }

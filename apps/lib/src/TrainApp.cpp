@@ -5,6 +5,8 @@
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/Progress.h>
 
+#include <cmath>
+
 namespace omnirange::app
 {
 TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
@@ -28,6 +30,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
 	TCLAP::ValueArg<double> band("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only", false, t.training.obstacle_band, "M", cmd);
 	TCLAP::ValueArg<std::string> learn("", "learn", "also learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser on held-aside pairs, and write them to this ini", false, "", "INI", cmd);
+	TCLAP::SwitchArg no_chroma_tie("", "learn-no-chroma-on-tie", "with --learn: take the lowest score even when the best CHROMA candidate is behind it by no more than the held-aside frames' noise", cmd);
 	TCLAP::ValueArg<std::string> candidates("", "learn-candidates", "with --learn: also write every candidate tried and its score to this CSV", false, "", "CSV", cmd);
 	TCLAP::ValueArg<double> light("", "light-change", "also count every floor pixel as seen in light this much dimmer and brighter (gains 1-A, 1+A); 0: as seen", false, t.training.light_change, "A", cmd);
 	TCLAP::SwitchArg near_disc("", "near-disc-only", "count only the floor nearer than every laser hit, all round: a first histogram for omnirange-calibrate that does not depend on the ini's orientation", cmd);
@@ -51,6 +54,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	t.training.near_disc_only = near_disc.getValue();
 	o.learning.split = validationSplitFromString(validate_on.getValue());
 	o.learning.hold_out_every = hold_out.getValue();
+	o.learning.chroma_on_tie = !no_chroma_tie.getValue();
 	o.learning.validation_light_change = learn_light.getValue();
 	o.learning.light_changes = {0.0};
 	if (learn_light.getValue() > 0) o.learning.light_changes.push_back(learn_light.getValue());
@@ -92,8 +96,11 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: %s (mean error %.4f m) -> %s, %s", l.training_pairs,
 					  l.validation_pairs, describe(l.best).c_str(), l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
 	if (const auto other = bestInOtherSpace(l))
-		MRPT_LOG_INFO_FMT("the best in another colour space: %s (mean error %.4f m, %.1f mm more)",
-						  describe(*other).c_str(), other->score, 1000 * (other->score - l.best.score));
+		MRPT_LOG_INFO_FMT("the best in another colour space: %s (mean error %.4f m, %.1f mm %s)",
+						  describe(*other).c_str(), other->score, 1000 * std::abs(other->score - l.best.score),
+						  other->score >= l.best.score ? "more" : "less");
+	if (l.overruled)
+		MRPT_LOG_INFO("CHROMA was kept on a tie: the lower score is within twice its standard error over the held-aside frames");
 	if (const std::string warning = poorLearningWarning(l); !warning.empty()) MRPT_LOG_WARN(warning);
 	RawlogTrainingResult r;
 	r.model = l.model;

@@ -49,18 +49,20 @@ FreeSpaceClassifier::FreeSpaceClassifier(const ColourModel& model, double thresh
 			"the colour histogram is empty: train it before classifying");
 	const bool two_class = model.hasObstacles() && obstacle_ratio > 0;
 	const std::vector<double> floor = hist.smoothedProbabilities(smoothing);
-	const std::vector<double> obstacle = model.hasObstacles() ? model.obstacles.smoothedProbabilities(smoothing)
-															  : std::vector<double>(floor.size(), 0.0);
+	const std::vector<double> obstacle =
+		two_class ? model.obstacles.smoothedProbabilities(smoothing) : std::vector<double>(floor.size(), 0.0);
 	const std::vector<double> shaded = shadow_depth > 0 ? inShadow(binner_, floor, shadow_depth) : std::vector<double>();
 	for (std::uint32_t b = 0; b < binner_.binCount(); ++b)
 	{
 		const double need = two_class ? std::max(threshold, obstacle_ratio * obstacle[b]) : threshold;
 		needed_[b] = static_cast<float>(need);
 		free_[b] = floor[b] >= need;  // eq. (5)
-		// A colour training never saw on the floor but that the floor in
-		// shadow explains is free only if the obstacles' colours, whenever
-		// known, do not explain it as well: a dark obstacle is no shadow.
-		if (!shaded.empty() && shaded[b] > 0 && shaded[b] >= std::max(need, obstacle[b])) free_[b] = 1;
+		// A colour that the floor in shadow explains is free only if training
+		// never saw it on an obstacle: a dark obstacle of the floor's hue is
+		// no shadow, and a weaker test (the obstacles explaining it less
+		// well) let bookcases and hedges through (docs/results.md).
+		if (!shaded.empty() && shaded[b] > 0 && shaded[b] >= need && !(model.obstacles.probability(b) > 0))
+			free_[b] = 1;
 	}
 }
 

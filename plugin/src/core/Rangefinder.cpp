@@ -28,7 +28,8 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 			 [](P& p) -> auto& { return p.histogram_smoothing; })
 		.add("shadow_depth", "-",
 			 "a colour is also free when it is a free floor colour in light down to 1 - shadow_depth times as "
-			 "strong (the floor in shadow), in [0, 0.9]; 0: the colours as trained",
+			 "strong and training never saw it on an obstacle (the floor in shadow), in [0, 0.9]; 0: the colours "
+			 "as trained",
 			 [](P& p) -> auto& { return p.shadow_depth; })
 		.include(OutlierFilterParams::table(), [](P& p) -> auto& { return p.outliers; })
 		.include(WallFitParams::table(), [](P& p) -> auto& { return p.walls; })

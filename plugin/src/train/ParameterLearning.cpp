@@ -93,14 +93,19 @@ void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const 
 								 std::to_string(selected) + " selected; some are needed to train and some to validate)");
 }
 
-/** The candidate's error on the held-aside pairs (see LearnedCandidate::score). */
-double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& validation)
+/** The candidate's error on the held-aside pairs, and per pair in
+ * `frame_errors` (see LearnedCandidate::score). */
+double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& validation,
+			 std::vector<double>& frame_errors)
 {
 	double sum = 0;
 	std::size_t n = 0;
 	const double max_range = rf[0].params().scanner.max_range, cap = kDefaultMaxDifference;
+	frame_errors.clear();
 	for (const auto& v : validation)
 	{
+		const double sum_before = sum;
+		const std::size_t n_before = n;
 		const Rangefinder& by = rf[v.block];
 		const auto omni = by.toObservation(by.process(v.image), v.laser->timestamp);
 		for (const RangePair& p : pairScans(*v.laser, *omni, cap))
@@ -115,6 +120,7 @@ double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& 
 			}
 			++n;
 		}
+		frame_errors.push_back(n > n_before ? (sum - sum_before) / static_cast<double>(n - n_before) : cap);
 	}
 	return n ? sum / n : cap;
 }
@@ -133,14 +139,9 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (lo.max_validation_pairs < 1) throw std::invalid_argument("max_validation_pairs must be >= 1");
 	for (const double step : lo.step_thresholds)
 		if (!(step > 0 && step <= 5)) throw std::invalid_argument("step_thresholds must be within (0, 5]");
-	for (const double depth : lo.shadow_depths)
-		if (!(depth > 0 && depth <= 0.9)) throw std::invalid_argument("shadow_depths must be within (0, 0.9]");
-	const auto eachOnce = [](std::vector<double> v) {
-		std::sort(v.begin(), v.end());
-		v.erase(std::unique(v.begin(), v.end()), v.end());
-		return v;
-	};
-	const std::vector<double> steps = eachOnce(lo.step_thresholds), shadows = eachOnce(lo.shadow_depths);
+	std::vector<double> steps = lo.step_thresholds;  // each scored once
+	std::sort(steps.begin(), steps.end());
+	steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
 	const OmniCameraModel camera(start.camera);
 	const double base_range = floorBeyondBase(camera, start.scanner);
 	std::vector<int> bins = lo.bins;
@@ -191,12 +192,16 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 
 	r.best.score = 1e9;
 	std::map<TrainerKey, std::vector<ColourModel>> models;  // per block
-	const auto consider = [&](const LearnedCandidate& candidate) {
-		LearnedCandidate c = candidate;
+	const auto paramsOf = [&](const LearnedCandidate& c) {
 		RangefinderParams p = start;
 		p.threshold = c.threshold, p.obstacle_ratio = c.obstacle_ratio, p.histogram_smoothing = c.smoothing;
 		p.scanner.filter.N = c.N, p.scanner.filter.K = c.K, p.scanner.boundary_model = c.boundary;
-		p.scanner.step_threshold = c.step_threshold, p.shadow_depth = c.shadow_depth;
+		p.scanner.step_threshold = c.step_threshold;
+		return p;
+	};
+	const auto consider = [&](const LearnedCandidate& candidate) {
+		LearnedCandidate c = candidate;
+		const RangefinderParams p = paramsOf(c);
 		// Scored on the classifier's own ranges: the wall fit smooths over
 		// the very errors learning must see.
 		RangefinderParams scored = p;
@@ -204,7 +209,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 		const std::vector<ColourModel>& model = models.at(TrainerKey{c.space, c.bins, c.light_change});
 		std::vector<Rangefinder> rf;
 		for (const ColourModel& m : model) rf.emplace_back(scored, m);
-		c.score = score(rf, validation);
+		c.score = score(rf, validation, c.frame_errors);
 		r.tried.push_back(c);
 		if (c.score < r.best.score) r.best = c, r.params = p, r.model = model[0];
 	};
@@ -241,31 +246,28 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 				for (const double smoothing : lo.smoothings)
 					for (const auto& [N, K] : windows)
 						for (const BoundaryModel boundary : lo.boundary_models)
-							consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0});
+							consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0, 0.0, {}});
 	}
-	// The brightness step and the floor in shadow on the grid's best: both
-	// are for what the trained colours miss, and scoring them on every
-	// candidate would multiply the cost.
+	// The brightness step on the grid's best: it is for what colour cannot
+	// see, and scoring it on every candidate would multiply the cost.
 	std::vector<LearnedCandidate> best = r.tried;
 	const std::size_t top = std::min<std::size_t>(best.size(), std::max(0, lo.step_candidates));
 	std::partial_sort(best.begin(), best.begin() + top, best.end(),
 					  [](const LearnedCandidate& a, const LearnedCandidate& b) { return a.score < b.score; });
 	for (std::size_t i = 0; i < top; ++i)
-	{
 		for (const double step : steps)
 		{
 			LearnedCandidate c = best[i];
 			c.step_threshold = step;
 			consider(c);
 		}
-		for (const double depth : shadows)
-		{
-			LearnedCandidate c = best[i];
-			c.shadow_depth = depth;
-			consider(c);
-		}
-	}
 	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
+	if (const auto chroma = lo.chroma_on_tie ? chromaOnTie(r.tried, r.best) : std::nullopt)
+	{
+		r.overruled = r.best;
+		r.best = *chroma, r.params = paramsOf(*chroma);
+		r.model = models.at(TrainerKey{chroma->space, chroma->bins, chroma->light_change})[0];
+	}
 	r.training = o.training;
 	r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
 	const TrainerKey winner{r.best.space, r.best.bins, r.best.light_change};
@@ -333,24 +335,82 @@ std::string describe(const LearnedCandidate& c)
 	char s[300];
 	std::snprintf(s, sizeof s,
 				  "colour space %s, %d bins, light change %g, threshold %g, obstacle_ratio %g, smoothing %g, N %d, K %d, "
-				  "%s boundary, step %g, shadow %g",
+				  "%s boundary, step %g",
 				  toString(c.space).c_str(), c.bins, c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K,
-				  toString(c.boundary).c_str(), c.step_threshold, c.shadow_depth);
+				  toString(c.boundary).c_str(), c.step_threshold);
 	return s;
+}
+
+namespace
+{
+/** P(X >= k) for X ~ Binomial(n, 1/2). */
+double upperTailOfHalf(int k, int n)
+{
+	double tail = 0, term = std::pow(0.5, n);  // C(n, 0) / 2^n
+	for (int i = 0; i <= n; ++i)
+	{
+		if (i >= k) tail += term;
+		term = term * (n - i) / (i + 1);
+	}
+	return tail;
+}
+}  // namespace
+
+bool withinNoiseOf(const LearnedCandidate& a, const LearnedCandidate& b)
+{
+	// With fewer than 6 frames the sign test could not reject chance at 5 %
+	// even were `a` worse on every frame: too few to call anything a tie.
+	const std::size_t n = std::min(a.frame_errors.size(), b.frame_errors.size());
+	if (n < 6) return false;
+	double mean = 0, sq = 0;
+	int worse = 0, differ = 0;
+	for (std::size_t f = 0; f < n; ++f)
+	{
+		const double d = a.frame_errors[f] - b.frame_errors[f];
+		mean += d;
+		worse += d > 0, differ += d != 0;
+	}
+	mean /= static_cast<double>(n);
+	for (std::size_t f = 0; f < n; ++f)
+	{
+		const double d = a.frame_errors[f] - b.frame_errors[f] - mean;
+		sq += d * d;
+	}
+	const double standard_error = std::sqrt(sq / static_cast<double>(n - 1) / static_cast<double>(n));
+	// A few frames with large errors make the standard error large; the sign
+	// test does not let them hide `a` being worse on nearly every frame.
+	const bool worse_on_most = 2 * worse > differ && 2 * upperTailOfHalf(worse, differ) < 0.05;
+	return mean <= 2.0 * standard_error && !worse_on_most;
+}
+
+std::optional<LearnedCandidate> chromaOnTie(const std::vector<LearnedCandidate>& tried, const LearnedCandidate& lowest)
+{
+	if (lowest.space == ColourSpace::Chroma) return std::nullopt;
+	const LearnedCandidate* chroma = nullptr;
+	for (const LearnedCandidate& c : tried)
+		if (c.space == ColourSpace::Chroma && (!chroma || c.score < chroma->score)) chroma = &c;
+	if (!chroma || !withinNoiseOf(*chroma, lowest)) return std::nullopt;
+	return *chroma;
 }
 
 std::string candidatesCsv(const LearningResult& r)
 {
 	std::string csv =
 		"colour_space,bins,light_change,threshold,obstacle_ratio,histogram_smoothing,N,K,boundary_model,step_threshold,"
-		"shadow_depth,score_m\n";
+		"score_m,frame_errors_m\n";
 	for (const LearnedCandidate& c : r.tried)
 	{
 		char row[300];
-		std::snprintf(row, sizeof row, "%s,%d,%g,%g,%g,%g,%d,%d,%s,%g,%g,%.6f\n", toString(c.space).c_str(), c.bins,
+		std::snprintf(row, sizeof row, "%s,%d,%g,%g,%g,%g,%d,%d,%s,%g,%.6f,", toString(c.space).c_str(), c.bins,
 					  c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K, toString(c.boundary).c_str(),
-					  c.step_threshold, c.shadow_depth, c.score);
+					  c.step_threshold, c.score);
 		csv += row;
+		for (std::size_t f = 0; f < c.frame_errors.size(); ++f)
+		{
+			std::snprintf(row, sizeof row, f ? " %.6f" : "%.6f", c.frame_errors[f]);
+			csv += row;
+		}
+		csv += "\n";
 	}
 	return csv;
 }
@@ -396,11 +456,15 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 		char line[600];
 		std::snprintf(line, sizeof line,
 					  "; The best in another colour space: %s;\n"
-					  "; mean error %.4f m (%.1f mm more). When that is close, train both and score each on a\n"
+					  "; mean error %.4f m (%.1f mm %s). When that is close, train both and score each on a\n"
 					  "; later part of the log (docs/users.md): the held-aside frames cannot tell them apart.\n",
-					  describe(*other).c_str(), other->score, 1000 * (other->score - r.best.score));
+					  describe(*other).c_str(), other->score, 1000 * std::abs(other->score - r.best.score),
+					  other->score >= r.best.score ? "more" : "less");
 		other_space = line;
 	}
+	if (r.overruled)
+		other_space += "; CHROMA was kept: the lower score above is within twice its standard error over the\n"
+					   "; held-aside frames, and CHROMA holds through changes of light they do not show.\n";
 	const std::string warning = poorLearningWarning(r);
 	return head + other_space + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" +
 		   r.params.asIni();

@@ -25,9 +25,9 @@ class FreeSpaceClassifier final : public PixelClassifier
 	 * probabilities after a Gaussian of `smoothing` bins over the histogram
 	 * (ColourHistogram::smoothedProbabilities). With shadow_depth > 0 a
 	 * colour is also free when it is a floor colour in light down to
-	 * 1 - shadow_depth times as strong that passes the same test: its
-	 * P(colour | floor) is then the largest of the colours it darkens from
-	 * (the floor in shadow; the obstacles' colours still decide). Throws
+	 * 1 - shadow_depth times as strong that passes the same test (its
+	 * P(colour | floor) is then the largest of the colours it darkens from)
+	 * and that training never saw on an obstacle: the floor in shadow. Throws
 	 * std::invalid_argument if the floor histogram is empty or a parameter
 	 * is out of range. */
 	FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio = 0.0,

@@ -45,8 +45,12 @@ struct RangefinderParams
 	 * handful of bins; 0: the paper's histogram as counted. */
 	double histogram_smoothing{0.0};
 	/** [-] a colour is also free when it is a free floor colour in light
-	 * down to 1 - shadow_depth times as strong (FreeSpaceClassifier.h): the
-	 * floor in a shadow training did not see. 0: the colours as trained. */
+	 * down to 1 - shadow_depth times as strong and training never saw it on
+	 * an obstacle (FreeSpaceClassifier.h): the floor in a shadow training
+	 * did not see, as the sun's patches move through a room. Off by
+	 * default: the guard is only as good as the obstacles training saw, and
+	 * after a short training the darker colours let obstacles through
+	 * (docs/results.md). 0: the colours as trained. */
 	double shadow_depth{0.0};
 	/** Bring each image's floor, just beyond the base, back to the colour it
 	 * had in training before classifying (ExposureCompensation.h); only with

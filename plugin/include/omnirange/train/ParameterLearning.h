@@ -52,10 +52,6 @@ struct LearningOptions
 	 * models that do best without it. Empty: not tried. */
 	std::vector<double> step_thresholds{0.15, 0.25, 0.35, 0.5};
 	int step_candidates{32};
-	/** RangefinderParams::shadow_depth, tried like the step (on the same
-	 * best candidates, step off): the floor in shadows the training pairs
-	 * may not show. Empty: not tried. */
-	std::vector<double> shadow_depths{0.3, 0.5};
 	/** TrainingParams::light_change of the candidate histograms ({0, 0.15}
 	 * was measured and did not help: docs/results.md). */
 	std::vector<double> light_changes{0.0};
@@ -82,6 +78,12 @@ struct LearningOptions
 	/** Train the winner's histogram again on every selected pair, the
 	 * held-aside ones too, once they have chosen it. */
 	bool refit{true};
+	/** When the lowest score is not CHROMA's and the best CHROMA candidate
+	 * is behind it by no more than the held-aside frames' noise
+	 * (withinNoiseOf), take the CHROMA one: the rest of a route brings
+	 * changes of light the held-aside frames do not, and CHROMA is the
+	 * space built to hold through them (docs/method.md, docs/results.md). */
+	bool chroma_on_tie{true};
 };
 
 /** One candidate and how it did on the held-aside pairs. */
@@ -95,12 +97,14 @@ struct LearnedCandidate
 	int N{0}, K{0};
 	BoundaryModel boundary{BoundaryModel::Subpixel};
 	double step_threshold{0};  ///< PolarScannerParams::step_threshold; 0: off
-	double shadow_depth{0};  ///< RangefinderParams::shadow_depth; 0: off
 	/** [m] mean over the laser's rays of the error: |laser - omni| where
 	 * both see the boundary (at most 1.25), the false obstacle's shortfall
 	 * where the laser sees nothing within max range, 1.25 for a rejected ray
 	 * (a candidate that rejects what it cannot classify must not win). */
 	double score{0};
+	/** [m] the same error per held-aside image (in their order), for
+	 * telling a difference from the frames' noise. */
+	std::vector<double> frame_errors;
 };
 
 struct LearningResult
@@ -109,6 +113,9 @@ struct LearningResult
 	ColourModel model;  ///< trained in the winner's colour space, bins and light change
 	TrainingParams training;  ///< how `model` was trained
 	LearnedCandidate best;
+	/** The lowest score, when a tie went to CHROMA (chroma_on_tie) and
+	 * `best` is not it. */
+	std::optional<LearnedCandidate> overruled;
 	std::vector<LearnedCandidate> tried;
 	int training_pairs{0}, validation_pairs{0};
 	int refit_pairs{0};  ///< pairs the final histogram was trained on (0: not refitted)
@@ -154,11 +161,24 @@ std::string poorLearningWarning(const LearningResult& r);
  * docs/results.md); learnedIni names it so a user can check both. */
 std::optional<LearnedCandidate> bestInOtherSpace(const LearningResult& r);
 
+/** Whether `a` scores no worse than `b` beyond the held-aside frames'
+ * noise: over the frames both were scored on, the mean of a's error minus
+ * b's is at most twice its standard error, and `a` is not worse on so many
+ * more frames than better that a two-sided sign test rejects chance at 5 %
+ * (false with fewer than 6 frames, with which that test cannot reject). */
+bool withinNoiseOf(const LearnedCandidate& a, const LearnedCandidate& b);
+
+/** The best CHROMA candidate of `tried` when `lowest` (the lowest score)
+ * is not CHROMA and that one is within its noise (withinNoiseOf); none
+ * otherwise (LearningOptions::chroma_on_tie). */
+std::optional<LearnedCandidate> chromaOnTie(const std::vector<LearnedCandidate>& tried, const LearnedCandidate& lowest);
+
 /** Every candidate tried, one CSV row each in the order tried, with its
- * score [m]: to see how near the runners-up came. */
+ * score [m] and its error on each held-aside frame (space-separated): to
+ * see how near the runners-up came, and on which frames. */
 std::string candidatesCsv(const LearningResult& r);
 
-/** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, smoothing 0, N 20, K 4, subpixel boundary, step 0.25, shadow 0". */
+/** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, smoothing 0, N 20, K 4, subpixel boundary, step 0.25". */
 std::string describe(const LearnedCandidate& c);
 
 /** The learned keys as an ini a user can read: a comment saying how they
