@@ -207,6 +207,15 @@ TEST(AppClasses, CommandLinesFillTheOptions)
 	EXPECT_EQ(o.training.training.space, ColourSpace::HSV);
 	EXPECT_EQ(o.training.laser_label, "LASER");  // the default, from the options struct
 	EXPECT_EQ(o.verbosity, mrpt::system::LVL_ERROR);
+	EXPECT_TRUE(o.learning.chroma_on_tie);  // the default
+	const char* learn[] = {"omnirange-train", "-i", "in.rawlog", "-o", "out.hist", "-c", "x.ini", "--learn", "l.ini",
+						   "--learn-candidates", "c.csv", "--learn-no-chroma-on-tie"};
+	const TrainApp::Options l = TrainApp::parse(12, learn);
+	EXPECT_EQ(l.learn_candidates, "c.csv");
+	EXPECT_FALSE(l.learning.chroma_on_tie);
+	const char* candidates_alone[] = {"omnirange-train", "-i", "in.rawlog", "-o", "out.hist", "-c", "x.ini",
+									  "--learn-candidates", "c.csv"};
+	EXPECT_THROW(TrainApp::parse(9, candidates_alone), std::invalid_argument);
 
 	const char* bad[] = {"omnirange-scan", "--bogus"};
 	try
@@ -227,10 +236,26 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	t.ini = kIni;
 	t.output = dir + "/learned.hist";
 	t.learn_ini = dir + "/learned.ini";
+	t.learn_candidates = dir + "/candidates.csv";
 	t.training.input = kSample;
 	t.training.until = 12;  // learn on the first 12 pairs (9 to train, 3 held aside)
 	t.verbosity = mrpt::system::LVL_ERROR;
 	TrainApp(t).run();
+	{
+		// Every candidate a row after the header, with its three frames' errors.
+		std::ifstream csv(t.learn_candidates);
+		std::string line;
+		int rows = 0;
+		std::getline(csv, line);
+		EXPECT_EQ(line.rfind("colour_space,", 0), 0u) << line;
+		while (std::getline(csv, line))
+		{
+			++rows;
+			const std::string frames = line.substr(line.rfind(',') + 1);
+			ASSERT_EQ(std::count(frames.begin(), frames.end(), ' '), 2) << line;
+		}
+		EXPECT_EQ(rows, 1152);
+	}
 	// The written ini is a [rangefinder] section a user (and omnirange-scan) can load.
 	mrpt::system::COutputLogger quiet("test");
 	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
