@@ -100,7 +100,7 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 						  describe(*other).c_str(), other->score, 1000 * std::abs(other->score - l.best.score),
 						  other->score >= l.best.score ? "more" : "less");
 	if (l.overruled)
-		MRPT_LOG_INFO("CHROMA was kept on a tie: the lower score is within twice its standard error over the held-aside frames");
+		MRPT_LOG_INFO("CHROMA was kept on a tie: the lower score is within the held-aside frames' noise");
 	if (const std::string warning = poorLearningWarning(l); !warning.empty()) MRPT_LOG_WARN(warning);
 	RawlogTrainingResult r;
 	r.model = l.model;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <tuple>
 
@@ -354,6 +355,16 @@ double upperTailOfHalf(int k, int n)
 	}
 	return tail;
 }
+
+/** The lowest-scoring candidate of `tried` whose colour space `wanted` accepts. */
+template <typename Wanted>
+std::optional<LearnedCandidate> bestWhere(const std::vector<LearnedCandidate>& tried, Wanted wanted)
+{
+	const LearnedCandidate* best = nullptr;
+	for (const LearnedCandidate& c : tried)
+		if (wanted(c.space) && (!best || c.score < best->score)) best = &c;
+	return best ? std::optional<LearnedCandidate>(*best) : std::nullopt;
+}
 }  // namespace
 
 bool withinNoiseOf(const LearnedCandidate& a, const LearnedCandidate& b)
@@ -362,20 +373,13 @@ bool withinNoiseOf(const LearnedCandidate& a, const LearnedCandidate& b)
 	// even were `a` worse on every frame: too few to call anything a tie.
 	const std::size_t n = std::min(a.frame_errors.size(), b.frame_errors.size());
 	if (n < 6) return false;
-	double mean = 0, sq = 0;
-	int worse = 0, differ = 0;
-	for (std::size_t f = 0; f < n; ++f)
-	{
-		const double d = a.frame_errors[f] - b.frame_errors[f];
-		mean += d;
-		worse += d > 0, differ += d != 0;
-	}
-	mean /= static_cast<double>(n);
-	for (std::size_t f = 0; f < n; ++f)
-	{
-		const double d = a.frame_errors[f] - b.frame_errors[f] - mean;
-		sq += d * d;
-	}
+	std::vector<double> d(n);
+	for (std::size_t f = 0; f < n; ++f) d[f] = a.frame_errors[f] - b.frame_errors[f];
+	const double mean = std::accumulate(d.begin(), d.end(), 0.0) / static_cast<double>(n);
+	double sq = 0;
+	for (const double x : d) sq += (x - mean) * (x - mean);
+	const int worse = static_cast<int>(std::count_if(d.begin(), d.end(), [](double x) { return x > 0; }));
+	const int differ = worse + static_cast<int>(std::count_if(d.begin(), d.end(), [](double x) { return x < 0; }));
 	const double standard_error = std::sqrt(sq / static_cast<double>(n - 1) / static_cast<double>(n));
 	// A few frames with large errors make the standard error large; the sign
 	// test does not let them hide `a` being worse on nearly every frame.
@@ -386,11 +390,9 @@ bool withinNoiseOf(const LearnedCandidate& a, const LearnedCandidate& b)
 std::optional<LearnedCandidate> chromaOnTie(const std::vector<LearnedCandidate>& tried, const LearnedCandidate& lowest)
 {
 	if (lowest.space == ColourSpace::Chroma) return std::nullopt;
-	const LearnedCandidate* chroma = nullptr;
-	for (const LearnedCandidate& c : tried)
-		if (c.space == ColourSpace::Chroma && (!chroma || c.score < chroma->score)) chroma = &c;
+	const auto chroma = bestWhere(tried, [](ColourSpace s) { return s == ColourSpace::Chroma; });
 	if (!chroma || !withinNoiseOf(*chroma, lowest)) return std::nullopt;
-	return *chroma;
+	return chroma;
 }
 
 std::string candidatesCsv(const LearningResult& r)
@@ -417,10 +419,7 @@ std::string candidatesCsv(const LearningResult& r)
 
 std::optional<LearnedCandidate> bestInOtherSpace(const LearningResult& r)
 {
-	std::optional<LearnedCandidate> other;
-	for (const LearnedCandidate& c : r.tried)
-		if (c.space != r.best.space && (!other || c.score < other->score)) other = c;
-	return other;
+	return bestWhere(r.tried, [&](ColourSpace s) { return s != r.best.space; });
 }
 
 std::string poorLearningWarning(const LearningResult& r)
@@ -463,8 +462,8 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 		other_space = line;
 	}
 	if (r.overruled)
-		other_space += "; CHROMA was kept: the lower score above is within twice its standard error over the\n"
-					   "; held-aside frames, and CHROMA holds through changes of light they do not show.\n";
+		other_space += "; CHROMA was kept: the lower score above is within the held-aside frames' noise\n"
+					   "; (docs/method.md), and CHROMA holds through changes of light they do not show.\n";
 	const std::string warning = poorLearningWarning(r);
 	return head + other_space + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" +
 		   r.params.asIni();
