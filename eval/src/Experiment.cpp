@@ -1,5 +1,6 @@
 #include "omnirange_eval/Experiment.h"
 
+#include "omnirange_eval/CandidateStudy.h"
 #include "omnirange_eval/ExternalProgram.h"
 #include "omnirange_eval/Figures.h"
 #include "omnirange_eval/SensoryFrameFormat.h"
@@ -160,7 +161,8 @@ void Experiment::train()
 
 void Experiment::learn(const RawlogTrainingOptions& o)
 {
-	const LearningResult l = learnParameters(c_.rangefinder, o);
+	const RangefinderParams start = c_.rangefinder;
+	const LearningResult l = learnParameters(start, o);
 	c_.rangefinder = l.params;
 	histogram_data_ = l.model;
 	histogram_data_.save(histogram_);
@@ -169,6 +171,13 @@ void Experiment::learn(const RawlogTrainingOptions& o)
 	r_.learned = describe(l.best) + " (of " + std::to_string(l.tried.size()) + " candidates, validated on " +
 				 std::to_string(l.validation_pairs) + " held-aside pairs: `learned.ini`)";
 	if (const std::string warning = poorLearningWarning(l); !warning.empty()) r_.learned += ". Warning: " + warning;
+	if (study_candidates_)
+	{
+		CandidateStudyOptions study;
+		study.rawlog = dataset_;
+		study.first = r_.training_until;  // the pairs the scan stage's accuracy scores
+		writeFileAtomically(out_ + "/candidates_on_route.csv", studyCandidates(l, start, study));
+	}
 	// The figures of paper Fig. 1, from the first training pair.
 	RawlogTrainingOptions one = o;
 	one.max_frames = 1;

@@ -5,6 +5,8 @@
 #include "../common/FactorySample.h"
 
 #include <fstream>
+#include <sstream>
+#include <vector>
 
 #include <mrpt/config/CConfigFile.h>
 
@@ -67,11 +69,32 @@ TEST(Experiment, AHyperbolicMirrorThroughTheMeiModelEndToEnd)
 	// (docs/results.md), so this fails if the model were not used.
 	const std::string dir = workDir("experiment_hyperbolic");
 	const RunResult r = run(app("omnirange-experiment") + " -q " + q(kSource + "/ini/factory-hyperbolic.ini") +
-							" -n 50 -o " + q(dir + "/report"));
+							" -n 50 -o " + q(dir + "/report") + " --study-candidates");
 	ASSERT_EQ(r.code, 0) << r.out;
 	const mrpt::config::CConfigFile m(dir + "/report/metrics.ini");
 	const auto v = [&](const std::string& k) { return m.read_double("metrics", k, -1, true); };
 	EXPECT_GT(v("truth_within_5cm"), 0.9);
+	// The study of every candidate: one row each, and the one learning chose
+	// reads on the rest of the route what the scan and accuracy stages
+	// measured for it on their own.
+	std::istringstream study(readText(dir + "/report/candidates_on_route.csv"));
+	std::string line;
+	std::getline(study, line);
+	ASSERT_NE(line.find(",chosen,route_within_2cm,route_within_5cm,"), std::string::npos) << line;
+	int rows = 0, chosen = 0;
+	for (; std::getline(study, line); ++rows)
+	{
+		std::vector<std::string> cells;
+		std::istringstream row(line);
+		for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+		ASSERT_EQ(cells.size(), 19u) << line;
+		if (cells[11] != "1") continue;
+		++chosen;
+		EXPECT_NEAR(std::stod(cells[13]), v("truth_within_5cm"), 1e-4) << line;
+	}
+	EXPECT_EQ(chosen, 1);
+	EXPECT_NE(readText(dir + "/report/report.md").find("of " + std::to_string(rows) + " candidates"), std::string::npos)
+		<< rows;
 	EXPECT_LT(v("accuracy_mean_abs"), 0.0809);  // the paper's factory, Table II
 	std::ifstream learned(dir + "/report/learned.ini");
 	const std::string text((std::istreambuf_iterator<char>(learned)), {});

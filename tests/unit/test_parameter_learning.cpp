@@ -202,6 +202,23 @@ TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsSc
 	const std::string frames = last_row.substr(last_row.rfind(',') + 1);
 	EXPECT_EQ(static_cast<std::size_t>(std::count(frames.begin(), frames.end(), ' ')) + 1,
 			  r.tried[3].frame_errors.size());
+	// Each frame's error has a part from rays that read nearer than the
+	// laser; the frames' errors average to the score (every frame has the
+	// laser's 181 rays); every histogram tried is kept, the winner's too.
+	for (const LearnedCandidate& c : r.tried)
+	{
+		ASSERT_EQ(c.frame_shortfalls.size(), c.frame_errors.size());
+		double mean = 0;
+		for (std::size_t f = 0; f < c.frame_errors.size(); ++f)
+		{
+			EXPECT_GE(c.frame_shortfalls[f], 0.0);
+			EXPECT_LE(c.frame_shortfalls[f], c.frame_errors[f] + 1e-12);
+			mean += c.frame_errors[f] / static_cast<double>(c.frame_errors.size());
+		}
+		EXPECT_NEAR(mean, c.score, 1e-9);
+		EXPECT_EQ(r.models.count(histogramKeyOf(c)), 1u);
+	}
+	EXPECT_EQ(r.models.at(histogramKeyOf(r.best)).floor.total(), r.model.floor.total());
 
 	lo.step_thresholds.clear();  // not tried
 	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 2u);

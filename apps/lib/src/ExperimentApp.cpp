@@ -14,9 +14,14 @@ ExperimentApp::Options ExperimentApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> output("o", "output", "report folder, overriding the ini's", false, "", "DIR", cmd);
 	TCLAP::ValueArg<int> frames("n", "max-frames", "simulate at most this many frames, overriding the ini", false, o.max_frames, "N", cmd);
 	TCLAP::ValueArg<std::string> robot("", "robot", "robot ini for the simulator, overriding the ini's", false, "", "INI", cmd);
+	TCLAP::SwitchArg study("", "study-candidates",
+						   "with learn = true, also score every candidate learning tried on the rest of the route "
+						   "against the truth, into candidates_on_route.csv in the report folder (a study; minutes more)",
+						   cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	o.ini = ini.getValue(), o.output = output.getValue(), o.max_frames = frames.getValue(), o.robot = robot.getValue();
+	o.study_candidates = study.getValue();
 	o.verbosity = verbosity.level();
 	return o;
 }
@@ -33,6 +38,7 @@ eval::Metrics ExperimentApp::run()
 	}
 	eval::Experiment e(config);
 	e.setMinLoggingLevel(o_.verbosity);
+	e.setCandidateStudy(o_.study_candidates);
 	const auto m = e.run();
 	e.logFmt(mrpt::system::LVL_INFO, "report: %s/report.md (accuracy: mean absolute difference %.4f m over %.0f pairs)",
 			 config.output.c_str(), m.at("accuracy_mean_abs"), m.at("accuracy_compared"));

@@ -65,6 +65,10 @@ class Experiment : public mrpt::system::COutputLogger
 	 * replaces the report folder with it when all succeeded; a failed stage
 	 * throws std::runtime_error naming it, leaving the report folder as it was. */
 	Metrics run();
+	/** With learning on, also score every candidate it tried on the rest of
+	 * the route against the truth, into `candidates_on_route.csv` in the
+	 * report folder (CandidateStudy.h; a minute or more per run). */
+	void setCandidateStudy(bool on) { study_candidates_ = on; }
 
    private:
 	void setFolder(const std::string& dir);
@@ -94,6 +98,7 @@ class Experiment : public mrpt::system::COutputLogger
 	std::vector<StampedPose> gt_path_;
 	ExperimentResults r_;
 	int stage_{0};
+	bool study_candidates_{false};
 };
 
 }  // namespace omnirange::eval

@@ -28,7 +28,7 @@ struct Validation
 	int block{0};  ///< scored with the histograms trained without this block
 };
 
-using TrainerKey = std::tuple<ColourSpace, int, double>;  // colour space, bins, light change
+using TrainerKey = HistogramKey;
 using Trainers = std::map<TrainerKey, HistogramTrainer>;
 
 /** How many pairs the options select: a pass that decodes no image. */
@@ -97,31 +97,38 @@ void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const 
 /** The candidate's error on the held-aside pairs, and per pair in
  * `frame_errors` (see LearnedCandidate::score). */
 double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& validation,
-			 std::vector<double>& frame_errors)
+			 std::vector<double>& frame_errors, std::vector<double>& frame_shortfalls)
 {
 	double sum = 0;
 	std::size_t n = 0;
 	const double max_range = rf[0].params().scanner.max_range, cap = kDefaultMaxDifference;
 	frame_errors.clear();
+	frame_shortfalls.clear();
 	for (const auto& v : validation)
 	{
-		const double sum_before = sum;
-		const std::size_t n_before = n;
+		double frame = 0, short_of_laser = 0;
+		std::size_t rays = 0;
 		const Rangefinder& by = rf[v.block];
 		const auto omni = by.toObservation(by.process(v.image), v.laser->timestamp);
 		for (const RangePair& p : pairScans(*v.laser, *omni, cap))
 		{
 			const bool hit = omni->getScanRangeValidity(p.omni_ray);
+			double e = 0;
 			switch (p.status)
 			{
-				case PairStatus::Compared: sum += std::min(cap, std::abs(p.difference())); break;
-				case PairStatus::TooDifferent: sum += cap; break;
-				case PairStatus::OmniRejected: sum += cap; break;  // no answer is as bad as a wrong one
-				case PairStatus::LaserBeyondMaxRange: sum += hit ? std::min(cap, max_range - p.omni) : 0.0; break;
+				case PairStatus::Compared: e = std::min(cap, std::abs(p.difference())); break;
+				case PairStatus::TooDifferent: e = cap; break;
+				case PairStatus::OmniRejected: e = cap; break;  // no answer is as bad as a wrong one
+				case PairStatus::LaserBeyondMaxRange: e = hit ? std::min(cap, max_range - p.omni) : 0.0; break;
 			}
-			++n;
+			const bool nearer = p.status == PairStatus::LaserBeyondMaxRange ||
+								((p.status == PairStatus::Compared || p.status == PairStatus::TooDifferent) &&
+								 p.difference() > 0);
+			frame += e, short_of_laser += nearer ? e : 0.0, ++rays;
 		}
-		frame_errors.push_back(n > n_before ? (sum - sum_before) / static_cast<double>(n - n_before) : cap);
+		sum += frame, n += rays;
+		frame_errors.push_back(rays ? frame / static_cast<double>(rays) : cap);
+		frame_shortfalls.push_back(rays ? short_of_laser / static_cast<double>(rays) : 0.0);
 	}
 	return n ? sum / n : cap;
 }
@@ -193,13 +200,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 
 	r.best.score = 1e9;
 	std::map<TrainerKey, std::vector<ColourModel>> models;  // per block
-	const auto paramsOf = [&](const LearnedCandidate& c) {
-		RangefinderParams p = start;
-		p.threshold = c.threshold, p.obstacle_ratio = c.obstacle_ratio, p.histogram_smoothing = c.smoothing;
-		p.scanner.filter.N = c.N, p.scanner.filter.K = c.K, p.scanner.boundary_model = c.boundary;
-		p.scanner.step_threshold = c.step_threshold;
-		return p;
-	};
+	const auto paramsOf = [&](const LearnedCandidate& c) { return withCandidate(start, c); };
 	const auto consider = [&](const LearnedCandidate& candidate) {
 		LearnedCandidate c = candidate;
 		const RangefinderParams p = paramsOf(c);
@@ -207,12 +208,12 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 		// the very errors learning must see.
 		RangefinderParams scored = p;
 		scored.walls.wall_fit = false;
-		const std::vector<ColourModel>& model = models.at(TrainerKey{c.space, c.bins, c.light_change});
+		const std::vector<ColourModel>& model = models.at(histogramKeyOf(c));
 		std::vector<Rangefinder> rf;
 		for (const ColourModel& m : model) rf.emplace_back(scored, m);
-		c.score = score(rf, validation, c.frame_errors);
+		c.score = score(rf, validation, c.frame_errors, c.frame_shortfalls);
 		r.tried.push_back(c);
-		if (c.score < r.best.score) r.best = c, r.params = p, r.model = model[0];
+		if (c.score < r.best.score) r.best = c, r.params = p;
 	};
 	// A filter window that the image cannot hold past the scan circle is no
 	// candidate: a user's camera may leave little room round it.
@@ -247,7 +248,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 				for (const double smoothing : lo.smoothings)
 					for (const auto& [N, K] : windows)
 						for (const BoundaryModel boundary : lo.boundary_models)
-							consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0, 0.0, {}});
+							consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0, 0.0, {}, {}});
 	}
 	// The brightness step on the grid's best: it is for what colour cannot
 	// see, and scoring it on every candidate would multiply the cost.
@@ -267,24 +268,35 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	{
 		r.overruled = r.best;
 		r.best = *chroma, r.params = paramsOf(*chroma);
-		r.model = models.at(TrainerKey{chroma->space, chroma->bins, chroma->light_change})[0];
 	}
 	r.training = o.training;
 	r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
-	const TrainerKey winner{r.best.space, r.best.bins, r.best.light_change};
-	if (by_block)  // every block's counts: what each block's score stood for
+	for (const auto& [key, per_block] : models)
 	{
-		r.model = without(winner, -1);
-		r.refit_pairs = r.training_pairs;
+		if (by_block)  // every block's counts: what each block's score stood for
+			r.models.emplace(key, without(key, -1));
+		else if (lo.refit)  // with the held-aside pairs' counts added
+		{
+			HistogramTrainer all = blocks[0].at(key);
+			all.merge(aside.at(key));
+			r.models.emplace(key, all.model());
+		}
+		else
+			r.models.emplace(key, per_block[0]);
 	}
-	else if (lo.refit)  // the winner's histogram with the held-aside pairs' counts added
-	{
-		HistogramTrainer all = blocks[0].at(winner);
-		all.merge(aside.at(winner));
-		r.model = all.model();
-		r.refit_pairs = r.training_pairs + set_aside;
-	}
+	r.model = r.models.at(histogramKeyOf(r.best));
+	if (by_block) r.refit_pairs = r.training_pairs;
+	else if (lo.refit) r.refit_pairs = r.training_pairs + set_aside;
 	return r;
+}
+
+RangefinderParams withCandidate(const RangefinderParams& start, const LearnedCandidate& c)
+{
+	RangefinderParams p = start;
+	p.threshold = c.threshold, p.obstacle_ratio = c.obstacle_ratio, p.histogram_smoothing = c.smoothing;
+	p.scanner.filter.N = c.N, p.scanner.filter.K = c.K, p.scanner.boundary_model = c.boundary;
+	p.scanner.step_threshold = c.step_threshold;
+	return p;
 }
 
 std::vector<PairRole> splitPairs(const LearningOptions& lo, int selected)
@@ -395,18 +407,27 @@ std::optional<LearnedCandidate> chromaOnTie(const std::vector<LearnedCandidate>&
 	return chroma;
 }
 
+std::string candidateColumns()
+{
+	return "colour_space,bins,light_change,threshold,obstacle_ratio,histogram_smoothing,N,K,boundary_model,step_threshold";
+}
+
+std::string candidateColumns(const LearnedCandidate& c)
+{
+	char row[300];
+	std::snprintf(row, sizeof row, "%s,%d,%g,%g,%g,%g,%d,%d,%s,%g", toString(c.space).c_str(), c.bins, c.light_change,
+				  c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K, toString(c.boundary).c_str(), c.step_threshold);
+	return row;
+}
+
 std::string candidatesCsv(const LearningResult& r)
 {
-	std::string csv =
-		"colour_space,bins,light_change,threshold,obstacle_ratio,histogram_smoothing,N,K,boundary_model,step_threshold,"
-		"score_m,frame_errors_m\n";
+	std::string csv = candidateColumns() + ",score_m,frame_errors_m\n";
 	for (const LearnedCandidate& c : r.tried)
 	{
 		char row[300];
-		std::snprintf(row, sizeof row, "%s,%d,%g,%g,%g,%g,%d,%d,%s,%g,%.6f,", toString(c.space).c_str(), c.bins,
-					  c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K, toString(c.boundary).c_str(),
-					  c.step_threshold, c.score);
-		csv += row;
+		std::snprintf(row, sizeof row, ",%.6f,", c.score);
+		csv += candidateColumns(c) + row;
 		for (std::size_t f = 0; f < c.frame_errors.size(); ++f)
 		{
 			std::snprintf(row, sizeof row, f ? " %.6f" : "%.6f", c.frame_errors[f]);

@@ -15,6 +15,7 @@ class ExperimentApp
 		std::string output;  ///< overrides the ini's report folder when not empty
 		int max_frames{-1};  ///< overrides the ini's when >= 0
 		std::string robot;  ///< overrides the ini's robot when not empty (e.g. the lossless camera)
+		bool study_candidates{false};  ///< Experiment::setCandidateStudy
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */

@@ -12,8 +12,10 @@
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/train/RawlogTraining.h>
 
+#include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace omnirange
@@ -105,12 +107,25 @@ struct LearnedCandidate
 	/** [m] the same error per held-aside image (in their order), for
 	 * telling a difference from the frames' noise. */
 	std::vector<double> frame_errors;
+	/** [m] of each frame's error, the part from rays where the omnicam
+	 * reads nearer than the laser (or a hit where the laser sees nothing):
+	 * what an obstacle above the laser's plane, which the laser cannot
+	 * see, costs a candidate that finds it. */
+	std::vector<double> frame_shortfalls;
 };
+
+/** A histogram's training: colour space, bins per channel, light change. */
+using HistogramKey = std::tuple<ColourSpace, int, double>;
+inline HistogramKey histogramKeyOf(const LearnedCandidate& c) { return {c.space, c.bins, c.light_change}; }
 
 struct LearningResult
 {
 	RangefinderParams params;  ///< the start parameters with the winner's values
 	ColourModel model;  ///< trained in the winner's colour space, bins and light change
+	/** Every histogram the candidates used, trained as `model` was (refitted
+	 * when it is): what any other candidate would have run with, for
+	 * studying how the runners-up do on the rest of a route. */
+	std::map<HistogramKey, ColourModel> models;
 	TrainingParams training;  ///< how `model` was trained
 	LearnedCandidate best;
 	/** The lowest score, when a tie went to CHROMA (chroma_on_tie) and
@@ -137,6 +152,9 @@ std::vector<PairRole> splitPairs(const LearningOptions& options, int selected);
 /** The block of each of `selected` pairs with the Blocks split: `blocks`
  * runs of consecutive pairs, as equal as they can be; all 0 otherwise. */
 std::vector<int> blockOfPairs(const LearningOptions& options, int selected);
+
+/** `start` with the candidate's values: the parameters it runs with. */
+RangefinderParams withCandidate(const RangefinderParams& start, const LearnedCandidate& c);
 
 /** Throws std::runtime_error when the rawlog has too few image/laser pairs
  * (at least one to train on and one to validate). */
@@ -177,6 +195,10 @@ std::optional<LearnedCandidate> chromaOnTie(const std::vector<LearnedCandidate>&
  * score [m] and its error on each held-aside frame (space-separated): to
  * see how near the runners-up came, and on which frames. */
 std::string candidatesCsv(const LearningResult& r);
+/** The CSV columns that say which candidate a row is, and one candidate's
+ * values for them (no line end). */
+std::string candidateColumns();
+std::string candidateColumns(const LearnedCandidate& c);
 
 /** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, smoothing 0, N 20, K 4, subpixel boundary, step 0.25". */
 std::string describe(const LearnedCandidate& c);

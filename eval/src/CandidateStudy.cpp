@@ -1,0 +1,105 @@
+#include "omnirange_eval/CandidateStudy.h"
+
+#include "omnirange_eval/TruthComparison.h"
+
+#include <omnirange/io/ObservationImage.h>
+#include <omnirange/io/RawlogProcessor.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationImage.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+
+#include <opencv2/core/utility.hpp>
+
+namespace omnirange::eval
+{
+namespace
+{
+using mrpt::obs::CObservation2DRangeScan;
+using mrpt::obs::CObservationImage;
+
+struct Frame
+{
+	cv::Mat image;
+	CObservation2DRangeScan::Ptr truth;
+};
+
+std::vector<Frame> framesAfter(const RangefinderParams& start, const CandidateStudyOptions& o, Progress* progress)
+{
+	std::vector<Frame> frames;
+	RawlogProcessor loop(o.rawlog);
+	int seen = 0;
+	loop.onPair<CObservationImage, CObservation2DRangeScan>(
+		o.omni_label, o.truth_label, o.max_dt,
+		[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& truth) {
+			if (seen++ >= o.first) frames.push_back({decodeImage(*image, start.camera), truth});
+		});
+	loop.run(progress);
+	if (seen == 0) throw std::runtime_error(loop.describeNoPair());
+	if (frames.empty())
+		throw std::runtime_error("all " + std::to_string(seen) + " image/truth pairs of '" + o.rawlog +
+								 "' come before the first one scored (" + std::to_string(o.first) + ")");
+	return frames;
+}
+
+std::string rowOf(const LearnedCandidate& c, bool chosen, const TruthStats& s)
+{
+	const TruthBand all = s.all();
+	const double rays = static_cast<double>(std::max<std::size_t>(1, all.rays));
+	const double open = static_cast<double>(std::max<std::size_t>(1, s.open_rays));
+	char row[300];
+	std::snprintf(row, sizeof row, ",%.6f,%d,%.4f,%.4f,%.5f,%.4f,%.4f,", c.score, chosen ? 1 : 0,
+				  all.within_2cm / rays, all.within_5cm / rays, all.meanAbs(), all.missed() / rays,
+				  s.false_obstacles / open);
+	std::string line = candidateColumns(c) + row;
+	for (std::size_t f = 0; f < c.frame_errors.size(); ++f)
+	{
+		std::snprintf(row, sizeof row, f ? " %.6f" : "%.6f", c.frame_errors[f]);
+		line += row;
+	}
+	line += ",";
+	for (std::size_t f = 0; f < c.frame_shortfalls.size(); ++f)
+	{
+		std::snprintf(row, sizeof row, f ? " %.6f" : "%.6f", c.frame_shortfalls[f]);
+		line += row;
+	}
+	return line + "\n";
+}
+}  // namespace
+
+std::string studyCandidates(const LearningResult& learned, const RangefinderParams& start,
+							const CandidateStudyOptions& o, Progress* progress)
+{
+	const std::vector<Frame> frames = framesAfter(start, o, progress);
+	const std::vector<LearnedCandidate>& tried = learned.tried;
+	std::vector<std::string> rows(tried.size());
+	const std::string chosen = candidateColumns(learned.best);
+	std::vector<std::exception_ptr> errors(tried.size());
+	cv::parallel_for_(cv::Range(0, static_cast<int>(tried.size())), [&](const cv::Range& r) {
+		for (int i = r.start; i < r.end; ++i) try
+			{
+				const LearnedCandidate& c = tried[i];
+				const Rangefinder rf(withCandidate(start, c), learned.models.at(histogramKeyOf(c)));
+				TruthStats s;
+				for (const Frame& f : frames)
+					s.add(*f.truth, *rf.toObservation(rf.process(f.image), f.truth->timestamp));
+				rows[i] = rowOf(c, candidateColumns(c) == chosen, s);
+			}
+			catch (...)
+			{
+				errors[i] = std::current_exception();
+			}
+	});
+	for (const std::exception_ptr& e : errors)
+		if (e) std::rethrow_exception(e);
+	std::string csv = candidateColumns() +
+					  ",score_m,chosen,route_within_2cm,route_within_5cm,route_mean_abs_m,route_missed,"
+					  "route_false_obstacles,frame_errors_m,frame_shortfalls_m\n";
+	for (const std::string& row : rows) csv += row;
+	return csv;
+}
+
+}  // namespace omnirange::eval
