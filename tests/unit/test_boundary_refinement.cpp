@@ -52,6 +52,24 @@ TEST(BoundaryRefinement, FindsABlurredStepToATenthOfAPixel)
 		}
 }
 
+TEST(BoundaryRefinement, AnEdgePastTheHitIsReachedUpToTheReach)
+{
+	// The classifier stopped two pixels early (the floor's last pixels were
+	// darkened, as at a wall's foot): the colours' edge is at 21.3, the hit 19.
+	std::vector<std::int32_t> pix(40);
+	std::iota(pix.begin(), pix.end(), 0);
+	EXPECT_NEAR(refineBoundary(scanline(21.3, 0).ptr<std::uint8_t>(), pix.data(), 40, 19), 21.3, 0.1);
+	// Blurred, the obstacle's reference pixels (22 to 24) start too near the
+	// edge to be pure: 21.1 measured.
+	const cv::Mat row = scanline(21.3, 0.7);
+	EXPECT_NEAR(refineBoundary(row.ptr<std::uint8_t>(), pix.data(), 40, 19), 21.3, 0.25);
+	EXPECT_DOUBLE_EQ(refineBoundary(row.ptr<std::uint8_t>(), pix.data(), 40, 19, 1.0), 20.0);  // the earlier limit
+	EXPECT_DOUBLE_EQ(refineBoundary(row.ptr<std::uint8_t>(), pix.data(), 40, 19, 0.0), 19.0);
+	// Never past what its mixed pixels can see: an edge 3.5 px on is placed 2.5 px on.
+	const cv::Mat far = scanline(22.5, 0);
+	EXPECT_LE(refineBoundary(far.ptr<std::uint8_t>(), pix.data(), 40, 19), 19 + kMaxBoundaryReach);
+}
+
 TEST(BoundaryRefinement, WithoutContrastOrRoomItKeepsTheMidpoint)
 {
 	std::vector<std::int32_t> pix(40);

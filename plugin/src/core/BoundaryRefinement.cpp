@@ -19,7 +19,8 @@ void meanColour(const std::uint8_t* bgr, const std::int32_t* pixels, int from, i
 }
 }  // namespace
 
-double refineBoundary(const std::uint8_t* bgr, const std::int32_t* pixels, int count, int hit, double min_contrast)
+double refineBoundary(const std::uint8_t* bgr, const std::int32_t* pixels, int count, int hit, double reach,
+					  double min_contrast)
 {
 	const double midpoint = hit - 0.5;
 	const int first_mixed = hit - kMixed, last_mixed = hit + kMixed;
@@ -38,8 +39,8 @@ double refineBoundary(const std::uint8_t* bgr, const std::int32_t* pixels, int c
 		const double t = ((px[0] - floor[0]) * d[0] + (px[1] - floor[1]) * d[1] + (px[2] - floor[2]) * d[2]) / d2;
 		edge += std::clamp(1.0 - t, 0.0, 1.0);
 	}
-	// Stay within a pixel or so of what the classifier said.
-	return std::clamp(edge, hit - 1.5, hit + 1.0);
+	// Stay near what the classifier said: up to `reach` past its hit.
+	return std::clamp(edge, hit - 1.5, hit + std::max(0.0, reach));
 }
 
 }  // namespace omnirange

@@ -79,6 +79,11 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 				 "midpoint: halfway between the last free and the first non-free pixel (the paper's); subpixel: "
 				 "the floor fractions of the mixed pixels around it, summed (docs/method.md)",
 				 [](P& p) -> auto& { return p.boundary_model; }, boundaryModelFromString)
+		.add("boundary_reach", "px",
+			 "with boundary_model = subpixel, how far past the first non-free pixel the edge may be placed, "
+			 "within [0, 2.5]; a floor darkened at its edge leaves its last pixels non-free (1: the limit "
+			 "before the eighth session)",
+			 [](P& p) -> auto& { return p.boundary_reach; })
 		.add("N", "px", "false-positive filter: pixels behind a candidate that must be non-free (>= 1)",
 			 [](P& p) -> auto& { return p.filter.N; })
 		.add("K", "px", "false-negative filter: longest free run negated inside that window (>= 0)",
@@ -97,6 +102,7 @@ void PolarScannerParams::validate(const OmniCameraModel& cam) const
 {
 	require(scanlines >= 2 && scanlines <= 36000, "scanlines must be within [2, 36000]");
 	require(filter.N >= 1 && filter.N <= 10000, "N (false-positive filter) must be within [1, 10000] px");
+	require(boundary_reach >= 0 && boundary_reach <= kMaxBoundaryReach, "boundary_reach must be within [0, 2.5] px");
 	require(filter.K >= 0 && filter.K <= 10000, "K (false-negative filter) must be within [0, 10000] px");
 	require(step_threshold >= 0 && step_threshold <= 5, "step_threshold must be within [0, 5]");
 	require(step_window >= 1 && step_window <= 100, "step_window must be within [1, 100] px");
@@ -224,7 +230,7 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 		ray.hit_rho = mid_rho_[line.first + hit];
 		if (p_.boundary_model == BoundaryModel::Subpixel && hit > 0)
 		{
-			ray.hit_rho = static_cast<float>(rhoAt(line, refineBoundary(data, pix, line.count, hit)) + p_.boundary_offset);
+			ray.hit_rho = static_cast<float>(rhoAt(line, refineBoundary(data, pix, line.count, hit, p_.boundary_reach)) + p_.boundary_offset);
 			range = static_cast<float>(camera_.distanceFromRho(ray.hit_rho));
 		}
 		// The first pixel is at the base: the obstacle may start inside it.

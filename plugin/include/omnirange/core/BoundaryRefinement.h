@@ -20,12 +20,19 @@ enum class BoundaryModel
 	Subpixel  ///< the floor fractions of the mixed pixels around it, summed
 };
 
+/** The farthest past the search's hit that refineBoundary can place the
+ * edge [px]: its mixed pixels reach two pixels beyond the hit. */
+inline constexpr double kMaxBoundaryReach = 2.5;
+
 /** Fractional pixel index where the floor ends along a scanline whose pixel
  * k is at `bgr + 3 * pixels[k]` (pixel k spans [k - 0.5, k + 0.5]); `hit` is
- * the search's hit, count the scanline's length. Falls back to the midpoint
- * (hit - 0.5) where floor and obstacle colours differ by less than
+ * the search's hit, count the scanline's length. The edge is kept within
+ * [hit - 1.5, hit + reach]: a floor darkened near its edge (a shadow at a
+ * wall's foot, vignetting, blur) leaves its last pixels non-free, and the
+ * edge the colours show can lie two pixels past the hit. Falls back to the
+ * midpoint (hit - 0.5) where floor and obstacle colours differ by less than
  * `min_contrast` grey levels or the scanline is too short around the hit. */
 double refineBoundary(const std::uint8_t* bgr, const std::int32_t* pixels, int count, int hit,
-					  double min_contrast = 12.0);
+					  double reach = kMaxBoundaryReach, double min_contrast = 12.0);
 
 }  // namespace omnirange

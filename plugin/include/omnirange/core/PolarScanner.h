@@ -65,6 +65,10 @@ struct PolarScannerParams
 	double boundary_offset{0.0};
 	/** How the edge is placed between pixels (BoundaryRefinement.h). */
 	BoundaryModel boundary_model{BoundaryModel::Subpixel};
+	/** [px] how far past the first non-free pixel the sub-pixel model may
+	 * place the edge (1: the fourth to seventh sessions' limit;
+	 * docs/results.md measures both). */
+	double boundary_reach{kMaxBoundaryReach};
 	HitFilterParams filter{};
 	/** [-] a brightness step of at least this (natural log of the ratio of
 	 * window means) before the colour's hit ends the ray there; 0: off. */
