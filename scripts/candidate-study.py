@@ -37,6 +37,7 @@ def load(path):
         for r in csv.DictReader(f):
             rows.append(dict(
                 key=tuple(r[k] for k in KEY), space=r["colour_space"], chosen=r["chosen"] == "1",
+                score=float(r["score_m"]),
                 w5=float(r["route_within_5cm"]),
                 errors=[float(x) for x in r["frame_errors_m"].split()],
                 shortfalls=[float(x) for x in r["frame_shortfalls_m"].split()]))
@@ -68,11 +69,13 @@ def weighted(r, w):
 
 def lowest(rows, w=1.0, tie=True):
     errs = {id(r): weighted(r, w) for r in rows}
-    low = min(rows, key=lambda r: statistics.mean(errs[id(r)]))
+    # Unweighted, learning's own score (a mean over every ray, not over frames).
+    score = (lambda r: r["score"]) if w == 1.0 else (lambda r: statistics.mean(errs[id(r)]))
+    low = min(rows, key=score)
     if tie and low["space"] != "CHROMA":
         chroma = [r for r in rows if r["space"] == "CHROMA"]
         if chroma:
-            c = min(chroma, key=lambda r: statistics.mean(errs[id(r)]))
+            c = min(chroma, key=score)
             if within_noise(errs[id(c)], errs[id(low)]):
                 return c
     return low
@@ -97,7 +100,7 @@ def main():
             "learned": next(r for r in rows if r["chosen"])["w5"],
             "lowest": low["w5"],
             "best": max(r["w5"] for r in rows),
-            "fixed": by_key[w][max(shared, key=lambda k: prior[k])]["w5"] if prior else float("nan"),
+            "fixed": by_key[w][max(sorted(shared), key=lambda k: prior[k])]["w5"] if prior else float("nan"),
             "tie+prior": max(tie_set, key=lambda r: prior.get(r["key"], -1))["w5"] if prior else float("nan"),
         }
         for x in (0.75, 0.5, 0.25):

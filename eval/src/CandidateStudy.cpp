@@ -45,6 +45,13 @@ std::vector<Frame> framesAfter(const RangefinderParams& start, const CandidateSt
 	return frames;
 }
 
+bool sameCandidate(const LearnedCandidate& a, const LearnedCandidate& b)
+{
+	return a.space == b.space && a.bins == b.bins && a.light_change == b.light_change && a.threshold == b.threshold &&
+		   a.obstacle_ratio == b.obstacle_ratio && a.smoothing == b.smoothing && a.N == b.N && a.K == b.K &&
+		   a.boundary == b.boundary && a.step_threshold == b.step_threshold;
+}
+
 std::string rowOf(const LearnedCandidate& c, bool chosen, const TruthStats& s)
 {
 	const TruthBand all = s.all();
@@ -73,10 +80,11 @@ std::string rowOf(const LearnedCandidate& c, bool chosen, const TruthStats& s)
 std::string studyCandidates(const LearningResult& learned, const RangefinderParams& start,
 							const CandidateStudyOptions& o, Progress* progress)
 {
+	if (start.floor_adaptation)
+		throw std::invalid_argument("the candidate study scans without floor adaptation; set floor_adaptation = false");
 	const std::vector<Frame> frames = framesAfter(start, o, progress);
 	const std::vector<LearnedCandidate>& tried = learned.tried;
 	std::vector<std::string> rows(tried.size());
-	const std::string chosen = candidateColumns(learned.best);
 	std::vector<std::exception_ptr> errors(tried.size());
 	cv::parallel_for_(cv::Range(0, static_cast<int>(tried.size())), [&](const cv::Range& r) {
 		for (int i = r.start; i < r.end; ++i) try
@@ -86,7 +94,7 @@ std::string studyCandidates(const LearningResult& learned, const RangefinderPara
 				TruthStats s;
 				for (const Frame& f : frames)
 					s.add(*f.truth, *rf.toObservation(rf.process(f.image), f.truth->timestamp));
-				rows[i] = rowOf(c, candidateColumns(c) == chosen, s);
+				rows[i] = rowOf(c, sameCandidate(c, learned.best), s);
 			}
 			catch (...)
 			{

@@ -164,11 +164,12 @@ TEST(Experiment, ACameraWhoseImageIsNotRadialEndToEnd)
 TEST(Experiment, BadIniFailsBeforeAnyStage)
 {
 	const std::string dir = workDir("experiment_bad");
-	const auto expectRejected = [&](const std::string& name, const std::string& edit, const std::string& what) {
+	const auto expectRejected = [&](const std::string& name, const std::string& edit, const std::string& what,
+									const std::string& options = "") {
 		const std::string ini = kSource + "/ini/" + name;  // beside the real ini, so relative paths resolve
 		const RunResult copy = run("sed " + edit + " " + q(kSource + "/ini/factory.ini") + " > " + q(ini));
 		ASSERT_EQ(copy.code, 0) << copy.out;
-		const RunResult r = run(app("omnirange-experiment") + " -q " + q(ini) + " -o " + q(dir + "/out"));
+		const RunResult r = run(app("omnirange-experiment") + " -q " + q(ini) + " -o " + q(dir + "/out") + options);
 		fs::remove(ini);
 		EXPECT_EQ(r.code, 1) << r.out;
 		EXPECT_NE(r.out.find(what), std::string::npos) << r.out;
@@ -179,6 +180,9 @@ TEST(Experiment, BadIniFailsBeforeAnyStage)
 	expectRejected("tmp-missing.ini", "'s/^world = .*/world = ..\\/worlds\\/nowhere.world/'", "nowhere.world");
 	expectRejected("tmp-impossible.ini", "'s/^train_every = .*/train_every = 0/'", "train_every must be >= 1");
 	expectRejected("tmp-theta.ini", "'s/^threshold = .*/threshold = 2/'", "threshold");
+	// Nothing to study without learning.
+	expectRejected("tmp-nolearn.ini", "'s/^learn = .*/learn = false/'", "--study-candidates needs learn = true",
+				   " --study-candidates");
 	const RunResult none = run(app("omnirange-experiment") + " -q " + q(dir + "/none.ini"));
 	EXPECT_EQ(none.code, 1);
 	EXPECT_NE(none.out.find("cannot open experiment ini"), std::string::npos) << none.out;

@@ -67,7 +67,13 @@ TEST(BoundaryRefinement, AnEdgePastTheHitIsReachedUpToTheReach)
 	EXPECT_DOUBLE_EQ(refineBoundary(row.ptr<std::uint8_t>(), pix.data(), 40, 19, 0.0), 19.0);
 	// Never past what its mixed pixels can see: an edge 3.5 px on is placed 2.5 px on.
 	const cv::Mat far = scanline(22.5, 0);
-	EXPECT_LE(refineBoundary(far.ptr<std::uint8_t>(), pix.data(), 40, 19), 19 + kMaxBoundaryReach);
+	EXPECT_NEAR(refineBoundary(far.ptr<std::uint8_t>(), pix.data(), 40, 19), 21.5, 1e-9);
+	// A reach beyond that is refused by the scanner's options.
+	PolarScannerParams p;
+	p.boundary_reach = 3.0;
+	EXPECT_THROW(p.validate(OmniCameraModel{CameraParams{}}), std::invalid_argument);
+	p.boundary_reach = kMaxBoundaryReach;
+	EXPECT_NO_THROW(p.validate(OmniCameraModel{CameraParams{}}));
 }
 
 TEST(BoundaryRefinement, WithoutContrastOrRoomItKeepsTheMidpoint)

@@ -36,6 +36,8 @@ eval::Metrics ExperimentApp::run()
 		if (!std::filesystem::is_regular_file(o_.robot)) throw std::runtime_error("cannot open robot ini '" + o_.robot + "'");
 		config.robot = o_.robot;
 	}
+	if (o_.study_candidates && !config.learn)
+		throw std::runtime_error("--study-candidates needs learn = true in '" + o_.ini + "': it studies learning's candidates");
 	eval::Experiment e(config);
 	e.setMinLoggingLevel(o_.verbosity);
 	e.setCandidateStudy(o_.study_candidates);

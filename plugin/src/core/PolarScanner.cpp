@@ -80,7 +80,8 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 				 "the floor fractions of the mixed pixels around it, summed (docs/method.md)",
 				 [](P& p) -> auto& { return p.boundary_model; }, boundaryModelFromString)
 		.add("boundary_reach", "px",
-			 "with boundary_model = subpixel, how far past the first non-free pixel the edge may be placed, "
+			 "with boundary_model = subpixel, how far past the centre of the first non-free pixel the edge may "
+			 "be placed, "
 			 "within [0, 2.5]; a floor darkened at its edge leaves its last pixels non-free (1: the limit "
 			 "before the eighth session)",
 			 [](P& p) -> auto& { return p.boundary_reach; })
