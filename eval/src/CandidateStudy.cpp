@@ -61,19 +61,7 @@ std::string rowOf(const LearnedCandidate& c, bool chosen, const TruthStats& s)
 	std::snprintf(row, sizeof row, ",%.6f,%d,%.4f,%.4f,%.5f,%.4f,%.4f,", c.score, chosen ? 1 : 0,
 				  all.within_2cm / rays, all.within_5cm / rays, all.meanAbs(), all.missed() / rays,
 				  s.false_obstacles / open);
-	std::string line = candidateColumns(c) + row;
-	for (std::size_t f = 0; f < c.frame_errors.size(); ++f)
-	{
-		std::snprintf(row, sizeof row, f ? " %.6f" : "%.6f", c.frame_errors[f]);
-		line += row;
-	}
-	line += ",";
-	for (std::size_t f = 0; f < c.frame_shortfalls.size(); ++f)
-	{
-		std::snprintf(row, sizeof row, f ? " %.6f" : "%.6f", c.frame_shortfalls[f]);
-		line += row;
-	}
-	return line + "\n";
+	return candidateColumns(c) + row + spaceSeparated(c.frame_errors) + "," + spaceSeparated(c.frame_shortfalls) + "\n";
 }
 }  // namespace
 

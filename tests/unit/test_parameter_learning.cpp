@@ -368,3 +368,32 @@ TEST(ParameterLearning, LearningKeepsTheLowestScoreWhenChromaIsClearlyBehind)
 	twin.space = ColourSpace::RGB, twin.frame_errors[0] -= 0.001, twin.frame_errors[1] += 0.0005;
 	EXPECT_TRUE(chromaOnTie({twin, chroma}, twin));
 }
+
+TEST(ParameterLearning, EachLaserRaysErrorAndWhetherTheOmnicamReadNearer)
+{
+	const auto pair = [](double laser, double omni, PairStatus status) {
+		return RangePair{0, 0, 0.0, laser, omni, status};
+	};
+	const double max_range = 3.8;
+	// Both see a boundary: the omnicam 0.5 m short of the laser, then 0.3 m past it.
+	RayError e = learningError(pair(2.0, 1.5, PairStatus::Compared), true, max_range);
+	EXPECT_NEAR(e.error, 0.5, 1e-12);
+	EXPECT_TRUE(e.nearer);
+	e = learningError(pair(1.5, 1.8, PairStatus::Compared), true, max_range);
+	EXPECT_NEAR(e.error, 0.3, 1e-12);
+	EXPECT_FALSE(e.nearer);
+	// More than 1.25 m apart: capped, on either side.
+	e = learningError(pair(3.5, 1.0, PairStatus::TooDifferent), true, max_range);
+	EXPECT_EQ(e.error, 1.25);
+	EXPECT_TRUE(e.nearer);
+	EXPECT_FALSE(learningError(pair(1.0, 3.8, PairStatus::TooDifferent), false, max_range).nearer);
+	// The laser sees nothing within range: a hit at 3.0 m falls 0.8 m short; no hit costs nothing.
+	e = learningError(pair(10.0, 3.0, PairStatus::LaserBeyondMaxRange), true, max_range);
+	EXPECT_NEAR(e.error, 0.8, 1e-12);
+	EXPECT_TRUE(e.nearer);
+	EXPECT_EQ(learningError(pair(10.0, 3.8, PairStatus::LaserBeyondMaxRange), false, max_range).error, 0.0);
+	// A rejected ray costs the cap and is not a reading nearer than the laser.
+	e = learningError(pair(2.0, 0.4, PairStatus::OmniRejected), false, max_range);
+	EXPECT_EQ(e.error, 1.25);
+	EXPECT_FALSE(e.nearer);
+}

@@ -112,19 +112,8 @@ double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& 
 		const auto omni = by.toObservation(by.process(v.image), v.laser->timestamp);
 		for (const RangePair& p : pairScans(*v.laser, *omni, cap))
 		{
-			const bool hit = omni->getScanRangeValidity(p.omni_ray);
-			double e = 0;
-			switch (p.status)
-			{
-				case PairStatus::Compared: e = std::min(cap, std::abs(p.difference())); break;
-				case PairStatus::TooDifferent: e = cap; break;
-				case PairStatus::OmniRejected: e = cap; break;  // no answer is as bad as a wrong one
-				case PairStatus::LaserBeyondMaxRange: e = hit ? std::min(cap, max_range - p.omni) : 0.0; break;
-			}
-			const bool nearer = p.status == PairStatus::LaserBeyondMaxRange ||
-								((p.status == PairStatus::Compared || p.status == PairStatus::TooDifferent) &&
-								 p.difference() > 0);
-			frame += e, short_of_laser += nearer ? e : 0.0, ++rays;
+			const RayError e = learningError(p, omni->getScanRangeValidity(p.omni_ray), max_range);
+			frame += e.error, short_of_laser += e.nearer ? e.error : 0.0, ++rays;
 		}
 		sum += frame, n += rays;
 		frame_errors.push_back(rays ? frame / static_cast<double>(rays) : cap);
@@ -200,10 +189,9 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 
 	r.best.score = 1e9;
 	std::map<TrainerKey, std::vector<ColourModel>> models;  // per block
-	const auto paramsOf = [&](const LearnedCandidate& c) { return withCandidate(start, c); };
 	const auto consider = [&](const LearnedCandidate& candidate) {
 		LearnedCandidate c = candidate;
-		const RangefinderParams p = paramsOf(c);
+		const RangefinderParams p = withCandidate(start, c);
 		// Scored on the classifier's own ranges: the wall fit smooths over
 		// the very errors learning must see.
 		RangefinderParams scored = p;
@@ -267,7 +255,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (const auto chroma = lo.chroma_on_tie ? chromaOnTie(r.tried, r.best) : std::nullopt)
 	{
 		r.overruled = r.best;
-		r.best = *chroma, r.params = paramsOf(*chroma);
+		r.best = *chroma, r.params = withCandidate(start, *chroma);
 	}
 	r.training = o.training;
 	r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
@@ -288,6 +276,19 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	if (by_block) r.refit_pairs = r.training_pairs;
 	else if (lo.refit) r.refit_pairs = r.training_pairs + set_aside;
 	return r;
+}
+
+RayError learningError(const RangePair& p, bool hit, double max_range)
+{
+	const double cap = kDefaultMaxDifference;
+	switch (p.status)
+	{
+		case PairStatus::Compared: return {std::min(cap, std::abs(p.difference())), p.difference() > 0};
+		case PairStatus::TooDifferent: return {cap, p.difference() > 0};
+		case PairStatus::OmniRejected: return {cap, false};  // no answer is as bad as a wrong one
+		case PairStatus::LaserBeyondMaxRange: return {hit ? std::min(cap, max_range - p.omni) : 0.0, true};
+	}
+	return {};
 }
 
 RangefinderParams withCandidate(const RangefinderParams& start, const LearnedCandidate& c)
@@ -420,20 +421,26 @@ std::string candidateColumns(const LearnedCandidate& c)
 	return row;
 }
 
+std::string spaceSeparated(const std::vector<double>& values)
+{
+	std::string cell;
+	for (std::size_t i = 0; i < values.size(); ++i)
+	{
+		char v[32];
+		std::snprintf(v, sizeof v, i ? " %.6f" : "%.6f", values[i]);
+		cell += v;
+	}
+	return cell;
+}
+
 std::string candidatesCsv(const LearningResult& r)
 {
 	std::string csv = candidateColumns() + ",score_m,frame_errors_m\n";
 	for (const LearnedCandidate& c : r.tried)
 	{
-		char row[300];
+		char row[40];
 		std::snprintf(row, sizeof row, ",%.6f,", c.score);
-		csv += candidateColumns(c) + row;
-		for (std::size_t f = 0; f < c.frame_errors.size(); ++f)
-		{
-			std::snprintf(row, sizeof row, f ? " %.6f" : "%.6f", c.frame_errors[f]);
-			csv += row;
-		}
-		csv += "\n";
+		csv += candidateColumns(c) + row + spaceSeparated(c.frame_errors) + "\n";
 	}
 	return csv;
 }

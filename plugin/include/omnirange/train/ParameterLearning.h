@@ -10,6 +10,7 @@
 // user's training robot has.
 
 #include <omnirange/core/Rangefinder.h>
+#include <omnirange/train/LaserComparison.h>
 #include <omnirange/train/RawlogTraining.h>
 
 #include <map>
@@ -153,6 +154,16 @@ std::vector<PairRole> splitPairs(const LearningOptions& options, int selected);
  * runs of consecutive pairs, as equal as they can be; all 0 otherwise. */
 std::vector<int> blockOfPairs(const LearningOptions& options, int selected);
 
+/** One laser ray's part of LearnedCandidate::score, and whether the omnicam
+ * read nearer than the laser there (LearnedCandidate::frame_shortfalls).
+ * `hit`: the omnicam ray has a hit. */
+struct RayError
+{
+	double error{0};  ///< [m]
+	bool nearer{false};
+};
+RayError learningError(const RangePair& p, bool hit, double max_range);
+
 /** `start` with the candidate's values: the parameters it runs with. */
 RangefinderParams withCandidate(const RangefinderParams& start, const LearnedCandidate& c);
 
@@ -199,6 +210,8 @@ std::string candidatesCsv(const LearningResult& r);
  * values for them (no line end). */
 std::string candidateColumns();
 std::string candidateColumns(const LearnedCandidate& c);
+/** "0.012345 0.020000 ...": per-frame figures [m] in one CSV cell. */
+std::string spaceSeparated(const std::vector<double>& values);
 
 /** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, smoothing 0, N 20, K 4, subpixel boundary, step 0.25". */
 std::string describe(const LearnedCandidate& c);
