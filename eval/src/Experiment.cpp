@@ -226,6 +226,7 @@ void Experiment::mapWithGroundTruth()
 {
 	truth_ = loadGrid(out_ + "/dataset/" + c_.name + "_truemap.gridmap.gz");
 	gt_path_ = groundTruthPath(dataset_, kGroundTruthLabel);
+	r_.odometry_path = comparePaths(odometryPath(dataset_, kOdometryLabel), gt_path_);
 	std::vector<std::pair<std::string, cv::Mat>> figures{{"true map", paperStyle(truth_)}};
 	for (auto& s : r_.sensors)
 	{

@@ -29,6 +29,9 @@ void writeMapsTable(std::ostream& o, const ExperimentResults& r)
 		  << " | " << fmt("%.3f", g.recall) << " | " << fmt("%.3f m", g.thickness) << " | " << fmt("%.3f m", p.ate_rmse)
 		  << " | " << fmt("%.3f m", p.final_xy) << ", " << fmt("%.1f deg", p.final_yaw * 180 / M_PI) << " |\n";
 	};
+	const auto& odo = r.odometry_path;
+	o << "| odometry alone | - | - | - | - | - | " << fmt("%.3f m", odo.ate_rmse) << " | " << fmt("%.3f m", odo.final_xy)
+	  << ", " << fmt("%.1f deg", odo.final_yaw * 180 / M_PI) << " |\n";
 	for (const auto& s : r.sensors) slamRow("icp-slam", s, s.icp, s.icp_path);
 	for (const auto& s : r.sensors)
 		if (!s.rbpf_ini.empty()) slamRow("rbpf-slam", s, s.rbpf, s.rbpf_path);
@@ -74,6 +77,9 @@ Metrics metricsOf(const ExperimentResults& r)
 		m["truth_false_obstacles"] =
 			double(r.accuracy.truth.false_obstacles) / std::max<std::size_t>(1, r.accuracy.truth.open_rays);
 	}
+	m["odometry_ate_rmse"] = r.odometry_path.ate_rmse;
+	m["odometry_final_xy"] = r.odometry_path.final_xy;
+	m["odometry_final_yaw"] = r.odometry_path.final_yaw;
 	for (const auto& s : r.sensors)
 	{
 		const auto maps = [&](const std::string& mode, const MapMetrics& g) {

@@ -3,6 +3,7 @@
 #include <omnirange/io/RawlogProcessor.h>
 
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationRobotPose.h>
 #include <mrpt/poses/CPose3DPDF.h>
 #include <mrpt/serialization/CArchive.h>
@@ -23,6 +24,19 @@ std::vector<StampedPose> groundTruthPath(const std::string& rawlog, const std::s
 	});
 	loop.run();
 	if (out.empty()) throw std::runtime_error("no " + label + " pose in '" + rawlog + "' (" + loop.describeLabels() + ")");
+	return out;
+}
+
+std::vector<StampedPose> odometryPath(const std::string& rawlog, const std::string& label)
+{
+	using mrpt::obs::CObservationOdometry;
+	RawlogProcessor loop(rawlog);
+	std::vector<StampedPose> out;
+	loop.on<CObservationOdometry>(label, [&](const CObservationOdometry::Ptr& odo) {
+		out.push_back({mrpt::Clock::toDouble(odo->timestamp), odo->odometry});
+	});
+	loop.run();
+	if (out.empty()) throw std::runtime_error("no " + label + " odometry in '" + rawlog + "' (" + loop.describeLabels() + ")");
 	return out;
 }
 

@@ -276,7 +276,9 @@ TEST(ColourBinner, ADarkerBinKeepsTheBinAtGainOneAndMovesOnlyBrightness)
 					ASSERT_EQ(dim[c], lit[c]);  // hue and saturation, chromaticity: unchanged
 			}
 			if (space == ColourSpace::RGB)  // the bin's centre times 0.6, in bins
+			{
 				for (int c = 0; c < 3; ++c) ASSERT_EQ(dim[c], int((lit[c] + 0.5) * 0.6));
+			}
 		}
 		// A colour and the same colour in 60 % of the light (away from bin edges).
 		const std::uint8_t lit[3] = {167, 187, 206}, dim[3] = {100, 112, 124};

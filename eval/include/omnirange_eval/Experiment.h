@@ -48,6 +48,7 @@ struct ExperimentResults
 	double omni_hit_fraction{0};
 	AccuracyResult accuracy;
 	std::vector<SensorMaps> sensors;  ///< the laser, then the omnicam
+	PathError odometry_path;  ///< dead reckoning alone: what a scan matcher must beat
 	bool has_check_region{false};  ///< the ini named one: the sensors' *_check_marked are measured
 	double seconds{0};
 };

@@ -1,6 +1,6 @@
 #pragma once
-// Robot paths: ground truth from a rawlog, keyframes estimated by icp-slam,
-// and the absolute trajectory error between them.
+// Robot paths: ground truth and odometry from a rawlog, keyframes estimated by
+// a SLAM engine, and the absolute trajectory error between them.
 
 #include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/poses/CPose2D.h>
@@ -18,6 +18,10 @@ struct StampedPose
 
 /** Every GT (CObservationRobotPose) pose of a rawlog, in time order. */
 std::vector<StampedPose> groundTruthPath(const std::string& rawlog, const std::string& label);
+
+/** Every odometry (CObservationOdometry) pose of a rawlog, in time order: the
+ * path dead reckoning alone gives, which a scan matcher should improve on. */
+std::vector<StampedPose> odometryPath(const std::string& rawlog, const std::string& label);
 
 /** The pose of `path` at time t (the nearest sample). */
 mrpt::poses::CPose2D poseAt(const std::vector<StampedPose>& path, double t);
