@@ -3,6 +3,7 @@
 #include "omnirange_eval/CandidateStudy.h"
 #include "omnirange_eval/ExternalProgram.h"
 #include "omnirange_eval/Figures.h"
+#include "omnirange_eval/IcpSlamIni.h"
 #include "omnirange_eval/SensoryFrameFormat.h"
 
 #include <omnirange/io/AtomicWrite.h>
@@ -246,6 +247,9 @@ void Experiment::runIcpSlam()
 	std::vector<std::pair<std::string, cv::Mat>> figures{{"true map", paperStyle(truth_)}};
 	for (auto& s : r_.sensors)
 	{
+		for (const auto& k : icpKeysMrptIgnores(s.icp_ini))
+			MRPT_LOG_WARN_STREAM("icp-slam ini '" << s.icp_ini << "': [ICP] " << k
+												  << " is not read by MRPT 2.5 and keeps its default");
 		const std::string only = "only_" + s.tag + ".rawlog";
 		runProgram({"rawlog-edit", "--keep-label", s.label + "," + kOdometryLabel, "-i", "scanned.rawlog", "-o", only,
 					"-w"},

@@ -6,11 +6,9 @@
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/slam/CICP.h>
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -80,32 +78,6 @@ TEST(IniFiles, EveryKeyHasAUnitComment)
 			else if (l.empty() || l[0] == '[')
 				has_unit = false;  // a unit comment covers only the keys right below it
 		}
-	}
-}
-
-TEST(IniFiles, IcpSlamReadsEveryKeyOfTheIcpSections)
-{
-	// MRPT reads only the keys it knows and ignores the rest without a word:
-	// an option under an old name (MRPT's own templates still carry
-	// onlyClosestCorrespondences, which 2.5 does not read) silently keeps its
-	// default. The keys ICP's options write are the keys it reads, but for
-	// the angle: written in radians as thresholdAng, read in degrees as
-	// thresholdAng_DEG.
-	mrpt::config::CConfigFileMemory known_ini;
-	mrpt::slam::CICP::TConfigParams().saveToConfigFile(known_ini, "ICP");
-	std::vector<std::string> known;
-	known_ini.getAllKeys("ICP", known);
-	for (auto& k : known) k.erase(k.find_last_not_of(' ') + 1);  // saved keys are padded
-	known.push_back("thresholdAng_DEG");
-	ASSERT_GT(known.size(), 10u);
-	for (const std::string name : {"icp-slam-laser.ini", "icp-slam-omniscan.ini"})
-	{
-		const mrpt::config::CConfigFile ini(kSource + "/ini/" + name);
-		std::vector<std::string> keys;
-		ini.getAllKeys("ICP", keys);
-		EXPECT_GT(keys.size(), 5u) << name;
-		for (const auto& k : keys)
-			EXPECT_NE(std::find(known.begin(), known.end(), k), known.end()) << name << ": [ICP] " << k << " is not read by MRPT";
 	}
 }
 

@@ -1,0 +1,17 @@
+#pragma once
+// icp-slam's configuration as MRPT 2.5 reads it. MRPT reads only the keys it
+// knows and ignores the rest without a word, so an option under an old name
+// (MRPT's own icp-slam templates still write onlyClosestCorrespondences,
+// which 2.5 does not read) silently keeps its default.
+
+#include <string>
+#include <vector>
+
+namespace omnirange::eval
+{
+/** The keys of `section` in the ini file `file` that MRPT's ICP options
+ * (mrpt::slam::CICP::TConfigParams) do not read, sorted; throws if the file
+ * cannot be read. */
+std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::string& section = "ICP");
+
+}  // namespace omnirange::eval

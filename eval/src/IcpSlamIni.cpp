@@ -1,0 +1,34 @@
+#include "omnirange_eval/IcpSlamIni.h"
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/slam/CICP.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+namespace omnirange::eval
+{
+std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::string& section)
+{
+	if (!std::filesystem::is_regular_file(file)) throw std::runtime_error("cannot read icp-slam ini '" + file + "'");
+	// The keys the options write are the keys they read, but for the angle:
+	// written in radians as thresholdAng, read in degrees as thresholdAng_DEG.
+	mrpt::config::CConfigFileMemory written;
+	mrpt::slam::CICP::TConfigParams().saveToConfigFile(written, section);
+	std::vector<std::string> known;
+	written.getAllKeys(section, known);
+	for (auto& k : known) k.erase(k.find_last_not_of(' ') + 1);  // written keys are padded
+	known.push_back("thresholdAng_DEG");
+
+	const mrpt::config::CConfigFile ini(file);
+	std::vector<std::string> keys, ignored;
+	ini.getAllKeys(section, keys);
+	for (const auto& k : keys)
+		if (std::find(known.begin(), known.end(), k) == known.end()) ignored.push_back(k);
+	std::sort(ignored.begin(), ignored.end());
+	return ignored;
+}
+
+}  // namespace omnirange::eval
