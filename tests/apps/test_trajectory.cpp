@@ -58,6 +58,7 @@ TEST(Trajectory, OdometryOffByARigidMotionHasNoError)
 	EXPECT_NEAR(e.ate_rmse, 0, 1e-9);
 	EXPECT_NEAR(e.final_xy, 0, 1e-9);
 	EXPECT_NEAR(e.final_yaw, 0, 1e-9);
+	std::filesystem::remove(file);
 }
 
 TEST(Trajectory, OdometryThatOverCountsDistanceHasItsKnownError)
@@ -71,6 +72,7 @@ TEST(Trajectory, OdometryThatOverCountsDistanceHasItsKnownError)
 	EXPECT_EQ(e.poses, 11);
 	EXPECT_NEAR(e.ate_rmse, 0.1 * std::sqrt(10.0), 1e-6);
 	EXPECT_NEAR(e.final_xy, 1.0, 1e-6);
+	std::filesystem::remove(file);
 }
 
 TEST(Trajectory, ARawlogWithoutOdometryIsRefusedByName)
@@ -85,4 +87,5 @@ TEST(Trajectory, ARawlogWithoutOdometryIsRefusedByName)
 	{
 		EXPECT_NE(std::string(e.what()).find("no WHEELS odometry"), std::string::npos) << e.what();
 	}
+	std::filesystem::remove(file);
 }
