@@ -9,6 +9,20 @@
 
 using omnirange::eval::icpKeysMrptIgnores;
 
+namespace
+{
+/** An ini file in the test's temporary folder, removed when it goes. */
+struct TempIni
+{
+	explicit TempIni(const std::string& text) : path(testing::TempDir() + "omnirange_icp_keys.ini")
+	{
+		std::ofstream(path) << text;
+	}
+	~TempIni() { std::filesystem::remove(path); }
+	std::string path;
+};
+}  // namespace
+
 TEST(IcpSlamIni, TheShippedInisHaveNoKeyMrptIgnores)
 {
 	const std::string ini = OMNIRANGE_SOURCE_DIR "/ini/";
@@ -16,13 +30,21 @@ TEST(IcpSlamIni, TheShippedInisHaveNoKeyMrptIgnores)
 		EXPECT_EQ(icpKeysMrptIgnores(ini + name), std::vector<std::string>{}) << name;
 }
 
-TEST(IcpSlamIni, AnOldNameAndATypoAreFoundAndKnownKeysAreNot)
+TEST(IcpSlamIni, OldNamesAndATypoAreFoundAndKnownKeysAreNot)
 {
-	const auto file = (std::filesystem::temp_directory_path() / "omnirange_icp_keys.ini").string();
-	std::ofstream(file) << "[ICP]\nthresholdDist = 0.5\nthresholdAng_DEG = 7\nonlyUniqueRobust = true\n"
-						   "onlyClosestCorrespondences = true\nmaxIteration = 80\n[MappingApplication]\nfoo = 1\n";
-	EXPECT_EQ(icpKeysMrptIgnores(file), (std::vector<std::string>{"maxIteration", "onlyClosestCorrespondences"}));
-	std::filesystem::remove(file);
+	// The angles are read in degrees (_DEG); under their radian names, as
+	// MRPT writes them, they are not read at all.
+	const TempIni ini(
+		"[ICP]\nthresholdDist = 0.5\nthresholdAng_DEG = 7\nransac_fuseMaxDiffPhi_DEG = 0.1\nonlyUniqueRobust = true\n"
+		"onlyClosestCorrespondences = true\nmaxIteration = 80\nthresholdAng = 0.1\n[MappingApplication]\nfoo = 1\n");
+	EXPECT_EQ(icpKeysMrptIgnores(ini.path),
+			  (std::vector<std::string>{"maxIteration", "onlyClosestCorrespondences", "thresholdAng"}));
+}
+
+TEST(IcpSlamIni, AnIniWithoutTheSectionIsAnError)
+{
+	const TempIni ini("[MappingApplication]\ninsertionLinDistance = 0.5\n");
+	EXPECT_THROW(icpKeysMrptIgnores(ini.path), std::runtime_error);
 }
 
 TEST(IcpSlamIni, AMissingFileIsAnErrorNamingIt)

@@ -49,9 +49,10 @@ TEST(Experiment, SmallFactoryRunEndToEnd)
 	EXPECT_LT(v("icp_OMNISCAN_ate_rmse"), 1.0);
 	EXPECT_GE(v("icp_LASER_keyframes"), 5);
 	// Dead reckoning alone, the baseline a matcher must beat: the simulated
-	// wheels drift, so it is off by something.
-	EXPECT_GT(v("odometry_ate_rmse"), 0.0);
-	EXPECT_GT(v("odometry_final_xy"), 0.0);
+	// wheels drift (0.31 m off at the end, measured), and the laser's icp-slam
+	// path beats them (0.010 against 0.026 m ATE, measured).
+	EXPECT_GT(v("odometry_final_xy"), 0.1);
+	EXPECT_GT(v("odometry_ate_rmse"), v("icp_LASER_ate_rmse"));
 	// rbpf-slam ran for both sensors on the frames MRPT's other format holds.
 	// Its inis fix the particle filter's seed, so a run repeats; over seeds 1
 	// to 5 and three unseeded runs the laser's ATE read 0.023 to 0.043 m and

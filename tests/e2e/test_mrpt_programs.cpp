@@ -1,6 +1,7 @@
 // The produced data in MRPT's own programs: rawlog-edit counts the scans,
-// icp-slam builds a map and a path from them, rawlog-grabber runs the sensor
-// plugin.
+// icp-slam builds a map and a path from them (and follows the odometry down a
+// synthetic featureless corridor with the omnicam's ini), rawlog-grabber runs
+// the sensor plugin.
 #include "Programs.h"
 
 #include <omnirange_eval/SensoryFrameFormat.h>

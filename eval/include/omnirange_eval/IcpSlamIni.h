@@ -11,7 +11,7 @@ namespace omnirange::eval
 {
 /** The keys of `section` in the ini file `file` that MRPT's ICP options
  * (mrpt::slam::CICP::TConfigParams) do not read, sorted; throws if the file
- * cannot be read. */
+ * cannot be read or has no such section. */
 std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::string& section = "ICP");
 
 }  // namespace omnirange::eval

@@ -26,7 +26,7 @@ std::vector<StampedPose> odometryPath(const std::string& rawlog, const std::stri
 /** The pose of `path` at time t (the nearest sample). */
 mrpt::poses::CPose2D poseAt(const std::vector<StampedPose>& path, double t);
 
-/** Keyframes of an icp-slam simplemap: estimated pose, time of its first observation. */
+/** Keyframes of a SLAM engine's simplemap: estimated pose, time of its first observation. */
 std::vector<StampedPose> simplemapKeyframes(const mrpt::maps::CSimpleMap& map);
 mrpt::maps::CSimpleMap loadSimplemap(const std::string& file);
 
