@@ -28,8 +28,7 @@ struct Validation
 	int block{0};  ///< scored with the histograms trained without this block
 };
 
-using TrainerKey = HistogramKey;
-using Trainers = std::map<TrainerKey, HistogramTrainer>;
+using Trainers = std::map<HistogramKey, HistogramTrainer>;
 
 /** How many pairs the options select: a pass that decodes no image. */
 int countSelected(const RawlogTrainingOptions& o)
@@ -155,8 +154,8 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 				TrainingParams tp = o.training;
 				tp.space = space, tp.bins = b, tp.light_change = light;
 				const HistogramTrainer t(camera, start.sensor_pose, base_range, start.scanner.max_range, tp);
-				trainers.emplace(TrainerKey{space, b, light}, t);
-				if (lo.refit && !by_block) aside.emplace(TrainerKey{space, b, light}, t);
+				trainers.emplace(HistogramKey{space, b, light}, t);
+				if (lo.refit && !by_block) aside.emplace(HistogramKey{space, b, light}, t);
 			}
 	// One set of trainers per block (one block but with the Blocks split).
 	const int selected = countSelected(o);
@@ -176,7 +175,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 														: std::string("interleaved")) +
 				   light;
 	// Each key's histogram without each block (with one block: the training pairs').
-	const auto without = [&](const TrainerKey& key, int skipped) {
+	const auto without = [&](const HistogramKey& key, int skipped) {
 		std::optional<HistogramTrainer> t;
 		for (int b = 0; b < n_blocks; ++b)
 			if (b != skipped || n_blocks == 1)
@@ -188,7 +187,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	};
 
 	r.best.score = 1e9;
-	std::map<TrainerKey, std::vector<ColourModel>> models;  // per block
+	std::map<HistogramKey, std::vector<ColourModel>> models;  // per block
 	const auto consider = [&](const LearnedCandidate& candidate) {
 		LearnedCandidate c = candidate;
 		const RangefinderParams p = withCandidate(start, c);
