@@ -66,6 +66,13 @@ TEST(AppClasses, TrainScanAndAccuracyOfTheFactorySample)
 	EXPECT_EQ(scanned.images, 20u);
 	EXPECT_EQ(scanned.rays, 20u * 360);
 	EXPECT_GT(scanned.hits, scanned.rays / 4);  // much of the factory is open beyond 3.8 m
+	// Every ray is a hit or one of the three kinds of miss; open floor beyond
+	// 3.8 m is most of the misses, and with the robot's base masked right
+	// almost none end at the base, so the scan has nothing to warn of.
+	EXPECT_EQ(scanned.hits + scanned.no_hit + scanned.too_close + scanned.outliers, scanned.rays);
+	EXPECT_GT(scanned.no_hit, scanned.rays / 4);
+	EXPECT_LT(scanned.too_close, scanned.rays / 20);
+	EXPECT_TRUE(scanWarnings(scanned, s.histogram).empty());
 
 	AccuracyApp::Options a;
 	a.input = s.scan.output;
@@ -77,6 +84,47 @@ TEST(AppClasses, TrainScanAndAccuracyOfTheFactorySample)
 	// Within the paper's worst Table II figure (0.1375 m) on these 20 frames.
 	EXPECT_LT(acc.stats.meanAbs(), 0.1375);
 	for (const std::string f : {"_pairs.csv", "_histogram.png", "_table.md"}) EXPECT_TRUE(fs::exists(a.output + f)) << f;
+}
+
+TEST(AppClasses, ScanWarnsWhenTheRobotsBodyIsInsideTheScanCircle)
+{
+	// base_radius 10 px where the robot's body covers about 40: every
+	// scanline starts on the body, which is not floor, and ends at once.
+	const std::string dir = workDir("small_base");
+	ScanApp::Options s;
+	s.ini = dir + "/small_base.ini";
+	std::string ini = readText(kIni);
+	const std::string key = "\nbase_radius = 40\n";
+	ASSERT_NE(ini.find(key), std::string::npos);
+	ini.replace(ini.find(key), key.size(), "\nbase_radius = 10\n");
+	std::ofstream(s.ini) << ini;
+	s.histogram = trainHistogram(dir);
+	s.scan.input = kSample;
+	s.scan.output = dir + "/scanned.rawlog";
+	s.verbosity = mrpt::system::LVL_WARN;
+	ScanApp app(s);
+	std::string warned;
+	app.logRegisterCallback([&](std::string_view msg, mrpt::system::VerbosityLevel level, std::string_view,
+								mrpt::Clock::time_point) {
+		if (level == mrpt::system::LVL_WARN) warned += std::string(msg);
+	});
+	const RawlogScanSummary scanned = app.run();
+	EXPECT_GT(scanned.too_close, scanned.rays / 2);
+	EXPECT_NE(warned.find("too close): check base_radius"), std::string::npos) << warned;
+}
+
+TEST(AppClasses, ScanWarningsFollowTheSharesOfTheRays)
+{
+	RawlogScanSummary s;
+	s.rays = 1000, s.hits = 600, s.no_hit = 305, s.too_close = 95;  // 9.5 % too close: quiet
+	EXPECT_TRUE(scanWarnings(s, "f.hist").empty());
+	s.no_hit = 300, s.too_close = 100;  // 10 %
+	ASSERT_EQ(scanWarnings(s, "f.hist").size(), 1u);
+	s.hits = 19, s.no_hit = 881;  // 1.9 % hit, and still 10 % too close: the histogram is what to doubt
+	const auto one = scanWarnings(s, "f.hist");
+	ASSERT_EQ(one.size(), 1u);
+	EXPECT_NE(one[0].find("'f.hist' trained on this floor"), std::string::npos) << one[0];
+	EXPECT_TRUE(scanWarnings(RawlogScanSummary{}, "f.hist").empty());  // nothing scanned: nothing to say
 }
 
 namespace

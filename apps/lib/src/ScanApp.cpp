@@ -5,6 +5,9 @@
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/Progress.h>
 
+#include <algorithm>
+#include <cstdio>
+
 namespace omnirange::app
 {
 ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
@@ -52,15 +55,40 @@ RawlogScanSummary ScanApp::run()
 	for (const auto& why : s.skipped_reasons) MRPT_LOG_WARN_FMT("skipped: %s", why.c_str());
 	if (s.skipped > 0)
 		MRPT_LOG_WARN_FMT("%zu of %zu images skipped as bad", s.skipped, s.skipped + s.images);
-	const double hit = 100.0 * s.hits / std::max<std::size_t>(1, s.rays);
-	MRPT_LOG_INFO_FMT("%zu images scanned, %.1f %% of rays hit, %zu objects -> %s", s.images, hit, s.objects,
+	const auto share = [&](std::size_t n) { return 100.0 * n / std::max<std::size_t>(1, s.rays); };
+	MRPT_LOG_INFO_FMT("%zu images scanned: %.1f %% of rays hit, %.1f %% free to max range, %.1f %% too close, "
+					  "%.1f %% rejected as outliers; %zu objects -> %s",
+					  s.images, share(s.hits), share(s.no_hit), share(s.too_close), share(s.outliers), s.objects,
 					  o_.scan.output.c_str());
+	for (const auto& w : scanWarnings(s, o_.histogram)) MRPT_LOG_WARN(w);
+	return s;
+}
+
+std::vector<std::string> scanWarnings(const RawlogScanSummary& s, const std::string& histogram)
+{
+	if (s.rays == 0) return {};
+	const double hit = 100.0 * s.hits / s.rays, too_close = 100.0 * s.too_close / s.rays;
+	const auto percent = [](double x) {
+		char b[32];
+		std::snprintf(b, sizeof b, "%.1f %%", x);
+		return std::string(b);
+	};
 	// Almost no hit at all is what a histogram trained on another floor, in
 	// other light or with another camera gives: worth saying, not an error.
 	if (hit < 2.0)
-		MRPT_LOG_WARN_FMT("only %.1f %% of the rays hit anything: was '%s' trained on this floor, light and camera?",
-						  hit, o_.histogram.c_str());
-	return s;
+		return {"only " + percent(hit) + " of the rays hit anything: was '" + histogram +
+				"' trained on this floor, light and camera?"};
+	// A ray is too close when the floor just beyond the base is not free:
+	// the robot's body inside the scan circle, or that floor darker or
+	// otherwise unlike training (light, the robot's own shadow). Said only
+	// when the histogram itself is not in doubt (above): a histogram of
+	// another floor ends every ray at the base too.
+	if (too_close >= 10.0)
+		return {percent(too_close) +
+				" of the rays ended at the robot's base (too close): check base_radius against the robot's body in "
+				"the image, and whether the floor around it looks as in training (light, the robot's shadow; "
+				"exposure_compensation)"};
+	return {};
 }
 
 }  // namespace omnirange::app

@@ -10,6 +10,7 @@
 
 #include <opencv2/core/utility.hpp>
 
+#include <array>
 #include <exception>
 #include <filesystem>
 #include <optional>
@@ -25,6 +26,7 @@ struct Batch
 	std::vector<std::size_t> after;  // per image: the index of the object that holds it
 	std::vector<mrpt::obs::CObservationImage::Ptr> images;
 	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;  // one per image
+	std::vector<std::array<int, 3>> missing;  // per image: rays with no hit, too close, outliers
 	std::vector<std::exception_ptr> errors;
 };
 
@@ -36,11 +38,14 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 {
 	const int n = static_cast<int>(b.images.size());
 	b.scans.assign(n, nullptr);
+	b.missing.assign(n, {0, 0, 0});
 	b.errors.assign(n, nullptr);
 	std::vector<cv::Mat> decoded(n);
 	const auto& cam = rf.params().camera;
 	const auto scan = [&](int k, const PixelClassifier* classifier) {
-		b.scans[k] = rf.toObservation(rf.process(decoded[k], classifier), b.images[k]->timestamp);
+		const RangeScan scan = rf.process(decoded[k], classifier);
+		b.missing[k] = {scan.count(RayStatus::NoHit), scan.count(RayStatus::TooClose), scan.count(RayStatus::Outlier)};
+		b.scans[k] = rf.toObservation(scan, b.images[k]->timestamp);
 	};
 	cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& r) {
 		for (int k = r.start; k < r.end; ++k) try
@@ -108,6 +113,7 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 			const auto& scan = *b.scans[k];
 			for (std::size_t r = 0; r < scan.getScanSize(); ++r) sum.hits += scan.getScanRangeValidity(r);
 			sum.rays += scan.getScanSize();
+			sum.no_hit += b.missing[k][0], sum.too_close += b.missing[k][1], sum.outliers += b.missing[k][2];
 			scans.push_back(b.scans[k]);
 		}
 		if (!writer) continue;

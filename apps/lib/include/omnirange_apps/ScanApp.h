@@ -6,6 +6,9 @@
 
 #include <mrpt/system/COutputLogger.h>
 
+#include <string>
+#include <vector>
+
 namespace omnirange::app
 {
 class ScanApp : public mrpt::system::COutputLogger
@@ -26,5 +29,10 @@ class ScanApp : public mrpt::system::COutputLogger
    private:
 	Options o_;
 };
+
+/** What a scan's summary should warn a user of, in one line or none: almost
+ * no hit at all (a histogram of another floor, light or camera), or else
+ * many rays ended at the base (the floor just beyond it not seen as free). */
+std::vector<std::string> scanWarnings(const RawlogScanSummary& s, const std::string& histogram);
 
 }  // namespace omnirange::app

@@ -33,6 +33,9 @@ struct RawlogScanSummary
 	std::size_t images{0};  ///< images scanned (or decoded)
 	std::size_t objects{0};  ///< objects written
 	std::size_t rays{0}, hits{0};  ///< rays produced, and of them valid
+	/** Of the rays, those without a hit: free to the max range (no_hit), ended
+	 * at once or inside min range (too_close), rejected by the outlier filter. */
+	std::size_t no_hit{0}, too_close{0}, outliers{0};
 	std::size_t skipped{0};  ///< bad images skipped (skip_bad_images only)
 	std::vector<std::string> skipped_reasons;  ///< why, one line per skipped image
 };
