@@ -24,6 +24,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
 
 using namespace omnirange;
 using namespace omnirange::app;
@@ -50,6 +52,20 @@ std::string trainHistogram(const std::string& dir)
 	EXPECT_EQ(r.used, 20);
 	EXPECT_GT(r.pixels, 20u * 10000);
 	return o.output;
+}
+
+/** Runs omnirange-scan's class; its summary, and every warning it logged. */
+std::pair<RawlogScanSummary, std::string> scanWithWarnings(ScanApp::Options s)
+{
+	s.verbosity = mrpt::system::LVL_WARN;
+	ScanApp app(s);
+	std::string warned;
+	app.logRegisterCallback([&](std::string_view msg, mrpt::system::VerbosityLevel level, std::string_view,
+								mrpt::Clock::time_point) {
+		if (level == mrpt::system::LVL_WARN) warned += std::string(msg);
+	});
+	const RawlogScanSummary summary = app.run();
+	return {summary, warned};
 }
 }  // namespace
 
@@ -101,14 +117,7 @@ TEST(AppClasses, ScanWarnsWhenTheRobotsBodyIsInsideTheScanCircle)
 	s.histogram = trainHistogram(dir);
 	s.scan.input = kSample;
 	s.scan.output = dir + "/scanned.rawlog";
-	s.verbosity = mrpt::system::LVL_WARN;
-	ScanApp app(s);
-	std::string warned;
-	app.logRegisterCallback([&](std::string_view msg, mrpt::system::VerbosityLevel level, std::string_view,
-								mrpt::Clock::time_point) {
-		if (level == mrpt::system::LVL_WARN) warned += std::string(msg);
-	});
-	const RawlogScanSummary scanned = app.run();
+	const auto [scanned, warned] = scanWithWarnings(s);
 	EXPECT_GT(scanned.too_close, scanned.rays / 2);
 	EXPECT_NE(warned.find("too close): check base_radius"), std::string::npos) << warned;
 }
@@ -518,14 +527,7 @@ TEST(AppClasses, AHistogramOfAnotherFloorIsWarnedAbout)
 	s.histogram = dir + "/magenta.hist";
 	s.scan.input = kSample;
 	s.scan.output = dir + "/out.rawlog";
-	s.verbosity = mrpt::system::LVL_WARN;
-	ScanApp app(s);
-	std::string warned;
-	app.logRegisterCallback([&](std::string_view msg, mrpt::system::VerbosityLevel level, std::string_view,
-								mrpt::Clock::time_point) {
-		if (level == mrpt::system::LVL_WARN) warned += std::string(msg);
-	});
-	const auto r = app.run();
+	const auto [r, warned] = scanWithWarnings(s);
 	EXPECT_LT(r.hits, r.rays / 50);
 	EXPECT_NE(warned.find("magenta.hist"), std::string::npos) << warned;
 }
