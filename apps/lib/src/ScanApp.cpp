@@ -10,6 +10,12 @@
 
 namespace omnirange::app
 {
+namespace
+{
+/** [%] share of the scan's rays. */
+double shareOf(std::size_t n, const RawlogScanSummary& s) { return 100.0 * n / std::max<std::size_t>(1, s.rays); }
+}  // namespace
+
 ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 {
 	Options o;
@@ -55,7 +61,7 @@ RawlogScanSummary ScanApp::run()
 	for (const auto& why : s.skipped_reasons) MRPT_LOG_WARN_FMT("skipped: %s", why.c_str());
 	if (s.skipped > 0)
 		MRPT_LOG_WARN_FMT("%zu of %zu images skipped as bad", s.skipped, s.skipped + s.images);
-	const auto share = [&](std::size_t n) { return 100.0 * n / std::max<std::size_t>(1, s.rays); };
+	const auto share = [&](std::size_t n) { return shareOf(n, s); };
 	MRPT_LOG_INFO_FMT("%zu images scanned: %.1f %% of rays hit, %.1f %% free to max range, %.1f %% too close, "
 					  "%.1f %% rejected as outliers; %zu objects -> %s",
 					  s.images, share(s.hits), share(s.no_hit), share(s.too_close), share(s.outliers), s.objects,
@@ -67,7 +73,7 @@ RawlogScanSummary ScanApp::run()
 std::vector<std::string> scanWarnings(const RawlogScanSummary& s, const std::string& histogram)
 {
 	if (s.rays == 0) return {};
-	const double hit = 100.0 * s.hits / s.rays, too_close = 100.0 * s.too_close / s.rays;
+	const double hit = shareOf(s.hits, s), too_close = shareOf(s.too_close, s);
 	const auto percent = [](double x) {
 		char b[32];
 		std::snprintf(b, sizeof b, "%.1f %%", x);

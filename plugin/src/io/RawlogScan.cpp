@@ -26,7 +26,7 @@ struct Batch
 	std::vector<std::size_t> after;  // per image: the index of the object that holds it
 	std::vector<mrpt::obs::CObservationImage::Ptr> images;
 	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;  // one per image
-	std::vector<std::array<int, 3>> missing;  // per image: rays with no hit, too close, outliers
+	std::vector<std::array<int, 4>> statuses;  // per image: its rays by RayStatus (Hit, NoHit, TooClose, Outlier)
 	std::vector<std::exception_ptr> errors;
 };
 
@@ -38,13 +38,13 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 {
 	const int n = static_cast<int>(b.images.size());
 	b.scans.assign(n, nullptr);
-	b.missing.assign(n, {0, 0, 0});
+	b.statuses.assign(n, {0, 0, 0, 0});
 	b.errors.assign(n, nullptr);
 	std::vector<cv::Mat> decoded(n);
 	const auto& cam = rf.params().camera;
 	const auto scan = [&](int k, const PixelClassifier* classifier) {
 		const RangeScan scan = rf.process(decoded[k], classifier);
-		b.missing[k] = {scan.count(RayStatus::NoHit), scan.count(RayStatus::TooClose), scan.count(RayStatus::Outlier)};
+		for (const Ray& ray : scan.rays) ++b.statuses[k][static_cast<std::size_t>(ray.status)];
 		b.scans[k] = rf.toObservation(scan, b.images[k]->timestamp);
 	};
 	cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& r) {
@@ -110,10 +110,11 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 			}
 			++sum.images;
 			if (!b.scans[k]) continue;  // decode only
-			const auto& scan = *b.scans[k];
-			for (std::size_t r = 0; r < scan.getScanSize(); ++r) sum.hits += scan.getScanRangeValidity(r);
-			sum.rays += scan.getScanSize();
-			sum.no_hit += b.missing[k][0], sum.too_close += b.missing[k][1], sum.outliers += b.missing[k][2];
+			const auto& n = b.statuses[k];
+			const auto of = [&](RayStatus s) { return static_cast<std::size_t>(n[static_cast<std::size_t>(s)]); };
+			sum.hits += of(RayStatus::Hit), sum.no_hit += of(RayStatus::NoHit);
+			sum.too_close += of(RayStatus::TooClose), sum.outliers += of(RayStatus::Outlier);
+			sum.rays += b.scans[k]->getScanSize();
 			scans.push_back(b.scans[k]);
 		}
 		if (!writer) continue;
