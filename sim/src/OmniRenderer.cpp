@@ -15,6 +15,7 @@ namespace
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kHalfPi = kPi / 2;
 constexpr double kMaxSight = 40.0;  // [m] beyond this the view is sky
+constexpr double kPenumbra = 0.05;  // [m] width of the robot's shadow's soft edge
 
 enum Surface : int
 {
@@ -42,6 +43,9 @@ struct OmniRenderer::Frame
 	Vec2 origin;  // the viewpoint, in the world
 	double yaw;  // the sensor's yaw in the world
 	std::vector<std::vector<SolidCrossing>> bins;
+	Pose2 robot;  // the body's pose, for its own shadow
+	std::vector<cv::Point2f> own_shadow;  // the body's sun shadow on the floor (world, convex); empty: off
+	double own_reach{0};  // [m] beyond this from the robot the body darkens nothing
 };
 
 OmniRenderer::OmniRenderer(const World& world, const RobotParams& robot)
@@ -152,11 +156,11 @@ void OmniRenderer::buildOcclusionMap()
 				1.0 - L.occlusion * std::exp(-dist.at<float>(y, x) * shadow_res_ / L.occlusion_radius));
 }
 
-double OmniRenderer::floorLight(const Vec2& p) const
+double OmniRenderer::floorLight(const Frame& f, const Vec2& p) const
 {
 	const int x = static_cast<int>((p.x - shadow_lo_.x) / shadow_res_);
 	const int y = static_cast<int>((p.y - shadow_lo_.y) / shadow_res_);
-	const double lit = (x >= 0 && y >= 0 && x < shadow_.cols && y < shadow_.rows)
+	double lit = (x >= 0 && y >= 0 && x < shadow_.cols && y < shadow_.rows)
 		? shadow_.at<std::uint8_t>(y, x) / 255.0
 		: 1.0;
 	const auto& L = world_.light;
@@ -174,14 +178,50 @@ double OmniRenderer::floorLight(const Vec2& p) const
 				ay * ((1 - ax) * at(y0 + 1, x0) + ax * at(y0 + 1, x0 + 1));
 		}
 	}
+	if (!f.own_shadow.empty()) lit = std::min(lit, ownShadow(f, p, occluded));
 	return (L.ambient + L.diffuse * std::sin(L.elevation) * lit) * occluded;
 }
 
-OmniRenderer::Sample OmniRenderer::shadeFloor(const Vec2& p) const
+OmniRenderer::Sample OmniRenderer::shadeFloor(const Frame& f, const Vec2& p) const
 {
 	auto c = shadeMaterial(world_.materials[world_.floor_material], tex_, p.x, p.y);
-	const double k = floorLight(p);
+	const double k = floorLight(f, p);
 	return {{c[0] * k, c[1] * k, c[2] * k}, kFloor};
+}
+
+void OmniRenderer::castOwnShadow(Frame& f) const
+{
+	if (!robot_.robot.own_shadow) return;
+	const auto& r = robot_.robot;
+	const double c = std::cos(f.robot.yaw), s = std::sin(f.robot.yaw);
+	const double shift = r.height / std::tan(world_.light.elevation);  // the body's top, cast away from the sun
+	std::vector<cv::Point2f> corners;
+	for (double z : {0.0, shift})
+		for (double qx : {-r.length / 2, r.length / 2})
+			for (double qy : {-r.width / 2, r.width / 2})
+				corners.emplace_back(static_cast<float>(f.robot.x + c * qx - s * qy - sun_h_.x * z),
+									 static_cast<float>(f.robot.y + s * qx + c * qy - sun_h_.y * z));
+	cv::convexHull(corners, f.own_shadow);
+	f.own_reach = std::hypot(r.length, r.width) / 2 + shift + 6 * world_.light.occlusion_radius + kPenumbra;
+}
+
+double OmniRenderer::ownShadow(const Frame& f, const Vec2& p, double& occluded) const
+{
+	if (std::hypot(p.x - f.robot.x, p.y - f.robot.y) > f.own_reach) return 1.0;
+	const auto& L = world_.light;
+	// The body stands on the floor as a solid does: the same darkening at its foot.
+	if (L.occlusion > 0)
+	{
+		const double c = std::cos(f.robot.yaw), s = std::sin(f.robot.yaw);
+		const double dx = p.x - f.robot.x, dy = p.y - f.robot.y;
+		const double qx = std::abs(c * dx + s * dy) - robot_.robot.length / 2;
+		const double qy = std::abs(-s * dx + c * dy) - robot_.robot.width / 2;
+		const double d = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0));
+		occluded *= 1.0 - L.occlusion * std::exp(-d / L.occlusion_radius);
+	}
+	// The sun's shadow, with about the soft edge of the solids' (5 cm).
+	const double inside = cv::pointPolygonTest(f.own_shadow, cv::Point2f(static_cast<float>(p.x), static_cast<float>(p.y)), true);
+	return std::clamp(0.5 - inside / kPenumbra, 0.0, 1.0);
 }
 
 OmniRenderer::Sample OmniRenderer::shadeRobot(double theta, double bearing) const
@@ -239,7 +279,7 @@ OmniRenderer::Sample OmniRenderer::trace(const Frame& f, int bin, double theta) 
 			}
 		}
 	}
-	if (s_floor <= kMaxSight) return shadeFloor(f.origin + dir * s_floor);
+	if (s_floor <= kMaxSight) return shadeFloor(f, f.origin + dir * s_floor);
 	const auto& sky = world_.sky_rgb;
 	return {{double(sky[2]), double(sky[1]), double(sky[0])}, kSky};
 }
@@ -252,6 +292,8 @@ cv::Mat OmniRenderer::render(const Pose2& robot, std::uint64_t noise_seed, int f
 	f.yaw = robot.yaw + pose.yaw();
 	f.origin = {robot.x + std::cos(robot.yaw) * pose.x() - std::sin(robot.yaw) * pose.y(),
 				robot.y + std::sin(robot.yaw) * pose.x() + std::cos(robot.yaw) * pose.y()};
+	f.robot = robot;
+	castOwnShadow(f);
 	f.bins.resize(kBearingBins);
 	cv::parallel_for_(cv::Range(0, kBearingBins), [&](const cv::Range& r) {
 		for (int b = r.start; b < r.end; ++b)

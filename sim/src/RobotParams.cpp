@@ -70,6 +70,8 @@ const OptionsTable<RobotBodyParams>& RobotBodyParams::table()
 		.add("width", "m", "the body's width", [](P& p) -> auto& { return p.width; })
 		.add("height", "m", "top of the body", [](P& p) -> auto& { return p.height; })
 		.add("clearance", "m", "nearest a route may pass a solid", [](P& p) -> auto& { return p.clearance; })
+		.add("own_shadow", "bool", "the body casts the sun's shadow and darkens the floor at its foot",
+			 [](P& p) -> auto& { return p.own_shadow; })
 		.add("seed", "-", "all randomness derives from it", [](P& p) -> auto& { return p.seed; })
 		.renamed("turn_rate", "use turn_rate_deg, in degrees per second");
 	return t;

@@ -129,3 +129,29 @@ TEST(SceneRealism, TilesShowGroutAndOcclusionDarkensTheFootOfWalls)
 	// A grout line at x = 1.0 m, a tile's middle at x = 0.75 m.
 	EXPECT_LT(floorPatch(rt, t, 1.005, -0.25)[1] * 1.5, floorPatch(rt, t, 0.75, -0.25)[1]);
 }
+
+TEST(SceneRealism, TheRobotsOwnShadowFallsAwayFromTheSunAndDarkensItsFoot)
+{
+	// The sun in the west (-x; the room's walls then cast their shadows away from the robot),
+	// 0.6 rad up: the body (0.45 x 0.38 m, 0.25 m tall) shades the floor east of it out to
+	// 0.225 + 0.25 / tan(0.6) = 0.59 m.
+	const World w = loadWorld(test::writeFile(
+		"sun.world", test::roomWorld() + "light azimuth=3.14159 elevation=0.6 ambient=0.5 diffuse=0.6 occlusion=0.3 "
+										 "occlusion_radius=0.12\n"));
+	RobotParams robot = test::quietRobot();
+	const OmniRenderer off(w, robot);
+	robot.robot.own_shadow = true;
+	const OmniRenderer on(w, robot);
+	const cv::Mat a = off.render({0, 0, 0}, 1), b = on.render({0, 0, 0}, 1);
+	const auto ratio = [&](double x, double y) { return floorPatch(on, b, x, y)[1] / floorPatch(off, a, x, y)[1]; };
+	// In the shadow, 0.225 m from the body: only the ambient light, 0.5 / (0.5 + 0.6 sin 0.6),
+	// and the foot's darkening, 1 - 0.3 exp(-0.225 / 0.12).
+	EXPECT_NEAR(ratio(0.45, 0), 0.5 / (0.5 + 0.6 * std::sin(0.6)) * (1 - 0.3 * std::exp(-0.225 / 0.12)), 0.03);
+	// On the sunny side at the same distance: the darkening alone.
+	EXPECT_NEAR(ratio(-0.45, 0), 1 - 0.3 * std::exp(-0.225 / 0.12), 0.02);
+	// Beside the body, 0.11 m from its side, in the sun: darker by 0.3 exp(-0.11 / 0.12).
+	EXPECT_NEAR(ratio(0, 0.30), 1 - 0.3 * std::exp(-0.11 / 0.12), 0.03);
+	// Past the shadow's end, and far away: untouched.
+	EXPECT_NEAR(ratio(0.75, 0), 1.0, 0.02);
+	EXPECT_NEAR(ratio(-1.0, -1.0), 1.0, 0.01);
+}

@@ -47,12 +47,17 @@ class OmniRenderer
 	struct Frame;  // per-frame ray casts
 
 	Sample trace(const Frame& f, int bin, double theta) const;
-	Sample shadeFloor(const Vec2& p) const;
+	Sample shadeFloor(const Frame& f, const Vec2& p) const;
+	/** The robot's own shadow ([robot] own_shadow): its sun shadow on this frame's floor. */
+	void castOwnShadow(Frame& f) const;
+	/** How lit `p` is under the robot's own sun shadow (1: lit, 0: in it); multiplies
+	 * `occluded` by the darkening at the body's foot. */
+	double ownShadow(const Frame& f, const Vec2& p, double& occluded) const;
 	Sample shadeRobot(double theta, double bearing) const;
 	PixelRay pixelRay(double u, double v) const;
 	int binOf(double bearing) const;
 	void buildShadowMap();
-	double floorLight(const Vec2& p) const;
+	double floorLight(const Frame& f, const Vec2& p) const;
 	/** The occlusion map: 1 in the open, 1 - occlusion at a solid's foot. */
 	void buildOcclusionMap();
 
