@@ -232,3 +232,44 @@ TEST(PolarScanner, AnotherClassifierPlugsInThroughTheSeam)
 		EXPECT_EQ(r.search.status, HitSearch::Status::NoCandidate);
 	}
 }
+
+namespace
+{
+/** The floor disc out to `rho`, its first pixels darkened out to `shadow_rho`
+ * (a colour the floor histogram does not hold): the robot's own shadow. */
+cv::Mat drawShadowAtTheBase(const OmniCameraModel& cam, double rho, double shadow_rho)
+{
+	cv::Mat img = test::drawFloorDisc(cam, rho);
+	const auto& p = cam.params();
+	for (int v = 0; v < img.rows; ++v)
+		for (int u = 0; u < img.cols; ++u)
+			if (std::hypot(u - p.cx, v - p.cy) <= shadow_rho) img.at<cv::Vec3b>(v, u) = {25, 60, 30};
+	return img;
+}
+}  // namespace
+
+TEST(PolarScanner, TheRobotsOwnShadowAtTheBaseIsPassed)
+{
+	Fixture f;
+	const double wall = 120.0, base = PolarScannerParams{}.base_radius;
+	// Dark floor from the base out to 0.7 m, floor to the wall: the wall's range on every ray.
+	const cv::Mat img = drawShadowAtTheBase(f.cam, wall, f.cam.rhoFromDistance(0.7));
+	for (const Ray& r : f.scanner.scan(img, f.classifier))
+	{
+		ASSERT_EQ(r.status, RayStatus::Hit) << "bearing " << r.bearing;
+		ASSERT_NEAR(r.range, f.cam.distanceFromRho(wall), onePixelBound(f.cam, wall));
+		ASSERT_GT(r.past_base, 0);
+	}
+	// Off, as the paper had it: every ray too close.
+	PolarScannerParams off;
+	off.base_shadow = 0;
+	for (const Ray& r : PolarScanner(f.cam, off).scan(img, f.classifier)) ASSERT_EQ(r.status, RayStatus::TooClose);
+	// A run that reaches further than base_shadow from the first pixel is an obstacle.
+	const double far = f.cam.distanceFromRho(base) + PolarScannerParams{}.base_shadow + 0.1;
+	for (const Ray& r : f.scanner.scan(drawShadowAtTheBase(f.cam, 165.0, f.cam.rhoFromDistance(far)), f.classifier))
+		ASSERT_EQ(r.status, RayStatus::TooClose);
+	// Fewer than N free pixels behind the run do not make floor.
+	const int N = PolarScannerParams{}.filter.N;
+	for (const Ray& r : f.scanner.scan(drawShadowAtTheBase(f.cam, 80.0 + N / 2, 80.0), f.classifier))
+		ASSERT_EQ(r.status, RayStatus::TooClose);
+}

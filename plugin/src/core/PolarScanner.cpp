@@ -95,7 +95,11 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 			 "(0: off; omnirange-train --learn tries it)",
 			 [](P& p) -> auto& { return p.step_threshold; })
 		.add("step_window", "px", "pixels averaged on each side of a brightness step (>= 1)",
-			 [](P& p) -> auto& { return p.step_window; });
+			 [](P& p) -> auto& { return p.step_window; })
+		.add("base_shadow", "m",
+			 "a non-free run from a scanline's first pixel that ends within this distance of it, with N free "
+			 "pixels behind it, is the robot's own shadow or body and is passed (0: the ray is too close)",
+			 [](P& p) -> auto& { return p.base_shadow; });
 	return t;
 }
 
@@ -107,6 +111,7 @@ void PolarScannerParams::validate(const OmniCameraModel& cam) const
 	require(filter.K >= 0 && filter.K <= 10000, "K (false-negative filter) must be within [0, 10000] px");
 	require(step_threshold >= 0 && step_threshold <= 5, "step_threshold must be within [0, 5]");
 	require(step_window >= 1 && step_window <= 100, "step_window must be within [1, 100] px");
+	require(base_shadow >= 0 && base_shadow <= max_range, "base_shadow must be within [0, max_range] m");
 	require(base_radius >= 0, "base_radius must be >= 0 px");
 	require(min_range >= 0, "min_range must be >= 0 m");
 	require(max_range > min_range, "max_range must be > min_range");
@@ -209,16 +214,32 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 		Ray& ray = rays[s];
 		ray.bearing = line.bearing;
 		ray.search = findHit(is_free, line.count, line.last_candidate, p_.filter);
+		if (ray.search.status == HitSearch::Status::Hit && ray.search.index == 0 && p_.base_shadow > 0)
+		{
+			// An obstacle cannot stand inside the robot's base, and one just outside
+			// it hides the floor up its face: floor that comes back soon after a
+			// non-free run at the base is floor, darkened by the robot or its body.
+			const int resume = floorPastBase(line, is_free);
+			if (resume > 0)
+			{
+				auto from = [&](int k) { return is_free(resume + k); };
+				ray.search = findHit(from, line.count - resume, line.last_candidate - resume, p_.filter);
+				if (ray.search.index >= 0) ray.search.index += resume;
+				if (ray.search.last_rejected >= 0) ray.search.last_rejected += resume;
+				ray.past_base = resume;
+			}
+		}
 		const bool colour_hit = ray.search.status == HitSearch::Status::Hit;
 		int hit = colour_hit ? ray.search.index : -1;
 		if (p_.step_threshold > 0 && line.first_in_range >= 0)
 		{
 			// A face the colour model sees through still shows its foot. The
 			// search may climb to the colour's hit: a step that peaks there is
-			// the colour's own edge, and the colour places it.
+			// the colour's own edge, and the colour places it. A shadow passed
+			// at the base has an edge too: the search starts past it.
 			const int to = colour_hit ? hit : line.last_candidate;
-			const int step = findBrightnessStep(data, pix, line.count, line.first_in_range, to, p_.step_threshold,
-												p_.step_window);
+			const int step = findBrightnessStep(data, pix, line.count, std::max(line.first_in_range, ray.past_base), to,
+												p_.step_threshold, p_.step_window);
 			if (step >= 0 && (!colour_hit || step < hit)) hit = step, ray.by_step = true;
 		}
 		if (hit < 0)
@@ -240,6 +261,37 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 		ray.range = too_close ? static_cast<float>(p_.min_range) : range;
 	}
 	return rays;
+}
+
+template <class IsFree>
+int PolarScanner::floorPastBase(const Scanline& line, IsFree& is_free) const
+{
+	// The N/K filter mirrored: a free pixel is where the floor resumes when the
+	// N pixels from it on are free, non-free runs of at most K negated.
+	const float* range = mid_range_.data() + line.first;
+	const int N = p_.filter.N, K = p_.filter.K;
+	int k = 1;
+	while (k < line.count)
+	{
+		while (k < line.count && !is_free(k)) ++k;
+		if (k >= line.count || range[k] - range[0] > p_.base_shadow) return 0;  // an obstacle, or no floor
+		const int start = k;
+		int counted = 0;
+		while (counted < N && k < line.count)
+		{
+			if (is_free(k))
+			{
+				++counted, ++k;
+				continue;
+			}
+			int run = 1;  // pixel k is not free: measure its run up to K+1
+			while (run <= K && k + run < line.count && !is_free(k + run)) ++run;
+			if (run > K) break;  // more than a speck: not floor yet
+			counted += run, k += run;
+		}
+		if (counted >= N) return start;
+	}
+	return 0;
 }
 
 double PolarScanner::rhoAt(const Scanline& line, double k) const

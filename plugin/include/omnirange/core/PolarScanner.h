@@ -44,6 +44,9 @@ struct Ray
 	HitSearch search{};
 	/** The brightness step (BrightnessStep.h), not the colour, ended this ray. */
 	bool by_step{false};
+	/** Pixels at the base passed as the robot's own shadow (base_shadow); the
+	 * search's indices still count from the scanline's first pixel. */
+	int past_base{0};
 };
 
 /** Bearing [rad] of scanline i of S: MRPT's angle of ray i in a scan of S
@@ -74,6 +77,11 @@ struct PolarScannerParams
 	 * window means) before the colour's hit ends the ray there; 0: off. */
 	double step_threshold{0.0};
 	int step_window{4};  ///< [px] pixels averaged on each side of a step
+	/** [m] a non-free run from the scanline's first pixel that ends within this
+	 * distance of it, with N free pixels behind it (runs of at most K non-free
+	 * negated), is taken for the robot's own
+	 * shadow (or body) and passed; 0: such a ray is too close (the paper's). */
+	double base_shadow{1.0};
 
 	static const OptionsTable<PolarScannerParams>& table();
 	/** Throws std::invalid_argument naming the key; the camera bounds the radii. */
@@ -114,6 +122,11 @@ class PolarScanner
 
 	/** Image radius [px] at fractional pixel index k of a scanline. */
 	double rhoAt(const Scanline& line, double k) const;
+	/** Where the floor resumes past a non-free run at the base, within
+	 * base_shadow of the first pixel (N pixels free but for runs of at most K
+	 * non-free, the N/K filter mirrored); 0 if it does not. */
+	template <class IsFree>
+	int floorPastBase(const Scanline& line, IsFree& is_free) const;
 
 	PolarScannerParams p_;
 	int width_, height_;
