@@ -5,6 +5,7 @@
 
 #include <opencv2/core.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -98,7 +99,8 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 			 [](P& p) -> auto& { return p.step_window; })
 		.add("base_shadow", "m",
 			 "a non-free run from a scanline's first pixel that ends within this distance of it, with N free "
-			 "pixels behind it, is the robot's own shadow or body and is passed (0: the ray is too close)",
+			 "pixels behind it (runs of at most K non-free negated), is the robot's own shadow or body and is "
+			 "passed (0: the ray is too close)",
 			 [](P& p) -> auto& { return p.base_shadow; });
 	return t;
 }
@@ -266,32 +268,16 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 template <class IsFree>
 int PolarScanner::floorPastBase(const Scanline& line, IsFree& is_free) const
 {
-	// The N/K filter mirrored: a free pixel is where the floor resumes when the
-	// N pixels from it on are free, non-free runs of at most K negated.
+	// The N/K filter with free and non-free swapped finds where the floor
+	// resumes: N free pixels counting the first (the filter counts N behind
+	// its candidate), starting within base_shadow of the scanline's first pixel.
 	const float* range = mid_range_.data() + line.first;
-	const int N = p_.filter.N, K = p_.filter.K;
-	int k = 1;
-	while (k < line.count)
-	{
-		while (k < line.count && !is_free(k)) ++k;
-		if (k >= line.count || range[k] - range[0] > p_.base_shadow) return 0;  // an obstacle, or no floor
-		const int start = k;
-		int counted = 0;
-		while (counted < N && k < line.count)
-		{
-			if (is_free(k))
-			{
-				++counted, ++k;
-				continue;
-			}
-			int run = 1;  // pixel k is not free: measure its run up to K+1
-			while (run <= K && k + run < line.count && !is_free(k + run)) ++run;
-			if (run > K) break;  // more than a speck: not floor yet
-			counted += run, k += run;
-		}
-		if (counted >= N) return start;
-	}
-	return 0;
+	const int last = static_cast<int>(std::upper_bound(range, range + line.count, range[0] + p_.base_shadow) - range) - 1;
+	HitFilterParams window = p_.filter;
+	window.N -= 1;
+	const auto not_free = [&](int k) { return !is_free(k); };
+	const HitSearch floor = findHit(not_free, line.count, last, window);
+	return floor.status == HitSearch::Status::Hit ? floor.index : 0;
 }
 
 double PolarScanner::rhoAt(const Scanline& line, double k) const

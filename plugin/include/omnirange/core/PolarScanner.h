@@ -124,7 +124,7 @@ class PolarScanner
 	double rhoAt(const Scanline& line, double k) const;
 	/** Where the floor resumes past a non-free run at the base, within
 	 * base_shadow of the first pixel (N pixels free but for runs of at most K
-	 * non-free, the N/K filter mirrored); 0 if it does not. */
+	 * non-free: the N/K filter with the classes swapped); 0 if it does not. */
 	template <class IsFree>
 	int floorPastBase(const Scanline& line, IsFree& is_free) const;
 
