@@ -17,6 +17,12 @@ constexpr double kHalfPi = kPi / 2;
 constexpr double kMaxSight = 40.0;  // [m] beyond this the view is sky
 constexpr double kPenumbra = 0.05;  // [m] width of the robot's shadow's soft edge
 
+/** The light left at `distance` [m] from the foot of something standing on the floor. */
+double footLight(const Light& L, double distance)
+{
+	return 1.0 - L.occlusion * std::exp(-distance / L.occlusion_radius);
+}
+
 enum Surface : int
 {
 	kFloor = 1,
@@ -44,6 +50,7 @@ struct OmniRenderer::Frame
 	double yaw;  // the sensor's yaw in the world
 	std::vector<std::vector<SolidCrossing>> bins;
 	Pose2 robot;  // the body's pose, for its own shadow
+	double robot_cos{1}, robot_sin{0};  // of its yaw
 	std::vector<cv::Point2f> own_shadow;  // the body's sun shadow on the floor (world, convex); empty: off
 	double own_reach{0};  // [m] beyond this from the robot the body darkens nothing
 };
@@ -152,8 +159,7 @@ void OmniRenderer::buildOcclusionMap()
 	occlusion_.create(dist.size(), CV_32F);
 	for (int y = 0; y < dist.rows; ++y)
 		for (int x = 0; x < dist.cols; ++x)
-			occlusion_.at<float>(y, x) = static_cast<float>(
-				1.0 - L.occlusion * std::exp(-dist.at<float>(y, x) * shadow_res_ / L.occlusion_radius));
+			occlusion_.at<float>(y, x) = static_cast<float>(footLight(L, dist.at<float>(y, x) * shadow_res_));
 }
 
 double OmniRenderer::floorLight(const Frame& f, const Vec2& p) const
@@ -193,7 +199,8 @@ void OmniRenderer::castOwnShadow(Frame& f) const
 {
 	if (!robot_.robot.own_shadow) return;
 	const auto& r = robot_.robot;
-	const double c = std::cos(f.robot.yaw), s = std::sin(f.robot.yaw);
+	f.robot_cos = std::cos(f.robot.yaw), f.robot_sin = std::sin(f.robot.yaw);
+	const double c = f.robot_cos, s = f.robot_sin;
 	const double shift = r.height / std::tan(world_.light.elevation);  // the body's top, cast away from the sun
 	std::vector<cv::Point2f> corners;
 	for (double z : {0.0, shift})
@@ -212,12 +219,12 @@ double OmniRenderer::ownShadow(const Frame& f, const Vec2& p, double& occluded) 
 	// The body stands on the floor as a solid does: the same darkening at its foot.
 	if (L.occlusion > 0)
 	{
-		const double c = std::cos(f.robot.yaw), s = std::sin(f.robot.yaw);
+		const double c = f.robot_cos, s = f.robot_sin;
 		const double dx = p.x - f.robot.x, dy = p.y - f.robot.y;
 		const double qx = std::abs(c * dx + s * dy) - robot_.robot.length / 2;
 		const double qy = std::abs(-s * dx + c * dy) - robot_.robot.width / 2;
 		const double d = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0));
-		occluded *= 1.0 - L.occlusion * std::exp(-d / L.occlusion_radius);
+		occluded *= footLight(L, d);
 	}
 	// The sun's shadow, with about the soft edge of the solids' (5 cm).
 	const double inside = cv::pointPolygonTest(f.own_shadow, cv::Point2f(static_cast<float>(p.x), static_cast<float>(p.y)), true);

@@ -112,11 +112,12 @@ TEST(AppClasses, ScanWarnsWhenTheRobotsBodyIsInsideTheScanCircle)
 	const std::string key = "\nbase_radius = 40\n";
 	ASSERT_NE(ini.find(key), std::string::npos);
 	ini.replace(ini.find(key), key.size(), "\nbase_radius = 10\n");
+	const std::string histogram = trainHistogram(dir);
 	const auto scan = [&](const std::string& name, const std::string& text) {
 		ScanApp::Options s;
 		s.ini = dir + "/" + name + ".ini";
 		std::ofstream(s.ini) << text;
-		s.histogram = trainHistogram(dir);
+		s.histogram = histogram;
 		s.scan.input = kSample;
 		s.scan.output = dir + "/" + name + ".rawlog";
 		return scanWithWarnings(s);
