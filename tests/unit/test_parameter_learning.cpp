@@ -3,6 +3,7 @@
 
 #include "../common/FactorySample.h"
 
+#include <omnirange/train/EdgeBiasLearning.h>
 #include <omnirange/train/ParameterLearning.h>
 #include <omnirange/train/RawlogTraining.h>
 
@@ -221,6 +222,32 @@ TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsSc
 
 	lo.step_thresholds.clear();  // not tried
 	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 2u);
+}
+
+TEST(ParameterLearning, TheEdgeBiasIsLearnedForTheWinnerAndKeptOnlyWhenItLowersItsScore)
+{
+	RangefinderParams rp;
+	RawlogTrainingOptions o = samplePairs(12);
+	LearningOptions lo = oneCandidate();
+	lo.edge_bias = false;
+	const LearningResult without = learnParameters(rp, o, lo);
+	EXPECT_TRUE(without.edge_bias.empty());
+	EXPECT_TRUE(without.params.scanner.edge_bias.empty());
+	EXPECT_EQ(learnedIni(without).find("Edge bias"), std::string::npos);
+	// A start ini that carries an edge bias (an earlier learning's) does not
+	// enter the candidates' scores: it is learned again for the winner.
+	rp.scanner.edge_bias.assign(kEdgeContrastBins, 0.3);
+	lo.edge_bias = true;
+	const LearningResult r = learnParameters(rp, o, lo);
+	ASSERT_EQ(r.tried.size(), 1u);
+	EXPECT_EQ(r.tried[0].score, without.tried[0].score);
+	ASSERT_FALSE(r.edge_bias.empty());  // the factory sample's hits fill a contrast bin
+	for (const double b : r.edge_bias) EXPECT_LE(std::abs(b), kEdgeBiasMaxDifference);
+	const bool kept = r.edge_bias_score < r.best.score;
+	EXPECT_EQ(r.params.scanner.edge_bias, kept ? r.edge_bias : std::vector<double>());
+	const std::string ini = learnedIni(r);
+	EXPECT_NE(ini.find(kept ? "; Edge bias" : "not kept"), std::string::npos) << ini;
+	EXPECT_EQ(ini.find("\nedge_bias = \n") == std::string::npos, kept) << ini;
 }
 
 TEST(ParameterLearning, APoorWinnerIsNamedInTheIniAndOnlyThen)

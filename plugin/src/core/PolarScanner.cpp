@@ -101,7 +101,13 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 			 "a non-free run from a scanline's first pixel that ends within this distance of it, with N free "
 			 "pixels behind it (runs of at most K non-free negated), is the robot's own shadow or body and is "
 			 "passed (0: the ray is too close)",
-			 [](P& p) -> auto& { return p.base_shadow; });
+			 [](P& p) -> auto& { return p.base_shadow; })
+		.add("edge_bias", "m",
+			 "added to a hit's range, one value per bin of the hit's contrast (the natural log of its pixel's "
+			 "brightness over the floor's 4 to 8 pixels before it; bins of 0.05 from -0.5, at most 20 values): "
+			 "the darkened floor before an obstacle's foot, learned against the laser by omnirange-train --learn "
+			 "(docs/method.md); empty: none",
+			 [](P& p) -> auto& { return p.edge_bias; });
 	return t;
 }
 
@@ -115,6 +121,8 @@ void PolarScannerParams::validate(const OmniCameraModel& cam) const
 	require(step_window >= 1 && step_window <= 100, "step_window must be within [1, 100] px");
 	require(base_shadow >= 0 && base_shadow <= max_range, "base_shadow must be within [0, max_range] m");
 	require(base_radius >= 0, "base_radius must be >= 0 px");
+	require(edge_bias.size() <= static_cast<std::size_t>(kEdgeContrastBins), "edge_bias has at most 20 values");
+	for (const double b : edge_bias) require(std::abs(b) <= kMaxEdgeBias, "edge_bias values must be within [-0.5, 0.5] m");
 	require(min_range >= 0, "min_range must be >= 0 m");
 	require(max_range > min_range, "max_range must be > min_range");
 	require(std::abs(boundary_offset) <= 1.0, "boundary_offset must be within [-1, 1] px");
@@ -256,6 +264,12 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 		{
 			ray.hit_rho = static_cast<float>(rhoAt(line, refineBoundary(data, pix, line.count, hit, p_.boundary_reach)) + p_.boundary_offset);
 			range = static_cast<float>(camera_.distanceFromRho(ray.hit_rho));
+		}
+		ray.edge_contrast = edgeContrast(data, pix, hit);
+		if (const double bias = edgeBiasAt(p_.edge_bias, ray.edge_contrast); bias != 0 && range + bias > 0)
+		{
+			range = static_cast<float>(std::min(range + bias, p_.max_range));
+			ray.hit_rho = static_cast<float>(camera_.rhoFromDistance(range));
 		}
 		// The first pixel is at the base: the obstacle may start inside it.
 		const bool too_close = hit == 0 || range < p_.min_range;

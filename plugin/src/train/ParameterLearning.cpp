@@ -2,6 +2,7 @@
 
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/RawlogProcessor.h"
+#include "omnirange/train/EdgeBiasLearning.h"
 #include "omnirange/train/LaserComparison.h"
 
 #include <mrpt/obs/CObservationImage.h>
@@ -120,6 +121,27 @@ double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& 
 	}
 	return n ? sum / n : cap;
 }
+
+/** The hits of `rf` on every pair `o` selects that a laser ray sees too,
+ * with their contrast (EdgeBiasLearning.h). */
+std::vector<EdgeSample> edgeSamples(const Rangefinder& rf, const RawlogTrainingOptions& o, Progress* progress)
+{
+	std::vector<EdgeSample> samples;
+	RawlogProcessor loop(o.input);
+	int pairs = 0;
+	loop.onPair<CObservationImage, CObservation2DRangeScan>(
+		o.omni_label, o.laser_label, o.max_dt,
+		[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& laser) {
+			if (!o.selects(pairs++)) return;
+			const RangeScan scan = rf.process(decodeImage(*image, rf.params().camera));
+			const auto omni = rf.toObservation(scan, laser->timestamp);
+			for (const RangePair& p : pairScans(*laser, *omni))
+				if (p.status == PairStatus::Compared && omni->getScanRangeValidity(p.omni_ray))
+					samples.push_back({scan.rays[p.omni_ray].edge_contrast, p.difference()});
+		});
+	loop.run(progress);
+	return samples;
+}
 }  // namespace
 
 LearningResult learnParameters(const RangefinderParams& start, const RawlogTrainingOptions& o, const LearningOptions& lo,
@@ -188,17 +210,19 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 
 	r.best.score = 1e9;
 	std::map<HistogramKey, std::vector<ColourModel>> models;  // per block
+	// One rangefinder per block's histograms, scored on the classifier's own
+	// ranges: the wall fit smooths over the very errors learning must see.
+	const auto rangefinders = [&](const RangefinderParams& p, const HistogramKey& key) {
+		RangefinderParams scored = p;
+		scored.walls.wall_fit = false;
+		std::vector<Rangefinder> rf;
+		for (const ColourModel& m : models.at(key)) rf.emplace_back(scored, m);
+		return rf;
+	};
 	const auto consider = [&](const LearnedCandidate& candidate) {
 		LearnedCandidate c = candidate;
 		const RangefinderParams p = withCandidate(start, c);
-		// Scored on the classifier's own ranges: the wall fit smooths over
-		// the very errors learning must see.
-		RangefinderParams scored = p;
-		scored.walls.wall_fit = false;
-		const std::vector<ColourModel>& model = models.at(histogramKeyOf(c));
-		std::vector<Rangefinder> rf;
-		for (const ColourModel& m : model) rf.emplace_back(scored, m);
-		c.score = score(rf, validation, c.frame_errors, c.frame_shortfalls);
+		c.score = score(rangefinders(p, histogramKeyOf(c)), validation, c.frame_errors, c.frame_shortfalls);
 		r.tried.push_back(c);
 		if (c.score < r.best.score) r.best = c, r.params = p;
 	};
@@ -274,6 +298,24 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	r.model = r.models.at(histogramKeyOf(r.best));
 	if (by_block) r.refit_pairs = r.training_pairs;
 	else if (lo.refit) r.refit_pairs = r.training_pairs + set_aside;
+	if (lo.edge_bias)
+	{
+		// The winner's hits on every training pair, with the histogram it will
+		// run with, against the laser by their contrast; kept if the held-aside
+		// pairs, scored as every candidate was, agree.
+		RangefinderParams unfitted = r.params;
+		unfitted.walls.wall_fit = false;
+		r.edge_bias = learnEdgeBias(edgeSamples(Rangefinder(unfitted, r.model), o, nullptr), lo.edge_bias_min_samples);
+		if (!r.edge_bias.empty())
+		{
+			RangefinderParams with = r.params;
+			with.scanner.edge_bias = r.edge_bias;
+			std::vector<double> frame_errors, frame_shortfalls;
+			r.edge_bias_score =
+				score(rangefinders(with, histogramKeyOf(r.best)), validation, frame_errors, frame_shortfalls);
+			if (r.edge_bias_score < r.best.score) r.params = with;
+		}
+	}
 	return r;
 }
 
@@ -296,6 +338,7 @@ RangefinderParams withCandidate(const RangefinderParams& start, const LearnedCan
 	p.threshold = c.threshold, p.obstacle_ratio = c.obstacle_ratio, p.histogram_smoothing = c.smoothing;
 	p.scanner.filter.N = c.N, p.scanner.filter.K = c.K, p.scanner.boundary_model = c.boundary;
 	p.scanner.step_threshold = c.step_threshold;
+	p.scanner.edge_bias.clear();  // learned for the winner only, after it is chosen
 	return p;
 }
 
@@ -491,6 +534,16 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 	if (r.overruled)
 		other_space += "; CHROMA was kept: the lower score above is within the held-aside frames' noise\n"
 					   "; (docs/method.md), and CHROMA holds through changes of light they do not show.\n";
+	if (!r.edge_bias.empty())
+	{
+		char line[400];
+		const bool kept = !r.params.scanner.edge_bias.empty();
+		std::snprintf(line, sizeof line,
+					  "; Edge bias (by the hit's contrast, docs/method.md), learned on every training pair: mean error\n"
+					  "; %.4f m with it on the held-aside pairs; %s.\n",
+					  r.edge_bias_score, kept ? "kept (edge_bias below)" : "not kept, it did not lower the winner's");
+		other_space += line;
+	}
 	const std::string warning = poorLearningWarning(r);
 	return head + other_space + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" +
 		   r.params.asIni();

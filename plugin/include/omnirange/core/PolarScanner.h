@@ -5,6 +5,7 @@
 
 #include <omnirange/core/BoundaryRefinement.h>
 #include <omnirange/core/CameraModel.h>
+#include <omnirange/core/EdgeBias.h>
 #include <omnirange/core/HitFilter.h>
 #include <omnirange/core/PixelClassifier.h>
 
@@ -47,6 +48,9 @@ struct Ray
 	/** Pixels at the base passed as the robot's own shadow (base_shadow); the
 	 * search's indices still count from the scanline's first pixel. */
 	int past_base{0};
+	/** The hit pixel's contrast with the floor before it (EdgeBias.h); NaN
+	 * without a hit or too near the base to tell. */
+	float edge_contrast{std::numeric_limits<float>::quiet_NaN()};
 };
 
 /** Bearing [rad] of scanline i of S: MRPT's angle of ray i in a scan of S
@@ -82,6 +86,10 @@ struct PolarScannerParams
 	 * negated), is taken for the robot's own
 	 * shadow (or body) and passed; 0: such a ray is too close (the paper's). */
 	double base_shadow{1.0};
+	/** [m] per contrast bin (EdgeBias.h), added to a hit's range: the width
+	 * of the darkened floor before an obstacle's foot, learned against the
+	 * laser by omnirange-train --learn; empty: none (the paper's). */
+	std::vector<double> edge_bias{};
 
 	static const OptionsTable<PolarScannerParams>& table();
 	/** Throws std::invalid_argument naming the key; the camera bounds the radii. */

@@ -87,6 +87,11 @@ struct LearningOptions
 	 * changes of light the held-aside frames do not, and CHROMA is the
 	 * space built to hold through them (docs/method.md, docs/results.md). */
 	bool chroma_on_tie{true};
+	/** Learn the winner's edge bias (EdgeBias.h) from its hits on every
+	 * selected pair, scanned with the histogram it runs with, and keep it
+	 * when it lowers the winner's score on the held-aside pairs. */
+	bool edge_bias{true};
+	int edge_bias_min_samples{30};  ///< laser-confirmed hits a contrast bin needs
 };
 
 /** One candidate and how it did on the held-aside pairs. */
@@ -137,6 +142,11 @@ struct LearningResult
 	int refit_pairs{0};  ///< pairs the final histogram was trained on (0: not refitted)
 	ValidationSplit split{ValidationSplit::Interleaved};
 	std::string validation;  ///< how the held-aside pairs were chosen and shown, for the ini's comment
+	/** [m] the edge bias learned for the winner (empty: none learned) and
+	 * the winner's score with it; `params` holds it only when that score is
+	 * lower than `best.score`. */
+	std::vector<double> edge_bias;
+	double edge_bias_score{0};
 };
 
 /** What each selected pair is for. With the Blocks split every pair

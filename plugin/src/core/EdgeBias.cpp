@@ -1,0 +1,40 @@
+#include "omnirange/core/EdgeBias.h"
+
+#include <cmath>
+
+namespace omnirange
+{
+namespace
+{
+/** Grey levels added to a brightness (B + G + R): near black, sensor noise
+ * alone makes large ratios (as in BrightnessStep.cpp). */
+constexpr double kDarkOffset = 12.0;
+}  // namespace
+
+float edgeContrast(const std::uint8_t* bgr, const std::int32_t* pixels, int hit)
+{
+	if (hit < kEdgeFloorFrom) return std::numeric_limits<float>::quiet_NaN();
+	const auto brightness = [&](int k) {
+		const std::uint8_t* px = bgr + 3 * static_cast<std::size_t>(pixels[k]);
+		return px[0] + px[1] + px[2] + kDarkOffset;
+	};
+	double floor = 0;
+	for (int k = hit - kEdgeFloorFrom; k <= hit - kEdgeFloorTo; ++k) floor += brightness(k);
+	floor /= kEdgeFloorFrom - kEdgeFloorTo + 1;
+	return static_cast<float>(std::log(brightness(hit) / floor));
+}
+
+int edgeContrastBin(double contrast)
+{
+	if (!std::isfinite(contrast)) return -1;
+	const double b = std::floor((contrast - kEdgeContrastFrom) / kEdgeContrastStep);
+	return b >= 0 && b < kEdgeContrastBins ? static_cast<int>(b) : -1;
+}
+
+double edgeBiasAt(const std::vector<double>& bias, double contrast)
+{
+	const int b = edgeContrastBin(contrast);
+	return b >= 0 && b < static_cast<int>(bias.size()) ? bias[b] : 0.0;
+}
+
+}  // namespace omnirange
