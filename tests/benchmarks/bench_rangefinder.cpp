@@ -132,6 +132,24 @@ void BM_FrameToScanWithBrightnessStep(benchmark::State& state)
 }
 BENCHMARK(BM_FrameToScanWithBrightnessStep)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// The room with a learned edge bias: every bin set, so each hit is moved.
+void BM_FrameToScanWithEdgeBias(benchmark::State& state)
+{
+	const Scene& scene = ::scene(false);
+	RangefinderParams p = scene.params;
+	p.scanner.edge_bias.assign(kEdgeContrastBins, 0.03);
+	const Rangefinder rf(p, scene.histogram);
+	int hits = 0;
+	for (auto _ : state)
+	{
+		const RangeScan scan = rf.process(scene.frame);
+		hits = scan.count(RayStatus::Hit);
+		benchmark::DoNotOptimize(scan.rays.data());
+	}
+	state.counters["hit_rays"] = hits;
+}
+BENCHMARK(BM_FrameToScanWithEdgeBias)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

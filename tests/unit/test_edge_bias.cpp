@@ -46,15 +46,25 @@ TEST(EdgeBias, BinsAreFiveHundredthsWideFromMinusAHalf)
 	EXPECT_EQ(edgeContrastBin(0.51), -1);
 	EXPECT_EQ(edgeContrastBin(-0.51), -1);  // darker than a shadow: the obstacle's face
 	EXPECT_EQ(edgeContrastBin(std::nan("")), -1);
-	const std::vector<double> bias{0.1, 0.2};
-	EXPECT_EQ(edgeBiasAt(bias, -0.46), 0.1);
-	EXPECT_EQ(edgeBiasAt(bias, -0.44), 0.2);
-	EXPECT_EQ(edgeBiasAt(bias, 0.0), 0.0);  // past the list
-	EXPECT_EQ(edgeBiasAt(bias, -0.7), 0.0);
-	EXPECT_EQ(edgeBiasAt(bias, std::nan("")), 0.0);
 }
 
-TEST(EdgeBias, TheScannerAddsTheHitsBinAndOnlyIt)
+TEST(EdgeBias, TheBiasIsLinearBetweenBinCentres)
+{
+	// Bin 0's centre is at -0.475, bin 1's at -0.425; the list stops at bin 1.
+	const std::vector<double> bias{0.1, 0.2};
+	EXPECT_NEAR(edgeBiasAt(bias, -0.475), 0.1, 1e-12);
+	EXPECT_NEAR(edgeBiasAt(bias, -0.49), 0.1, 1e-12);  // before the first centre: its value
+	EXPECT_NEAR(edgeBiasAt(bias, -0.46), 0.13, 1e-12);
+	EXPECT_NEAR(edgeBiasAt(bias, -0.45), 0.15, 1e-12);  // a bin edge: no jump
+	EXPECT_NEAR(edgeBiasAt(bias, -0.425), 0.2, 1e-12);
+	EXPECT_NEAR(edgeBiasAt(bias, -0.4), 0.1, 1e-12);  // halfway to bin 2, past the list (0)
+	EXPECT_EQ(edgeBiasAt(bias, 0.0), 0.0);
+	EXPECT_EQ(edgeBiasAt(bias, -0.7), 0.0);  // outside the bins
+	EXPECT_EQ(edgeBiasAt(bias, std::nan("")), 0.0);
+	EXPECT_EQ(edgeBiasAt({}, -0.45), 0.0);
+}
+
+TEST(EdgeBias, TheScannerAddsTheHitsBinsAndNoOthers)
 {
 	const OmniCameraModel cam{CameraParams{}};
 	const FreeSpaceClassifier classifier{test::floorHistogram(), 0.05};
@@ -66,8 +76,8 @@ TEST(EdgeBias, TheScannerAddsTheHitsBinAndOnlyIt)
 	const int bin = edgeContrastBin(contrast);
 	ASSERT_GE(bin, 0);
 	PolarScannerParams p;
-	p.edge_bias.assign(bin + 1, -0.2);  // every other bin would shorten the rays
-	p.edge_bias[bin] = 0.1;
+	p.edge_bias.assign(kEdgeContrastBins, -0.2);  // the bins two or more away would shorten the rays
+	for (int k = bin - 1; k <= bin + 1; ++k) p.edge_bias.at(k) = 0.1;
 	const auto after = PolarScanner(cam, p).scan(img, classifier);
 	ASSERT_EQ(after.size(), before.size());
 	for (std::size_t i = 0; i < after.size(); ++i)
@@ -77,7 +87,9 @@ TEST(EdgeBias, TheScannerAddsTheHitsBinAndOnlyIt)
 		EXPECT_NEAR(after[i].range, before[i].range + 0.1, 1e-5);
 		EXPECT_NEAR(after[i].hit_rho, cam.rhoFromDistance(after[i].range), 1e-3);
 	}
-	p.edge_bias.assign(bin, 0.1);  // the hits' bin is past the list: nothing added
+	p.edge_bias.assign(kEdgeContrastBins, 0.0);
+	for (int k = 0; k < kEdgeContrastBins; ++k)
+		if (std::abs(k - bin) >= 2) p.edge_bias[k] = 0.3;
 	const auto unchanged = PolarScanner(cam, p).scan(img, classifier);
 	for (std::size_t i = 0; i < after.size(); ++i) EXPECT_EQ(unchanged[i].range, before[i].range);
 	p.edge_bias.assign(21, 0.0);

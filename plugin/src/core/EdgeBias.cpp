@@ -1,5 +1,6 @@
 #include "omnirange/core/EdgeBias.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace omnirange
@@ -34,7 +35,15 @@ int edgeContrastBin(double contrast)
 double edgeBiasAt(const std::vector<double>& bias, double contrast)
 {
 	const int b = edgeContrastBin(contrast);
-	return b >= 0 && b < static_cast<int>(bias.size()) ? bias[b] : 0.0;
+	if (b < 0 || bias.empty()) return 0.0;
+	// Linear between bin centres, so a hit whose contrast wavers across a
+	// bin's edge from frame to frame does not jump by the bins' difference.
+	const auto at = [&](int k) { return k < static_cast<int>(bias.size()) ? bias[k] : 0.0; };
+	const double x = (contrast - kEdgeContrastFrom) / kEdgeContrastStep - 0.5;  // in bin centres
+	const int k0 = std::clamp(static_cast<int>(std::floor(x)), 0, kEdgeContrastBins - 1);
+	const int k1 = std::min(k0 + 1, kEdgeContrastBins - 1);
+	const double t = std::clamp(x - k0, 0.0, 1.0);
+	return (1 - t) * at(k0) + t * at(k1);
 }
 
 }  // namespace omnirange

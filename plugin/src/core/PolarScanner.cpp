@@ -104,7 +104,8 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 			 [](P& p) -> auto& { return p.base_shadow; })
 		.add("edge_bias", "m",
 			 "added to a hit's range, one value per bin of the hit's contrast (the natural log of its pixel's "
-			 "brightness over the floor's 4 to 8 pixels before it; bins of 0.05 from -0.5, at most 20 values): "
+			 "brightness over the floor's 4 to 8 pixels before it; bins of 0.05 from -0.5, at most 20 values, each at "
+			 "its bin's centre and linear between centres): "
 			 "the darkened floor before an obstacle's foot, learned against the laser by omnirange-train --learn "
 			 "(docs/method.md); empty: none",
 			 [](P& p) -> auto& { return p.edge_bias; });

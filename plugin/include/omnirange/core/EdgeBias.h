@@ -39,7 +39,9 @@ float edgeContrast(const std::uint8_t* bgr, const std::int32_t* pixels, int hit)
 int edgeContrastBin(double contrast);
 
 /** [m] what `bias` (one value per bin, from the first; shorter lists leave
- * the rest at 0) adds to a hit of this contrast. */
+ * the rest at 0) adds to a hit of this contrast: each value holds at its
+ * bin's centre, linear between centres (the first and last hold to their
+ * bins' outer edges); 0 outside the bins. */
 double edgeBiasAt(const std::vector<double>& bias, double contrast);
 
 }  // namespace omnirange
