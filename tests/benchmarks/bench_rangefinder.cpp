@@ -60,10 +60,9 @@ const Scene& scene(bool open)
 	return open ? field : room;
 }
 
-void BM_FrameToScan(benchmark::State& state)
+/** Times rf on the scene's frame, counting the last scan's hits. */
+void timeScans(benchmark::State& state, const Rangefinder& rf, const Scene& scene)
 {
-	const Scene& scene = ::scene(state.range(0) != 0);
-	const Rangefinder rf(scene.params, scene.histogram);
 	int hits = 0;
 	for (auto _ : state)
 	{
@@ -72,6 +71,12 @@ void BM_FrameToScan(benchmark::State& state)
 		benchmark::DoNotOptimize(scan.rays.data());
 	}
 	state.counters["hit_rays"] = hits;
+}
+
+void BM_FrameToScan(benchmark::State& state)
+{
+	const Scene& scene = ::scene(state.range(0) != 0);
+	timeScans(state, Rangefinder(scene.params, scene.histogram), scene);
 }
 // Arg 0: the room; arg 1: open floor, every ray to max range.
 BENCHMARK(BM_FrameToScan)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
@@ -138,15 +143,7 @@ void BM_FrameToScanWithEdgeBias(benchmark::State& state)
 	const Scene& scene = ::scene(false);
 	RangefinderParams p = scene.params;
 	p.scanner.edge_bias.assign(kEdgeContrastBins, 0.03);
-	const Rangefinder rf(p, scene.histogram);
-	int hits = 0;
-	for (auto _ : state)
-	{
-		const RangeScan scan = rf.process(scene.frame);
-		hits = scan.count(RayStatus::Hit);
-		benchmark::DoNotOptimize(scan.rays.data());
-	}
-	state.counters["hit_rays"] = hits;
+	timeScans(state, Rangefinder(p, scene.histogram), scene);
 }
 BENCHMARK(BM_FrameToScanWithEdgeBias)->Unit(benchmark::kMillisecond);
 

@@ -101,6 +101,9 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 						  other->score >= l.best.score ? "more" : "less");
 	if (l.overruled)
 		MRPT_LOG_INFO("CHROMA was kept on a tie: the lower score is within the held-aside frames' noise");
+	if (!l.edge_bias.empty())
+		MRPT_LOG_INFO_FMT("edge bias (by the hit's contrast): mean error %.4f m with it, %s", l.edge_bias_score,
+						  l.params.scanner.edge_bias.empty() ? "not kept" : "kept");
 	if (const std::string warning = poorLearningWarning(l); !warning.empty()) MRPT_LOG_WARN(warning);
 	RawlogTrainingResult r;
 	r.model = l.model;

@@ -5,12 +5,6 @@
 
 namespace omnirange
 {
-namespace
-{
-/** Grey levels added to each mean: near black, sensor noise alone makes large ratios. */
-constexpr double kDarkOffset = 12.0;  // 4 per channel
-}  // namespace
-
 int findBrightnessStep(const std::uint8_t* bgr, const std::int32_t* pixels, int count, int from, int to,
 					   double threshold, int window)
 {
@@ -18,7 +12,7 @@ int findBrightnessStep(const std::uint8_t* bgr, const std::int32_t* pixels, int 
 	from = std::max(from, window);
 	to = std::min(to, count - window);
 	if (from > to) return -1;
-	const double ratio = std::exp(threshold), offset = kDarkOffset * window;
+	const double ratio = std::exp(threshold), offset = kDarkBrightnessOffset * window;
 	// Brightness, B + G + R: a single channel is too noisy where it is dark
 	// (a green floor's blue), and a face the floor's colour differs in brightness.
 	const auto at = [&](int k) {

@@ -1,23 +1,18 @@
 #include "omnirange/core/EdgeBias.h"
 
+#include "omnirange/core/BrightnessStep.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace omnirange
 {
-namespace
-{
-/** Grey levels added to a brightness (B + G + R): near black, sensor noise
- * alone makes large ratios (as in BrightnessStep.cpp). */
-constexpr double kDarkOffset = 12.0;
-}  // namespace
-
 float edgeContrast(const std::uint8_t* bgr, const std::int32_t* pixels, int hit)
 {
 	if (hit < kEdgeFloorFrom) return std::numeric_limits<float>::quiet_NaN();
 	const auto brightness = [&](int k) {
 		const std::uint8_t* px = bgr + 3 * static_cast<std::size_t>(pixels[k]);
-		return px[0] + px[1] + px[2] + kDarkOffset;
+		return px[0] + px[1] + px[2] + kDarkBrightnessOffset;
 	};
 	double floor = 0;
 	for (int k = hit - kEdgeFloorFrom; k <= hit - kEdgeFloorTo; ++k) floor += brightness(k);

@@ -15,6 +15,10 @@
 
 namespace omnirange
 {
+/** Grey levels added to a brightness (B + G + R) before it enters a ratio:
+ * near black, sensor noise alone makes large ratios (4 per channel). */
+inline constexpr double kDarkBrightnessOffset = 12.0;
+
 /** The first step in [from, to] of a scanline (pixel k at `bgr + 3 *
  * pixels[k]`, `count` pixels) where a step of at least `threshold` (natural
  * log of the ratio of the window means), at its foot: the pixel, at most
