@@ -78,11 +78,14 @@ std::string studyCandidates(const LearningResult& learned, const RangefinderPara
 		for (int i = r.start; i < r.end; ++i) try
 			{
 				const LearnedCandidate& c = tried[i];
-				const Rangefinder rf(withCandidate(start, c), learned.models.at(histogramKeyOf(c)));
+				// The chosen one as it runs: with the edge bias learned for it.
+				const bool chosen = sameCandidate(c, learned.best);
+				const Rangefinder rf(chosen ? learned.params : withCandidate(start, c),
+									 learned.models.at(histogramKeyOf(c)));
 				TruthStats s;
 				for (const Frame& f : frames)
 					s.add(*f.truth, *rf.toObservation(rf.process(f.image), f.truth->timestamp));
-				rows[i] = rowOf(c, sameCandidate(c, learned.best), s);
+				rows[i] = rowOf(c, chosen, s);
 			}
 			catch (...)
 			{

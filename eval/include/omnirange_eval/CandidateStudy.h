@@ -27,7 +27,8 @@ struct CandidateStudyOptions
  * candidate's columns, its score on the held-aside frames, whether learning
  * chose it, and on the rest of the route (each with the histogram it would
  * have had, LearningResult::models, and the final options of `start`, the
- * wall fit too): rays within 2 and 5 cm of the truth, the mean absolute
+ * wall fit too; the chosen one with the edge bias learned for it, the others
+ * without, as it is learned for the winner only): rays within 2 and 5 cm of the truth, the mean absolute
  * error of the hits, rays missed and false obstacles (TruthComparison.h);
  * last, its error on each held-aside frame and the part of it where the
  * omnicam read nearer than the laser (LearnedCandidate).
