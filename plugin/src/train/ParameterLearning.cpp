@@ -124,7 +124,7 @@ double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& 
 
 /** The hits of `rf` on every pair `o` selects that a laser ray sees too,
  * with their contrast (EdgeBiasLearning.h). */
-std::vector<EdgeSample> edgeSamples(const Rangefinder& rf, const RawlogTrainingOptions& o, Progress* progress)
+std::vector<EdgeSample> edgeSamples(const Rangefinder& rf, const RawlogTrainingOptions& o)
 {
 	std::vector<EdgeSample> samples;
 	RawlogProcessor loop(o.input);
@@ -139,7 +139,7 @@ std::vector<EdgeSample> edgeSamples(const Rangefinder& rf, const RawlogTrainingO
 				if (p.status == PairStatus::Compared && omni->getScanRangeValidity(p.omni_ray))
 					samples.push_back({scan.rays[p.omni_ray].edge_contrast, p.difference()});
 		});
-	loop.run(progress);
+	loop.run();
 	return samples;
 }
 }  // namespace
@@ -305,7 +305,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 		// pairs, scored as every candidate was, agree.
 		RangefinderParams unfitted = r.params;
 		unfitted.walls.wall_fit = false;
-		r.edge_bias = learnEdgeBias(edgeSamples(Rangefinder(unfitted, r.model), o, nullptr), lo.edge_bias_min_samples);
+		r.edge_bias = learnEdgeBias(edgeSamples(Rangefinder(unfitted, r.model), o), lo.edge_bias_min_samples);
 		if (!r.edge_bias.empty())
 		{
 			RangefinderParams with = r.params;

@@ -6,8 +6,9 @@
 // first, and every candidate (those, Theta, obstacle_ratio, N, K, boundary
 // model) scans the held-aside images (as seen, or in changed light) and is
 // scored against their laser scans. The best one wins, and its histogram is
-// trained again on all the pairs. Only the laser is used: it is what a
-// user's training robot has.
+// trained again on all the pairs; last, the winner's edge bias (EdgeBias.h)
+// is learned with that histogram and kept if the held-aside pairs agree.
+// Only the laser is used: it is what a user's training robot has.
 
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/train/LaserComparison.h>
