@@ -3,6 +3,7 @@
 #include "omnirange_eval/CandidateStudy.h"
 #include "omnirange_eval/ExternalProgram.h"
 #include "omnirange_eval/Figures.h"
+#include "omnirange_eval/GuardedIcp.h"
 #include "omnirange_eval/IcpSlamIni.h"
 #include "omnirange_eval/SensoryFrameFormat.h"
 
@@ -27,7 +28,7 @@ namespace omnirange::eval
 {
 namespace
 {
-constexpr int kStages = 8;
+constexpr int kStages = 9;
 
 mrpt::maps::COccupancyGridMap2D loadGrid(const std::string& file)
 {
@@ -121,6 +122,7 @@ Metrics Experiment::runStages()
 	stage("accuracy", [&] { measureAccuracy(); });
 	stage("maps with ground-truth poses", [&] { mapWithGroundTruth(); });
 	stage("icp-slam", [&] { runIcpSlam(); });
+	stage("guarded ICP", [&] { runGuardedIcp(); });
 	stage("rbpf-slam", [&] { runRbpfSlam(); });
 	r_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	stage("report", [&] { writeReport(); });
@@ -273,7 +275,26 @@ void Experiment::scoreSlam(const std::string& engine, const SensorMaps& s, MapMe
 				 figures);
 }
 
-// 7. rbpf-slam (a Rao-Blackwellised particle filter), where the ini names its
+// 7. The odometry-guarded matcher (GuardedIcp.h), with each sensor's icp-slam
+// ini, on the scans icp-slam read; its keyframes are scored as icp-slam's.
+void Experiment::runGuardedIcp()
+{
+	std::vector<std::pair<std::string, cv::Mat>> figures{{"true map", paperStyle(truth_)}};
+	for (auto& s : r_.sensors)
+	{
+		const GuardedIcpResult g = eval::runGuardedIcp(out_ + "/only_" + s.tag + ".rawlog", s.label, kOdometryLabel,
+												 GuardedIcpOptions::fromIniFile(s.icp_ini));
+		MRPT_LOG_INFO_STREAM("guarded ICP, " << s.label << ": " << g.matches << " matches, " << g.refused_jumps
+											 << " refused, " << g.weak_directions << " weak directions left to the odometry");
+		fs::create_directories(out_ + "/guarded_icp_" + s.tag);
+		saveSimplemap(g.keyframes, out_ + "/guarded_icp_" + s.tag + "/_finalmap_.simplemap");
+		double unused = 0;
+		scoreSlam("guarded-icp", s, s.guarded, s.guarded_path, unused, figures);
+	}
+	writeImageAtomically(out_ + "/maps_guarded.png", sideBySide(figures));
+}
+
+// 8. rbpf-slam (a Rao-Blackwellised particle filter), where the ini names its
 // configuration: it reads only MRPT's action/sensory-frame format.
 void Experiment::runRbpfSlam()
 {
@@ -290,7 +311,7 @@ void Experiment::runRbpfSlam()
 	if (figures.size() > 1) writeImageAtomically(out_ + "/maps_rbpf.png", sideBySide(figures));
 }
 
-// 8. The report and the metrics.
+// 9. The report and the metrics.
 void Experiment::writeReport()
 {
 	const Metrics m = metricsOf(r_);

@@ -33,6 +33,7 @@ void writeMapsTable(std::ostream& o, const ExperimentResults& r)
 	o << "| odometry alone | - | - | - | - | - | " << fmt("%.3f m", odo.ate_rmse) << " | " << fmt("%.3f m", odo.final_xy)
 	  << ", " << fmt("%.1f deg", odo.final_yaw * 180 / M_PI) << " |\n";
 	for (const auto& s : r.sensors) slamRow("icp-slam", s, s.icp, s.icp_path);
+	for (const auto& s : r.sensors) slamRow("guarded ICP", s, s.guarded, s.guarded_path);
 	for (const auto& s : r.sensors)
 		if (!s.rbpf_ini.empty()) slamRow("rbpf-slam", s, s.rbpf, s.rbpf_path);
 }
@@ -95,6 +96,7 @@ Metrics metricsOf(const ExperimentResults& r)
 		};
 		maps("gt_", s.gt);
 		maps("icp_", s.icp), path("icp_", s.icp_path);
+		maps("guarded_", s.guarded), path("guarded_", s.guarded_path);
 		if (!s.rbpf_ini.empty()) maps("rbpf_", s.rbpf), path("rbpf_", s.rbpf_path);
 		if (r.has_check_region)
 		{
@@ -132,7 +134,10 @@ std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r
 	  << " m of the path counts as found within the same tolerance (recall). "
 	  << "Wall thickness: occupied area over the length of its centre line.\n\n";
 	writeMapsTable(o, r);
-	o << "\n![maps with ground-truth poses](maps_gt.png)\n\n![maps from icp-slam](maps_icp.png)\n\n";
+	o << "\n![maps with ground-truth poses](maps_gt.png)\n\n![maps from icp-slam](maps_icp.png)\n\n"
+	  << "Guarded ICP: icp-slam's matching with the same ini, where the odometry refuses a match that jumps "
+		 "farther than the wheels can err and keeps its own estimate along directions the scan cannot fix "
+		 "(docs/method.md).\n\n![maps from the guarded matcher](maps_guarded.png)\n\n";
 	const bool rbpf = std::any_of(r.sensors.begin(), r.sensors.end(), [](const auto& s) { return !s.rbpf_ini.empty(); });
 	if (rbpf)
 		o << "rbpf-slam is a particle filter, not seeded: its figures change from run to run.\n\n"

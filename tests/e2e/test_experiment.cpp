@@ -53,6 +53,12 @@ TEST(Experiment, SmallFactoryRunEndToEnd)
 	// path beats them (0.010 against 0.026 m ATE, measured).
 	EXPECT_GT(v("odometry_final_xy"), 0.1);
 	EXPECT_GT(v("odometry_ate_rmse"), v("icp_LASER_ate_rmse"));
+	// The odometry-guarded matcher ran for both sensors on the same scans; with
+	// the laser it follows the true path as icp-slam does.
+	EXPECT_TRUE(fs::exists(dir + "/report/maps_guarded.png"));
+	EXPECT_LT(v("guarded_LASER_ate_rmse"), 0.2);
+	EXPECT_GE(v("guarded_OMNISCAN_keyframes"), 5);
+	EXPECT_GT(v("odometry_ate_rmse"), v("guarded_LASER_ate_rmse"));
 	// rbpf-slam ran for both sensors on the frames MRPT's other format holds.
 	// Its inis fix the particle filter's seed, so a run repeats; over seeds 1
 	// to 5 and three unseeded runs the laser's ATE read 0.023 to 0.043 m and

@@ -1,7 +1,8 @@
 #pragma once
 // omnirange-experiment as a class: one ini describes a whole experiment;
 // run() simulates, trains, scans, measures the accuracy, builds maps with
-// ground-truth poses and with MRPT's icp-slam, and writes a report folder.
+// ground-truth poses, with MRPT's icp-slam and with the odometry-guarded
+// matcher (GuardedIcp.h), and writes a report folder.
 // One method per stage; the report is written from ExperimentResults.
 
 #include <omnirange_eval/Accuracy.h>
@@ -33,8 +34,8 @@ struct SensorMaps
 	std::string map_ini, icp_ini;  ///< observations2map and icp-slam configurations
 	bool invalid_is_free{true};  ///< see emptyLike()
 	std::string rbpf_ini;  ///< rbpf-slam configuration; empty: not run
-	MapMetrics gt, icp, rbpf;
-	PathError icp_path, rbpf_path;
+	MapMetrics gt, icp, guarded, rbpf;
+	PathError icp_path, guarded_path, rbpf_path;
 	double gt_check_marked{0}, icp_check_marked{0};  ///< [m] in the check region
 };
 
@@ -83,6 +84,7 @@ class Experiment : public mrpt::system::COutputLogger
 	void measureAccuracy();
 	void mapWithGroundTruth();
 	void runIcpSlam();
+	void runGuardedIcp();
 	void runRbpfSlam();
 	void writeReport();
 	/** A built map against the true map: its figure, check region and metrics. */

@@ -1,0 +1,216 @@
+#include "omnirange_eval/GuardedIcp.h"
+
+#include <omnirange/io/RawlogProcessor.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose3DPDFGaussian.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace omnirange::eval
+{
+namespace
+{
+constexpr double kDeg = M_PI / 180;
+
+double positiveKey(const mrpt::config::CConfigFileBase& ini, const std::string& section, const std::string& key,
+				   double fallback)
+{
+	const double v = ini.read_double(section, key, fallback);
+	if (!std::isfinite(v) || v < 0)
+		throw std::runtime_error("[" + section + "] " + key + " must be a number >= 0, not " + std::to_string(v));
+	return v;
+}
+
+/** Odometric motion, which bounds how far the wheels can have erred. */
+struct Motion
+{
+	double lin{0}, ang{0};  ///< odometric motion since the last accepted match [m], [rad]
+};
+}  // namespace
+
+GuardedIcpOptions GuardedIcpOptions::fromIni(const mrpt::config::CConfigFileBase& ini)
+{
+	GuardedIcpOptions o;
+	o.icp.loadFromConfigFile(ini, "ICP");
+	const std::string app = "MappingApplication";
+	o.localization_lin = positiveKey(ini, app, "localizationLinDistance", o.localization_lin);
+	o.localization_ang_deg = positiveKey(ini, app, "localizationAngDistance", o.localization_ang_deg);
+	o.insertion_lin = positiveKey(ini, app, "insertionLinDistance", o.insertion_lin);
+	o.insertion_ang_deg = positiveKey(ini, app, "insertionAngDistance", o.insertion_ang_deg);
+	o.min_goodness = positiveKey(ini, app, "minICPgoodnessToAccept", o.min_goodness);
+	o.min_dist_between_points = positiveKey(ini, "MappingApplication_pointsMap_00_insertOpts",
+											"minDistBetweenLaserPoints", o.min_dist_between_points);
+	const std::string g = "odometry_guard";
+	o.max_jump = positiveKey(ini, g, "max_jump", o.max_jump);
+	o.max_jump_per_metre = positiveKey(ini, g, "max_jump_per_metre", o.max_jump_per_metre);
+	o.max_turn_deg = positiveKey(ini, g, "max_turn_deg", o.max_turn_deg);
+	o.max_turn_per_radian = positiveKey(ini, g, "max_turn_per_radian", o.max_turn_per_radian);
+	o.weak_direction_ratio = positiveKey(ini, g, "weak_direction_ratio", o.weak_direction_ratio);
+	if (o.weak_direction_ratio > 1) throw std::runtime_error("[odometry_guard] weak_direction_ratio must be in [0, 1]");
+	return o;
+}
+
+GuardedIcpOptions GuardedIcpOptions::fromIniFile(const std::string& file)
+{
+	if (!std::filesystem::is_regular_file(file)) throw std::runtime_error("cannot read ini '" + file + "'");
+	return fromIni(mrpt::config::CConfigFile(file));
+}
+
+Eigen::Matrix2d translationInformation(const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	const int n = static_cast<int>(scan.getScanSize());
+	Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
+	if (n < 5) return H;
+	// A full circle's first and last rays are neighbours; a laser's are not.
+	// Ray i is at -aperture/2 + i aperture/(n-1) (MRPT's convention, circles too).
+	const bool circle = scan.aperture > 2 * M_PI * (1 - 1.5 / n);
+	const double step = scan.aperture / (n - 1);
+	std::vector<Eigen::Vector2d> p(n);
+	for (int i = 0; i < n; ++i)
+	{
+		const double a = scan.sensorPose.yaw() + (scan.rightToLeft ? 1 : -1) * (-scan.aperture / 2 + step * i);
+		p[i] = scan.getScanRange(i) * Eigen::Vector2d(std::cos(a), std::sin(a));
+	}
+	constexpr int kSide = 2;  // rays either side that give the wall's direction
+	constexpr double kNear = 0.2;  // [m] farther apart, the neighbours are another object
+	const auto valid = [&](int i) { return (circle || (i >= 0 && i < n)) && scan.getScanRangeValidity((i + n) % n); };
+	for (int i = 0; i < n; ++i)
+	{
+		if (!valid(i) || !valid(i - kSide) || !valid(i + kSide)) continue;
+		const Eigen::Vector2d& a = p[(i - kSide + n) % n];
+		const Eigen::Vector2d& b = p[(i + kSide) % n];
+		if ((a - p[i]).norm() > kNear || (b - p[i]).norm() > kNear) continue;
+		const Eigen::Vector2d d = b - a;
+		if (d.norm() < 1e-9) continue;
+		const Eigen::Vector2d normal(-d.y() / d.norm(), d.x() / d.norm());
+		H += normal * normal.transpose();
+	}
+	return H;
+}
+
+mrpt::math::TPose2D keepConstrainedCorrection(const mrpt::math::TPose2D& predicted, const mrpt::math::TPose2D& matched,
+											  const Eigen::Matrix2d& information, double weak_ratio, int& weak)
+{
+	const double c = std::cos(matched.phi), s = std::sin(matched.phi);
+	Eigen::Matrix2d R;
+	R << c, -s, s, c;
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(R * information * R.transpose());
+	const Eigen::Vector2d correction(matched.x - predicted.x, matched.y - predicted.y);
+	const double strongest = es.eigenvalues()[1];  // ascending
+	Eigen::Vector2d kept = Eigen::Vector2d::Zero();
+	for (int k = 0; k < 2; ++k)
+	{
+		const Eigen::Vector2d v = es.eigenvectors().col(k);
+		if (strongest > 0 && es.eigenvalues()[k] >= weak_ratio * strongest)
+			kept += v * v.dot(correction);
+		else
+			++weak;
+	}
+	return {predicted.x + kept.x(), predicted.y + kept.y(), matched.phi};
+}
+
+GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& scan_label,
+							   const std::string& odometry_label, const GuardedIcpOptions& o)
+{
+	using mrpt::obs::CObservation2DRangeScan;
+	using mrpt::obs::CObservationOdometry;
+	using mrpt::poses::CPose2D;
+	GuardedIcpResult r;
+	mrpt::maps::CSimplePointsMap map;
+	map.insertionOptions.minDistBetweenLaserPoints = static_cast<float>(o.min_dist_between_points);
+	map.insertionOptions.fuseWithExisting = false;
+	map.insertionOptions.isPlanarMap = true;
+	mrpt::slam::CICP icp;
+	icp.options = o.icp;
+
+	CPose2D pose, last_odometry, last_match, last_keyframe;
+	bool have_odometry = false;
+	std::size_t odometry_seen = 0;
+	Motion since;  // odometric motion since the last accepted match
+
+	RawlogProcessor loop(rawlog);
+	loop.on<CObservationOdometry>(odometry_label, [&](const CObservationOdometry::Ptr& odo) {
+		++odometry_seen;
+		if (have_odometry)
+		{
+			const CPose2D u = odo->odometry - last_odometry;
+			pose = pose + u;
+			since.lin += std::hypot(u.x(), u.y());
+			since.ang += std::abs(u.phi());
+		}
+		last_odometry = odo->odometry;
+		have_odometry = true;
+	});
+	const auto insertKeyframe = [&](const CObservation2DRangeScan::Ptr& scan) {
+		map.insertObservation(*scan, mrpt::poses::CPose3D(pose));
+		auto sf = mrpt::obs::CSensoryFrame::Create();
+		sf->insert(scan);
+		auto pdf = mrpt::poses::CPose3DPDFGaussian::Create();
+		pdf->mean = mrpt::poses::CPose3D(pose);
+		r.keyframes.insert(pdf, sf);
+		last_keyframe = pose;
+	};
+	loop.on<CObservation2DRangeScan>(scan_label, [&](const CObservation2DRangeScan::Ptr& scan) {
+		const double t = mrpt::Clock::toDouble(scan->timestamp);
+		if (map.empty())
+		{
+			insertKeyframe(scan);
+			last_match = pose;
+			r.path.push_back({t, pose});
+			return;
+		}
+		const CPose2D moved = pose - last_match;
+		if (std::hypot(moved.x(), moved.y()) >= o.localization_lin || std::abs(moved.phi()) >= o.localization_ang_deg * kDeg)
+		{
+			last_match = pose;
+			mrpt::maps::CSimplePointsMap points;
+			points.insertionOptions.isPlanarMap = true;
+			points.insertObservation(*scan);
+			mrpt::slam::CICP::TReturnInfo info;
+			const auto pdf = icp.Align(&map, &points, pose, info);
+			if (!pdf || info.goodness < o.min_goodness)
+				++r.poor_matches;
+			else
+			{
+				const CPose2D matched = pdf->getMeanVal();
+				const CPose2D jump = matched - pose;
+				const bool too_far = std::hypot(jump.x(), jump.y()) > o.max_jump + o.max_jump_per_metre * since.lin ||
+									 std::abs(jump.phi()) > o.max_turn_deg * kDeg + o.max_turn_per_radian * since.ang;
+				if (too_far)
+					++r.refused_jumps;
+				else
+				{
+					pose = CPose2D(keepConstrainedCorrection(pose.asTPose(), matched.asTPose(),
+															 translationInformation(*scan), o.weak_direction_ratio,
+															 r.weak_directions));
+					++r.matches;
+					since = {};
+				}
+			}
+		}
+		const CPose2D from_keyframe = pose - last_keyframe;
+		if (std::hypot(from_keyframe.x(), from_keyframe.y()) >= o.insertion_lin ||
+			std::abs(from_keyframe.phi()) >= o.insertion_ang_deg * kDeg)
+			insertKeyframe(scan);
+		r.path.push_back({t, pose});
+	});
+	loop.run();
+	if (r.path.empty())
+		throw std::runtime_error("no " + scan_label + " scan in '" + rawlog + "' (" + loop.describeLabels() + ")");
+	if (odometry_seen == 0)
+		throw std::runtime_error("no " + odometry_label + " odometry in '" + rawlog + "' (" + loop.describeLabels() +
+								 "): the guard needs the wheels");
+	return r;
+}
+
+}  // namespace omnirange::eval

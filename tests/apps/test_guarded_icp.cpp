@@ -1,0 +1,184 @@
+// The odometry-guarded matcher: what a scan can fix and what it cannot, and
+// the guard's refusal, on scans drawn from walls whose places are known.
+#include <omnirange_eval/GuardedIcp.h>
+
+#include <omnirange/io/SensorLabels.h>
+
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <vector>
+
+using namespace omnirange;
+using namespace omnirange::eval;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+struct Wall
+{
+	double x0, y0, x1, y1;
+};
+const std::vector<Wall> kCorridor{{-50, -1, 50, -1}, {-50, 1, 50, 1}};  // 2 m wide, no end in sight
+const std::vector<Wall> kRoom{{-2, -2, 2, -2}, {2, -2, 2, 2}, {2, 2, -2, 2}, {-2, 2, -2, -2}};  // 4 x 4 m
+
+// A 360-ray scan of `walls` from `pose`, out to 3.8 m (no hit beyond).
+mrpt::obs::CObservation2DRangeScan::Ptr drawScan(const std::vector<Wall>& walls, const CPose2D& pose, double t)
+{
+	constexpr int n = 360;
+	constexpr double max_range = 3.8;
+	auto s = mrpt::obs::CObservation2DRangeScan::Create();
+	s->sensorLabel = "OMNISCAN";
+	s->timestamp = mrpt::Clock::fromDouble(t);
+	s->aperture = 2 * M_PI;
+	s->rightToLeft = true;
+	s->maxRange = max_range;
+	s->resizeScan(n);
+	for (int i = 0; i < n; ++i)
+	{
+		const double a = pose.phi() - M_PI + i * 2 * M_PI / (n - 1);
+		const double dx = std::cos(a), dy = std::sin(a);
+		double best = std::numeric_limits<double>::infinity();
+		for (const auto& w : walls)
+		{
+			// Ray (pose + r d) against the segment (w0 + u (w1 - w0)).
+			const double ex = w.x1 - w.x0, ey = w.y1 - w.y0;
+			const double den = dx * ey - dy * ex;
+			if (std::abs(den) < 1e-12) continue;
+			const double qx = w.x0 - pose.x(), qy = w.y0 - pose.y();
+			const double r = (qx * ey - qy * ex) / den, u = (qx * dy - qy * dx) / den;
+			if (r > 0 && u >= 0 && u <= 1) best = std::min(best, r);
+		}
+		s->setScanRange(i, static_cast<float>(std::min(best, max_range)));
+		s->setScanRangeValidity(i, best < max_range);
+	}
+	return s;
+}
+
+// A rawlog of a drive: at each step the odometry reading, then the scan drawn
+// from `scan_pose(step)`. Removed when it goes.
+struct Drive
+{
+	Drive(const std::string& name, int steps, const std::function<CPose2D(int)>& odometry,
+		  const std::function<mrpt::obs::CObservation2DRangeScan::Ptr(int, double)>& scan)
+		: file(testing::TempDir() + name)
+	{
+		mrpt::io::CFileGZOutputStream out(file);
+		auto a = mrpt::serialization::archiveFrom(out);
+		for (int i = 0; i < steps; ++i)
+		{
+			const double t = 1000.0 + i;
+			auto odo = mrpt::obs::CObservationOdometry::Create();
+			odo->sensorLabel = kOdometryLabel;
+			odo->timestamp = mrpt::Clock::fromDouble(t);
+			odo->odometry = odometry(i);
+			a << *odo << *scan(i, t);
+		}
+	}
+	~Drive() { std::filesystem::remove(file); }
+	std::string file;
+};
+
+Eigen::Vector2d eigenvalues(const Eigen::Matrix2d& m) { return Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(m).eigenvalues(); }
+}  // namespace
+
+TEST(GuardedIcp, ACorridorFixesOnlyTheDirectionAcrossIt)
+{
+	// The robot turned 0.3 rad: in its frame the corridor runs at -0.3 rad.
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> corridor(
+		translationInformation(*drawScan(kCorridor, CPose2D(0, 0, 0.3), 0)));
+	EXPECT_LT(corridor.eigenvalues()[0], 0.02 * corridor.eigenvalues()[1]);  // along the corridor: nothing
+	EXPECT_GT(std::abs(corridor.eigenvectors().col(0).dot(Eigen::Vector2d(std::cos(0.3), -std::sin(0.3)))), 0.999);
+	const Eigen::Vector2d room = eigenvalues(translationInformation(*drawScan(kRoom, CPose2D(0.3, -0.2, 0.5), 0)));
+	EXPECT_GT(room[0], 0.3 * room[1]);  // four walls: both directions
+}
+
+TEST(GuardedIcp, TheCorrectionAlongAWeakDirectionIsDropped)
+{
+	const Eigen::Matrix2d corridor = translationInformation(*drawScan(kCorridor, CPose2D(), 0));
+	int weak = 0;
+	const auto kept = keepConstrainedCorrection({1, 0, 0}, {1.3, 0.05, 0}, corridor, 0.1, weak);
+	EXPECT_NEAR(kept.x, 1.0, 1e-3);  // the odometry's, along the corridor
+	EXPECT_NEAR(kept.y, 0.05, 1e-3);  // the match's, across it
+	EXPECT_EQ(weak, 1);
+	const Eigen::Matrix2d room = translationInformation(*drawScan(kRoom, CPose2D(), 0));
+	weak = 0;
+	const auto all = keepConstrainedCorrection({1, 0, 0}, {1.3, 0.05, 0.02}, room, 0.1, weak);
+	EXPECT_NEAR(all.x, 1.3, 1e-3);
+	EXPECT_NEAR(all.y, 0.05, 1e-3);
+	EXPECT_NEAR(all.phi, 0.02, 1e-9);  // the heading is always the match's
+	EXPECT_EQ(weak, 0);
+}
+
+TEST(GuardedIcp, ScansCorrectWheelsThatReadLong)
+{
+	// The wheels read 10 % long across a room; the room's walls fix every
+	// direction, so the matches must bring the path back to the truth.
+	const auto truth = [](int i) { return CPose2D(-1.2 + 0.1 * i, 0.1, 0); };
+	const Drive d("guarded_long_wheels.rawlog", 25, [&](int i) { return CPose2D(-1.2 + 0.11 * i, 0.1, 0); },
+				  [&](int i, double t) { return drawScan(kRoom, truth(i), t); });
+	const GuardedIcpResult r = runGuardedIcp(d.file, "OMNISCAN", kOdometryLabel, GuardedIcpOptions{});
+	ASSERT_EQ(r.path.size(), 25u);
+	// A match every 0.2 m of odometry (the ini's localizationLinDistance):
+	// between two, the wheels' 1 cm per step adds up again, to 3 cm at most.
+	double worst = 0;
+	for (int i = 0; i < 25; ++i)
+	{
+		const CPose2D p = CPose2D(-1.2, 0.1, 0) + r.path[i].pose;  // the path starts at the origin
+		worst = std::max(worst, std::hypot(p.x() - truth(i).x(), p.y() - truth(i).y()));
+	}
+	EXPECT_LT(worst, 0.04);  // the wheels alone: 0.24 m at the end
+	EXPECT_GT(r.matches, 5);
+	EXPECT_EQ(r.refused_jumps, 0);
+}
+
+TEST(GuardedIcp, InACorridorTheWheelsKeepTheLength)
+{
+	// Exact wheels down a corridor whose end is out of sight: no scan can say
+	// how far the robot went, so the path must be the wheels' along it.
+	const auto truth = [](int i) { return CPose2D(0.1 * i, 0.2, 0); };
+	const Drive d("guarded_corridor.rawlog", 40, truth, [&](int i, double t) { return drawScan(kCorridor, truth(i), t); });
+	const GuardedIcpResult r = runGuardedIcp(d.file, "OMNISCAN", kOdometryLabel, GuardedIcpOptions{});
+	const CPose2D end = truth(0) + r.path.back().pose;
+	EXPECT_NEAR(end.x(), truth(39).x(), 0.005);
+	EXPECT_NEAR(end.y(), 0.2, 0.01);
+	EXPECT_GT(r.weak_directions, 5);
+}
+
+TEST(GuardedIcp, AMatchThatJumpsFartherThanTheWheelsCanErrIsRefused)
+{
+	// One scan is drawn 0.4 m to the side of where the (exact) wheels put the
+	// robot: what a match on the wrong wall does. Unguarded, the path jumps;
+	// guarded, it stays on the wheels' estimate.
+	const auto truth = [](int i) { return CPose2D(-1.0 + 0.25 * i, 0, 0); };
+	const auto scans = [&](int i, double t) { return drawScan(kRoom, i == 5 ? truth(i) + CPose2D(0, 0.4, 0) : truth(i), t); };
+	const Drive d("guarded_jump.rawlog", 9, truth, scans);
+	const GuardedIcpResult guarded = runGuardedIcp(d.file, "OMNISCAN", kOdometryLabel, GuardedIcpOptions{});
+	EXPECT_EQ(guarded.refused_jumps, 1);
+	EXPECT_NEAR(guarded.path[5].pose.y(), 0.0, 0.01);
+	GuardedIcpOptions open;
+	open.max_jump = 10;
+	const GuardedIcpResult unguarded = runGuardedIcp(d.file, "OMNISCAN", kOdometryLabel, open);
+	EXPECT_EQ(unguarded.refused_jumps, 0);
+	EXPECT_GT(std::abs(unguarded.path[5].pose.y()), 0.3);
+}
+
+TEST(GuardedIcp, ARawlogWithoutOdometryIsRefused)
+{
+	const std::string file = testing::TempDir() + "guarded_no_odometry.rawlog";
+	{
+		mrpt::io::CFileGZOutputStream out(file);
+		auto a = mrpt::serialization::archiveFrom(out);
+		a << *drawScan(kRoom, CPose2D(), 1000) << *drawScan(kRoom, CPose2D(0.3, 0, 0), 1001);
+	}
+	EXPECT_THROW(runGuardedIcp(file, "OMNISCAN", kOdometryLabel, GuardedIcpOptions{}), std::runtime_error);
+	std::filesystem::remove(file);
+}
