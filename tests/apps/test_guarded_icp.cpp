@@ -1,6 +1,8 @@
 // The odometry-guarded matcher: what a scan can fix and what it cannot, and
 // the guard's refusal, on scans drawn from walls whose places are known.
+#include <omnirange_apps/SlamApp.h>
 #include <omnirange_eval/GuardedIcp.h>
+#include <omnirange_eval/Trajectory.h>
 
 #include <omnirange/io/SensorLabels.h>
 
@@ -13,6 +15,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -181,4 +184,38 @@ TEST(GuardedIcp, ARawlogWithoutOdometryIsRefused)
 	}
 	EXPECT_THROW(runGuardedIcp(file, "OMNISCAN", kOdometryLabel, GuardedIcpOptions{}), std::runtime_error);
 	std::filesystem::remove(file);
+}
+
+TEST(GuardedIcp, TheAppWritesAPathAndKeyframesAsIcpSlamDoes)
+{
+	const auto truth = [](int i) { return CPose2D(-1.2 + 0.1 * i, 0.1, 0); };
+	const Drive d("guarded_app.rawlog", 25, truth, [&](int i, double t) { return drawScan(kRoom, truth(i), t); });
+	const std::string dir = testing::TempDir() + "guarded_app_out", ini = testing::TempDir() + "guarded_app.ini";
+	std::filesystem::remove_all(dir);
+	std::ofstream(ini) << "[MappingApplication]\ninsertionLinDistance = 0.5\n[odometry_guard]\nmax_jump = 0.05\n";
+	app::SlamApp::Options o;
+	o.input = d.file, o.ini = ini, o.output = dir, o.verbosity = mrpt::system::LVL_ERROR;
+	const GuardedIcpResult r = app::SlamApp(o).run();
+	std::ifstream path(dir + "/log_estimated_path.txt");
+	std::string line;
+	int rows = 0;
+	while (std::getline(path, line))
+		if (!line.empty() && line[0] != '%') ++rows;
+	EXPECT_EQ(rows, 25);  // one pose per scan
+	const auto keyframes = simplemapKeyframes(loadSimplemap(dir + "/_finalmap_.simplemap"));
+	EXPECT_EQ(keyframes.size(), r.keyframes.size());
+	EXPECT_GE(keyframes.size(), 5u);  // every 0.5 m of 2.4 m, and the first
+	// A negative distance in the guard's section is refused, naming the key.
+	std::ofstream(ini) << "[odometry_guard]\nmax_jump = -1\n";
+	try
+	{
+		app::SlamApp(o).run();
+		ADD_FAILURE() << "a negative max_jump was accepted";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("max_jump"), std::string::npos) << e.what();
+	}
+	std::filesystem::remove_all(dir);
+	std::filesystem::remove(ini);
 }

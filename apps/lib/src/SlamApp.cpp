@@ -1,0 +1,64 @@
+#include "omnirange_apps/SlamApp.h"
+
+#include "omnirange_apps/CommandLine.h"
+
+#include <omnirange_eval/GridMaps.h>
+
+#include <omnirange/io/AtomicWrite.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace omnirange::app
+{
+SlamApp::Options SlamApp::parse(int argc, const char* const* argv)
+{
+	Options o;
+	TCLAP::CmdLine cmd("omnirange-slam: a path and a map from range scans and odometry, by ICP guarded by the odometry",
+					   ' ', "0.1");
+	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with the scans and the odometry", true, "", "RAWLOG", cmd);
+	TCLAP::ValueArg<std::string> ini("c", "config", "icp-slam ini ([MappingApplication], [ICP]; optional [odometry_guard])",
+									 true, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> out("o", "output", "folder for _finalmap_.simplemap and log_estimated_path.txt", true, "",
+									 "DIR", cmd);
+	TCLAP::ValueArg<std::string> label("", "label", "label of the scans", false, o.scan_label, "LABEL", cmd);
+	TCLAP::ValueArg<std::string> odometry("", "odometry-label", "label of the odometry", false, o.odometry_label,
+										  "LABEL", cmd);
+	VerbosityArgs verbosity(cmd);
+	parseArgs(cmd, argc, argv);
+	o.input = in.getValue(), o.ini = ini.getValue(), o.output = out.getValue();
+	o.scan_label = label.getValue(), o.odometry_label = odometry.getValue();
+	o.verbosity = verbosity.level();
+	return o;
+}
+
+SlamApp::SlamApp(Options o) : mrpt::system::COutputLogger("omnirange-slam"), o_(std::move(o))
+{
+	setMinLoggingLevel(o_.verbosity);
+}
+
+eval::GuardedIcpResult SlamApp::run()
+{
+	const std::string map = o_.output + "/_finalmap_.simplemap", path = o_.output + "/log_estimated_path.txt";
+	requireOutputsAreNotInputs({map, path}, {o_.input, o_.ini});
+	const auto options = eval::GuardedIcpOptions::fromIniFile(o_.ini);
+	const eval::GuardedIcpResult r = eval::runGuardedIcp(o_.input, o_.scan_label, o_.odometry_label, options);
+	std::filesystem::create_directories(o_.output);
+	eval::saveSimplemap(r.keyframes, map);
+	std::string text = "% time [s], x [m], y [m], phi [rad]: the estimated pose at every scan\n";
+	char line[128];
+	for (const auto& p : r.path)
+	{
+		std::snprintf(line, sizeof line, "%.6f %.6f %.6f %.6f\n", p.t, p.pose.x(), p.pose.y(), p.pose.phi());
+		text += line;
+	}
+	writeFileAtomically(path, text);
+	MRPT_LOG_INFO_STREAM(r.path.size() << " scans, " << r.keyframes.size() << " keyframes; " << r.matches
+									   << " matches accepted, " << r.refused_jumps << " refused as jumps, "
+									   << r.poor_matches << " too poor; " << r.weak_directions
+									   << " directions left to the odometry");
+	return r;
+}
+
+}  // namespace omnirange::app
