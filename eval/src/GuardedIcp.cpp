@@ -42,20 +42,25 @@ GuardedIcpOptions GuardedIcpOptions::fromIni(const mrpt::config::CConfigFileBase
 {
 	GuardedIcpOptions o;
 	o.icp.loadFromConfigFile(ini, "ICP");
-	const std::string app = "MappingApplication";
-	o.localization_lin = positiveKey(ini, app, "localizationLinDistance", o.localization_lin);
-	o.localization_ang_deg = positiveKey(ini, app, "localizationAngDistance", o.localization_ang_deg);
-	o.insertion_lin = positiveKey(ini, app, "insertionLinDistance", o.insertion_lin);
-	o.insertion_ang_deg = positiveKey(ini, app, "insertionAngDistance", o.insertion_ang_deg);
-	o.min_goodness = positiveKey(ini, app, "minICPgoodnessToAccept", o.min_goodness);
-	o.min_dist_between_points = positiveKey(ini, "MappingApplication_pointsMap_00_insertOpts",
-											"minDistBetweenLaserPoints", o.min_dist_between_points);
-	const std::string g = "odometry_guard";
-	o.max_jump = positiveKey(ini, g, "max_jump", o.max_jump);
-	o.max_jump_per_metre = positiveKey(ini, g, "max_jump_per_metre", o.max_jump_per_metre);
-	o.max_turn_deg = positiveKey(ini, g, "max_turn_deg", o.max_turn_deg);
-	o.max_turn_per_radian = positiveKey(ini, g, "max_turn_per_radian", o.max_turn_per_radian);
-	o.weak_direction_ratio = positiveKey(ini, g, "weak_direction_ratio", o.weak_direction_ratio);
+	const std::string app = "MappingApplication", points = "MappingApplication_pointsMap_00_insertOpts",
+					  guard = "odometry_guard";
+	const struct
+	{
+		const std::string& section;
+		const char* key;
+		double& value;
+	} keys[] = {{app, "localizationLinDistance", o.localization_lin},
+				{app, "localizationAngDistance", o.localization_ang_deg},
+				{app, "insertionLinDistance", o.insertion_lin},
+				{app, "insertionAngDistance", o.insertion_ang_deg},
+				{app, "minICPgoodnessToAccept", o.min_goodness},
+				{points, "minDistBetweenLaserPoints", o.min_dist_between_points},
+				{guard, "max_jump", o.max_jump},
+				{guard, "max_jump_per_metre", o.max_jump_per_metre},
+				{guard, "max_turn_deg", o.max_turn_deg},
+				{guard, "max_turn_per_radian", o.max_turn_per_radian},
+				{guard, "weak_direction_ratio", o.weak_direction_ratio}};
+	for (const auto& k : keys) k.value = positiveKey(ini, k.section, k.key, k.value);
 	if (o.weak_direction_ratio > 1) throw std::runtime_error("[odometry_guard] weak_direction_ratio must be in [0, 1]");
 	return o;
 }
@@ -72,13 +77,11 @@ Eigen::Matrix2d translationInformation(const mrpt::obs::CObservation2DRangeScan&
 	Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
 	if (n < 5) return H;
 	// A full circle's first and last rays are neighbours; a laser's are not.
-	// Ray i is at -aperture/2 + i aperture/(n-1) (MRPT's convention, circles too).
 	const bool circle = scan.aperture > 2 * M_PI * (1 - 1.5 / n);
-	const double step = scan.aperture / (n - 1);
 	std::vector<Eigen::Vector2d> p(n);
 	for (int i = 0; i < n; ++i)
 	{
-		const double a = scan.sensorPose.yaw() + (scan.rightToLeft ? 1 : -1) * (-scan.aperture / 2 + step * i);
+		const double a = scan.sensorPose.yaw() + scan.getScanAngle(i);
 		p[i] = scan.getScanRange(i) * Eigen::Vector2d(std::cos(a), std::sin(a));
 	}
 	constexpr int kSide = 2;  // rays either side that give the wall's direction
