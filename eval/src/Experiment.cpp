@@ -285,7 +285,8 @@ void Experiment::runGuardedIcp()
 		const GuardedIcpResult g = eval::runGuardedIcp(out_ + "/only_" + s.tag + ".rawlog", s.label, kOdometryLabel,
 												 GuardedIcpOptions::fromIniFile(s.icp_ini));
 		MRPT_LOG_INFO_STREAM("guarded ICP, " << s.label << ": " << g.matches << " matches, " << g.refused_jumps
-											 << " refused, " << g.weak_directions << " weak directions left to the odometry");
+											 << " refused, " << g.weak_directions << " weak directions left to the odometry, "
+											 << g.loops << " loops closed");
 		fs::create_directories(out_ + "/guarded_icp_" + s.tag);
 		saveSimplemap(g.keyframes, out_ + "/guarded_icp_" + s.tag + "/_finalmap_.simplemap");
 		double unused = 0;

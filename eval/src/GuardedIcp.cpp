@@ -62,6 +62,7 @@ GuardedIcpOptions GuardedIcpOptions::fromIni(const mrpt::config::CConfigFileBase
 				{guard, "weak_direction_ratio", o.weak_direction_ratio}};
 	for (const auto& k : keys) k.value = positiveKey(ini, k.section, k.key, k.value);
 	if (o.weak_direction_ratio > 1) throw std::runtime_error("[odometry_guard] weak_direction_ratio must be in [0, 1]");
+	o.loops = LoopClosureOptions::fromIni(ini);
 	return o;
 }
 
@@ -136,10 +137,21 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 	mrpt::slam::CICP icp;
 	icp.options = o.icp;
 
-	CPose2D pose, last_odometry, last_match, last_keyframe;
+	KeyframeGraph graph(o.loops, o.icp, o.weak_direction_ratio);
+	CPose2D pose, last_odometry, last_match;
 	bool have_odometry = false;
 	std::size_t odometry_seen = 0;
+	double driven = 0;  // odometric distance from the start
 	Motion since;  // odometric motion since the last accepted match
+	// Each scan's pose relative to the keyframe before it, so that closing a
+	// loop later moves it with its keyframe.
+	struct Anchored
+	{
+		double t;
+		std::size_t keyframe;
+		CPose2D relative;
+	};
+	std::vector<Anchored> scans;
 
 	RawlogProcessor loop(rawlog);
 	loop.on<CObservationOdometry>(odometry_label, [&](const CObservationOdometry::Ptr& odo) {
@@ -150,26 +162,33 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 			pose = pose + u;
 			since.lin += std::hypot(u.x(), u.y());
 			since.ang += std::abs(u.phi());
+			driven += std::hypot(u.x(), u.y());
 		}
 		last_odometry = odo->odometry;
 		have_odometry = true;
 	});
 	const auto insertKeyframe = [&](const CObservation2DRangeScan::Ptr& scan) {
-		map.insertObservation(*scan, mrpt::poses::CPose3D(pose));
-		auto sf = mrpt::obs::CSensoryFrame::Create();
-		sf->insert(scan);
-		auto pdf = mrpt::poses::CPose3DPDFGaussian::Create();
-		pdf->mean = mrpt::poses::CPose3D(pose);
-		r.keyframes.insert(pdf, sf);
-		last_keyframe = pose;
+		const CPose2D before = pose;
+		if (!graph.add(scan, pose, driven))
+		{
+			map.insertObservation(*scan, mrpt::poses::CPose3D(pose));
+			return;
+		}
+		// A loop closed: every keyframe moved. The matcher goes on from the
+		// newest keyframe's new pose, against a map rebuilt from them all.
+		pose = graph.pose(graph.size() - 1);
+		last_match = pose + (last_match - before);
+		map.clear();
+		graph.insertInto(map);
 	};
+	const auto keyframeAt = [&]() { return graph.pose(graph.size() - 1); };
 	loop.on<CObservation2DRangeScan>(scan_label, [&](const CObservation2DRangeScan::Ptr& scan) {
 		const double t = mrpt::Clock::toDouble(scan->timestamp);
-		if (map.empty())
+		if (graph.size() == 0)
 		{
 			insertKeyframe(scan);
 			last_match = pose;
-			r.path.push_back({t, pose});
+			scans.push_back({t, 0, CPose2D()});
 			return;
 		}
 		const CPose2D moved = pose - last_match;
@@ -201,18 +220,21 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 				}
 			}
 		}
-		const CPose2D from_keyframe = pose - last_keyframe;
+		const CPose2D from_keyframe = pose - keyframeAt();
 		if (std::hypot(from_keyframe.x(), from_keyframe.y()) >= o.insertion_lin ||
 			std::abs(from_keyframe.phi()) >= o.insertion_ang_deg * kDeg)
 			insertKeyframe(scan);
-		r.path.push_back({t, pose});
+		scans.push_back({t, graph.size() - 1, pose - keyframeAt()});
 	});
 	loop.run();
-	if (r.path.empty())
+	if (scans.empty())
 		throw std::runtime_error("no " + scan_label + " scan in '" + rawlog + "' (" + loop.describeLabels() + ")");
 	if (odometry_seen == 0)
 		throw std::runtime_error("no " + odometry_label + " odometry in '" + rawlog + "' (" + loop.describeLabels() +
 								 "): the guard needs the wheels");
+	for (const Anchored& a : scans) r.path.push_back({a.t, graph.pose(a.keyframe) + a.relative});
+	r.keyframes = graph.simplemap();
+	r.loops = graph.loops();
 	return r;
 }
 

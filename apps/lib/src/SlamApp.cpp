@@ -57,7 +57,7 @@ eval::GuardedIcpResult SlamApp::run()
 	MRPT_LOG_INFO_STREAM(r.path.size() << " scans, " << r.keyframes.size() << " keyframes; " << r.matches
 									   << " matches accepted, " << r.refused_jumps << " refused as jumps, "
 									   << r.poor_matches << " too poor; " << r.weak_directions
-									   << " directions left to the odometry");
+									   << " directions left to the odometry; " << r.loops << " loops closed");
 	return r;
 }
 

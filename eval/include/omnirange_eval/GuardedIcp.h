@@ -10,6 +10,7 @@
 //   prediction is kept and the match's correction dropped.
 // docs/method.md ("Maps from the omnicam: the odometry guard") has the why.
 
+#include <omnirange_eval/KeyframeGraph.h>
 #include <omnirange_eval/Trajectory.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -47,8 +48,12 @@ struct GuardedIcpOptions
 	 * left to the odometry. 0: never. */
 	double weak_direction_ratio{0.1};
 
+	/** [loop_closure] The keyframes as a pose graph (KeyframeGraph.h). */
+	LoopClosureOptions loops;
+
 	/** Reads an icp-slam ini ([MappingApplication], [ICP], the points map's
-	 * insertion options) and the optional [odometry_guard] section. */
+	 * insertion options) and the optional [odometry_guard] and [loop_closure]
+	 * sections. */
 	static GuardedIcpOptions fromIni(const mrpt::config::CConfigFileBase& ini);
 	static GuardedIcpOptions fromIniFile(const std::string& file);
 };
@@ -56,11 +61,12 @@ struct GuardedIcpOptions
 struct GuardedIcpResult
 {
 	mrpt::maps::CSimpleMap keyframes;  ///< as icp-slam's _finalmap_.simplemap: each keyframe's scan at its pose
-	std::vector<StampedPose> path;  ///< the estimated pose at every scan
+	std::vector<StampedPose> path;  ///< the estimated pose at every scan, with the loops closed after it
 	int matches{0};  ///< matches accepted
 	int poor_matches{0};  ///< below min_goodness: the odometry's prediction kept
 	int refused_jumps{0};  ///< refused by the guard
 	int weak_directions{0};  ///< directions left to the odometry in accepted matches
+	int loops{0};  ///< loops closed
 };
 
 /** Runs the matcher over a rawlog's scans of one label and its odometry, in
