@@ -287,6 +287,7 @@ void Experiment::runGuardedIcp()
 		MRPT_LOG_INFO_STREAM("guarded ICP, " << s.label << ": " << g.matches << " matches, " << g.refused_jumps
 											 << " refused, " << g.weak_directions << " weak directions left to the odometry, "
 											 << g.loops << " loops closed");
+		s.guarded_loops = g.loops;
 		fs::create_directories(out_ + "/guarded_icp_" + s.tag);
 		saveSimplemap(g.keyframes, out_ + "/guarded_icp_" + s.tag + "/_finalmap_.simplemap");
 		double unused = 0;

@@ -97,6 +97,7 @@ Metrics metricsOf(const ExperimentResults& r)
 		maps("gt_", s.gt);
 		maps("icp_", s.icp), path("icp_", s.icp_path);
 		maps("guarded_", s.guarded), path("guarded_", s.guarded_path);
+		m["guarded_" + s.label + "_loops"] = s.guarded_loops;
 		if (!s.rbpf_ini.empty()) maps("rbpf_", s.rbpf), path("rbpf_", s.rbpf_path);
 		if (r.has_check_region)
 		{
@@ -136,8 +137,9 @@ std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r
 	writeMapsTable(o, r);
 	o << "\n![maps with ground-truth poses](maps_gt.png)\n\n![maps from icp-slam](maps_icp.png)\n\n"
 	  << "Guarded ICP: icp-slam's matching with the same ini, where the odometry refuses a match that jumps "
-		 "farther than the wheels can err and keeps its own estimate along directions the scan cannot fix "
-		 "(docs/method.md).\n\n![maps from the guarded matcher](maps_guarded.png)\n\n";
+		 "farther than the wheels can err and keeps its own estimate along directions the scan cannot fix, "
+		 "and whose keyframes form a pose graph that closes loops (the ini's [loop_closure]; docs/method.md)."
+		 "\n\n![maps from the guarded matcher](maps_guarded.png)\n\n";
 	const bool rbpf = std::any_of(r.sensors.begin(), r.sensors.end(), [](const auto& s) { return !s.rbpf_ini.empty(); });
 	if (rbpf)
 		o << "rbpf-slam is a particle filter, not seeded: its figures change from run to run.\n\n"

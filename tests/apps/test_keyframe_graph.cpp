@@ -51,9 +51,8 @@ std::vector<CPose2D> ringPath()
 	return path;
 }
 
-// The path as wheels that read 3 % long and turn 0.2 deg per metre too far
-// would give it, from the same start: 0.32 m and 5.8 deg off at the end,
-// 0.48 m at worst.
+// The path as wheels that turn 0.25 deg per metre too far would give it, from
+// the same start: 0.66 m and 7.3 deg off at the end.
 std::vector<CPose2D> drifted(const std::vector<CPose2D>& truth)
 {
 	std::vector<CPose2D> out{truth[0]};
@@ -125,7 +124,7 @@ TEST(KeyframeGraph, ClosingTheLoopBringsTheRouteBackToTheTruth)
 
 TEST(KeyframeGraph, ALoopThatTurnsTheRobotMoreThanTheDriftAllowsIsRefused)
 {
-	// The drive gathers 5.8 deg of heading drift; a gate of 0.5 deg must refuse
+	// The drive gathers 7.3 deg of heading drift; a gate of 0.5 deg must refuse
 	// the loop match that removes it.
 	LoopClosureOptions tight = shipped();
 	tight.search_turn_deg = 0.5;
@@ -174,31 +173,47 @@ TEST(KeyframeGraph, TheIniSectionIsReadAndCheckedKeyByKey)
 }
 TEST(KeyframeGraph, TheMatchersPathMovesWithItsKeyframes)
 {
-	// The same ring driven as a rawlog (a scan every 0.1 m, odometry with the
-	// heading drift) through the guarded matcher: every scan's pose must be
-	// where its keyframe now is, loops closed or not.
-	std::vector<CPose2D> truth;
+	// The ring driven as a rawlog (a scan every 0.1 m) through the guarded
+	// matcher, with wheels that read 8 % long on the first, 9 m leg: along
+	// that corridor the scans cannot see it, so the matcher alone comes back
+	// to the start 0.42 m off, and the guard refuses the snap.
+	std::vector<CPose2D> truth, odometry;
 	const std::vector<CPose2D> corners = ringPath();
 	for (std::size_t i = 0; i + 1 < corners.size(); ++i)
 		for (int j = 0; j < 5; ++j)
 		{
 			const CPose2D step = corners[i + 1] - corners[i];
 			truth.push_back(corners[i] + CPose2D(step.x() * j / 5, step.y() * j / 5, j == 0 ? 0 : step.phi()));
+			if (odometry.empty()) odometry.push_back(truth[0]);
+			else
+			{
+				const CPose2D u = truth.back() - truth[truth.size() - 2];
+				const double slip = truth.size() <= 90 ? 1.08 : 1.0;  // the first leg: 18 steps of 5 scans
+				odometry.push_back(odometry.back() + CPose2D(u.x() * slip, u.y() * slip, u.phi()));
+			}
 		}
-	const std::vector<CPose2D> odometry = drifted(truth);
 	const Drive d("keyframe_graph_ring.rawlog", static_cast<int>(truth.size()), [&](int i) { return odometry[i]; },
 				  [&](int i, double t) { return drawScan(kRing, truth[i], t); });
-	const GuardedIcpResult r =
-		runGuardedIcp(d.file, "OMNISCAN", kOdometryLabel, GuardedIcpOptions::fromIniFile(OMNIRANGE_SOURCE_DIR "/ini/icp-slam-omniscan.ini"));
-	ASSERT_EQ(r.path.size(), truth.size());
-	const auto keyframes = simplemapKeyframes(r.keyframes);
+	GuardedIcpOptions o = GuardedIcpOptions::fromIniFile(OMNIRANGE_SOURCE_DIR "/ini/icp-slam-omniscan.ini");
+	const GuardedIcpResult closed = runGuardedIcp(d.file, "OMNISCAN", kOdometryLabel, o);
+	o.loops.enabled = false;
+	const GuardedIcpResult open = runGuardedIcp(d.file, "OMNISCAN", kOdometryLabel, o);
+	ASSERT_EQ(closed.path.size(), truth.size());
+	ASSERT_GT(error(truth[0] + open.path.back().pose, truth.back()), 0.3);  // what there is to close
+	EXPECT_GE(closed.loops, 1);
+	EXPECT_LT(error(truth[0] + closed.path.back().pose, truth.back()), 0.05);
+	// Every scan sits where its keyframe now is, plus the short way it truly
+	// drove from it (give or take the wheels' 8 % of at most 0.5 m and a
+	// centimetre of matching): the scans matched before the loop closed moved
+	// with it.
+	const auto keyframes = simplemapKeyframes(closed.keyframes);
 	ASSERT_GT(keyframes.size(), 20u);
-	for (const auto& k : keyframes)
+	std::size_t k = 0, truth_k = 0;
+	for (std::size_t i = 0; i < truth.size(); ++i)
 	{
-		const CPose2D p = poseAt(r.path, k.t);
-		EXPECT_LT(error(p, k.pose), 1e-9);
-		EXPECT_LT(std::abs(p.phi() - k.pose.phi()), 1e-9);
+		while (k + 1 < keyframes.size() && keyframes[k + 1].t <= closed.path[i].t) ++k;
+		if (std::abs(keyframes[k].t - closed.path[i].t) < 1e-6) truth_k = i;
+		const CPose2D expected = keyframes[k].pose + (truth[i] - truth[truth_k]);
+		EXPECT_LT(error(closed.path[i].pose, expected), 0.06) << "scan " << i;
 	}
-	// The matcher and the loops together end where the drive did.
-	EXPECT_LT(error(truth[0] + r.path.back().pose, truth.back()), 0.1);
 }

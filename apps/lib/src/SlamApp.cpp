@@ -15,10 +15,10 @@ namespace omnirange::app
 SlamApp::Options SlamApp::parse(int argc, const char* const* argv)
 {
 	Options o;
-	TCLAP::CmdLine cmd("omnirange-slam: a path and a map from range scans and odometry, by ICP guarded by the odometry",
+	TCLAP::CmdLine cmd("omnirange-slam: a path and a map from range scans and odometry, by ICP guarded by the odometry, with loops closed on a pose graph",
 					   ' ', "0.1");
 	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with the scans and the odometry", true, "", "RAWLOG", cmd);
-	TCLAP::ValueArg<std::string> ini("c", "config", "icp-slam ini ([MappingApplication], [ICP]; optional [odometry_guard])",
+	TCLAP::ValueArg<std::string> ini("c", "config", "icp-slam ini ([MappingApplication], [ICP]; optional [odometry_guard], [loop_closure])",
 									 true, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "folder for _finalmap_.simplemap and log_estimated_path.txt", true, "",
 									 "DIR", cmd);

@@ -36,6 +36,7 @@ struct SensorMaps
 	std::string rbpf_ini;  ///< rbpf-slam configuration; empty: not run
 	MapMetrics gt, icp, guarded, rbpf;
 	PathError icp_path, guarded_path, rbpf_path;
+	int guarded_loops{0};  ///< loops the guarded matcher closed
 	double gt_check_marked{0}, icp_check_marked{0};  ///< [m] in the check region
 };
 

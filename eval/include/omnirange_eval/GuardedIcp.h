@@ -8,6 +8,7 @@
 // - Along a direction the scan cannot fix (a corridor's length, one wall's
 //   length: the scan's wall normals leave it unconstrained), the odometry's
 //   prediction is kept and the match's correction dropped.
+// Its keyframes form a pose graph that closes loops (KeyframeGraph.h).
 // docs/method.md ("Maps from the omnicam: the odometry guard") has the why.
 
 #include <omnirange_eval/KeyframeGraph.h>

@@ -19,7 +19,7 @@ class SlamApp : public mrpt::system::COutputLogger
 	struct Options
 	{
 		std::string input;
-		std::string ini;  ///< an icp-slam ini, with an optional [odometry_guard] section
+		std::string ini;  ///< an icp-slam ini, with optional [odometry_guard] and [loop_closure] sections
 		std::string output;  ///< folder
 		std::string scan_label{"OMNISCAN"};
 		std::string odometry_label{"ODOMETRY"};
