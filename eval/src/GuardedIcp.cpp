@@ -184,11 +184,11 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 	const auto keyframeAt = [&]() { return graph.pose(graph.size() - 1); };
 	loop.on<CObservation2DRangeScan>(scan_label, [&](const CObservation2DRangeScan::Ptr& scan) {
 		const double t = mrpt::Clock::toDouble(scan->timestamp);
-		if (graph.size() == 0)
+		if (map.empty())  // until a scan has put points in the map, there is nothing to match
 		{
 			insertKeyframe(scan);
 			last_match = pose;
-			scans.push_back({t, 0, CPose2D()});
+			scans.push_back({t, graph.size() - 1, CPose2D()});
 			return;
 		}
 		const CPose2D moved = pose - last_match;
