@@ -9,7 +9,9 @@
 #include <omnirange/core/PolarScanner.h>
 #include <omnirange/io/SensorLabels.h>
 
+#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
@@ -133,6 +135,44 @@ TEST(MrptPrograms, IcpSlamMapsTheOmniscans)
 	ASSERT_EQ(keep.code, 0) << keep.out;
 	expectIcpSlamKeepsTheSamplesStraightPath(dir, "only.rawlog");
 	EXPECT_TRUE(fs::exists(dir + "/icp_slam_omniscan/_finalmaps_.txt_mrpt__maps__COccupancyGridMap2D_00.png"));
+}
+
+TEST(MrptPrograms, ObservationsToMapReadsOmnirangeSlamsKeyframes)
+{
+	// omnirange-slam writes icp-slam's kind of outputs: its keyframes must be
+	// a simplemap that MRPT's observations2map turns into a grid map, and its
+	// path must follow the sample's straight 3 m as icp-slam's does.
+	const std::string dir = workDir("omnirange_slam");
+	scannedFactorySample(dir);
+	const RunResult keep = run("rawlog-edit --keep-label OMNISCAN,ODOMETRY -i scanned.rawlog -o only.rawlog -w", dir);
+	ASSERT_EQ(keep.code, 0) << keep.out;
+	const RunResult slam =
+		run(app("omnirange-slam") + " -i only.rawlog -c " + q(kSource + "/ini/icp-slam-omniscan.ini") + " -o slam", dir);
+	ASSERT_EQ(slam.code, 0) << slam.out;
+	const auto path = readTable(dir + "/slam/log_estimated_path.txt");
+	ASSERT_GE(path.size(), 20u);
+	EXPECT_NEAR(std::hypot(path.back()[1], path.back()[2]), 0.4 * 7.6, 0.6);
+	EXPECT_LT(std::abs(path.back()[3]), 0.1);
+	const RunResult map = run("observations2map " + q(kSource + "/ini/observations2map-omniscan.ini") +
+								  " slam/_finalmap_.simplemap slam/map",
+							  dir);
+	ASSERT_EQ(map.code, 0) << map.out;
+	const std::string png = dir + "/slam/map_mrpt__maps__COccupancyGridMap2D_00.png";
+	ASSERT_TRUE(fs::exists(png)) << map.out;
+	// The grid holds walls and the free floor between them, not only unknown.
+	mrpt::maps::COccupancyGridMap2D grid;
+	mrpt::io::CFileGZInputStream in(dir + "/slam/map_gridmap_no00.gridmap");
+	mrpt::serialization::archiveFrom(in) >> grid;
+	int occupied = 0, free = 0;
+	for (unsigned y = 0; y < grid.getSizeY(); ++y)
+		for (unsigned x = 0; x < grid.getSizeX(); ++x)
+		{
+			const float p = grid.getCell(x, y);  // probability of free
+			occupied += p < 0.4f;
+			free += p > 0.6f;
+		}
+	EXPECT_GT(occupied, 100);
+	EXPECT_GT(free, 2000);
 }
 
 TEST(MrptPrograms, IcpSlamMapsASensoryFrameRawlogScannedInItsOwnFormat)
