@@ -5,6 +5,8 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3DPDFGaussian.h>
@@ -154,18 +156,23 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 	std::vector<Anchored> scans;
 
 	RawlogProcessor loop(rawlog);
-	loop.on<CObservationOdometry>(odometry_label, [&](const CObservationOdometry::Ptr& odo) {
+	const auto drive = [&](const CPose2D& u) {
 		++odometry_seen;
-		if (have_odometry)
-		{
-			const CPose2D u = odo->odometry - last_odometry;
-			pose = pose + u;
-			since.lin += std::hypot(u.x(), u.y());
-			since.ang += std::abs(u.phi());
-			driven += std::hypot(u.x(), u.y());
-		}
+		pose = pose + u;
+		since.lin += std::hypot(u.x(), u.y());
+		since.ang += std::abs(u.phi());
+		driven += std::hypot(u.x(), u.y());
+	};
+	loop.on<CObservationOdometry>(odometry_label, [&](const CObservationOdometry::Ptr& odo) {
+		drive(have_odometry ? odo->odometry - last_odometry : CPose2D());
 		last_odometry = odo->odometry;
 		have_odometry = true;
+	});
+	// The actions/sensory-frames format (older datasets, rawlog-grabber with
+	// use_sensoryframes = 1) carries the odometry as each frame's increment.
+	loop.onObject([&](const mrpt::serialization::CSerializable::Ptr& object) {
+		if (const auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(object))
+			if (const auto move = actions->getBestMovementEstimation()) drive(move->rawOdometryIncrementReading);
 	});
 	const auto insertKeyframe = [&](const CObservation2DRangeScan::Ptr& scan) {
 		const CPose2D before = pose;
@@ -231,7 +238,7 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 		throw std::runtime_error("no " + scan_label + " scan in '" + rawlog + "' (" + loop.describeLabels() + ")");
 	if (odometry_seen == 0)
 		throw std::runtime_error("no " + odometry_label + " odometry in '" + rawlog + "' (" + loop.describeLabels() +
-								 "): the guard needs the wheels");
+								 ", and no robot-movement action): the guard needs the wheels");
 	for (const Anchored& a : scans) r.path.push_back({a.t, graph.pose(a.keyframe) + a.relative});
 	r.keyframes = graph.simplemap();
 	r.loops = graph.loops();

@@ -2,6 +2,7 @@
 // the guard's refusal, on scans drawn from walls whose places are known.
 #include <omnirange_apps/SlamApp.h>
 #include <omnirange_eval/GuardedIcp.h>
+#include <omnirange_eval/SensoryFrameFormat.h>
 #include <omnirange_eval/Trajectory.h>
 
 #include "DrawnScans.h"
@@ -112,6 +113,29 @@ TEST(GuardedIcp, AMatchThatJumpsFartherThanTheWheelsCanErrIsRefused)
 	const GuardedIcpResult unguarded = runGuardedIcp(d.file, "OMNISCAN", kOdometryLabel, open);
 	EXPECT_EQ(unguarded.refused_jumps, 0);
 	EXPECT_GT(std::abs(unguarded.path[5].pose.y()), 0.3);
+}
+
+TEST(GuardedIcp, TheSensoryFrameFormatGivesTheSamePath)
+{
+	// The same drive rewritten in MRPT's other format, the odometry as each
+	// frame's movement action: the matcher must read it and find the same path.
+	const auto truth = [](int i) { return CPose2D(-1.2 + 0.1 * i, 0.1, 0.02 * i); };
+	const Drive d("guarded_observations.rawlog", 25, [&](int i) { return CPose2D(-1.2 + 0.11 * i, 0.1, 0.02 * i); },
+				  [&](int i, double t) { return drawScan(kRoom, truth(i), t); });
+	const std::string frames = testing::TempDir() + "guarded_frames.rawlog";
+	ASSERT_EQ(writeSensoryFrameFormat(d.file, frames), 25);
+	const GuardedIcpResult a = runGuardedIcp(d.file, "OMNISCAN", kOdometryLabel, GuardedIcpOptions{});
+	const GuardedIcpResult b = runGuardedIcp(frames, "OMNISCAN", kOdometryLabel, GuardedIcpOptions{});
+	std::filesystem::remove(frames);
+	ASSERT_EQ(b.path.size(), a.path.size());
+	EXPECT_EQ(b.matches, a.matches);
+	EXPECT_GT(a.matches, 5);
+	for (std::size_t i = 0; i < a.path.size(); ++i)
+	{
+		EXPECT_NEAR(b.path[i].pose.x(), a.path[i].pose.x(), 1e-6) << i;
+		EXPECT_NEAR(b.path[i].pose.y(), a.path[i].pose.y(), 1e-6) << i;
+		EXPECT_NEAR(b.path[i].pose.phi(), a.path[i].pose.phi(), 1e-6) << i;
+	}
 }
 
 TEST(GuardedIcp, ARawlogWithoutOdometryIsRefused)

@@ -71,7 +71,9 @@ struct GuardedIcpResult
 };
 
 /** Runs the matcher over a rawlog's scans of one label and its odometry, in
- * file order (streamed). Throws std::runtime_error when it holds no such
+ * file order (streamed). The odometry is the CObservationOdometry readings of
+ * `odometry_label`, or, in the actions/sensory-frames format, each frame's
+ * robot-movement action. Throws std::runtime_error when it holds no such
  * scans or no odometry. */
 GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& scan_label,
 							   const std::string& odometry_label, const GuardedIcpOptions& o);
