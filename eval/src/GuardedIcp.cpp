@@ -33,6 +33,13 @@ double positiveKey(const mrpt::config::CConfigFileBase& ini, const std::string& 
 	return v;
 }
 
+/** Whether `d` moves farther than `lin` metres or turns more than `ang_deg`:
+ * icp-slam's rule for when to match and when to insert a keyframe. */
+bool beyond(const mrpt::poses::CPose2D& d, double lin, double ang_deg)
+{
+	return std::hypot(d.x(), d.y()) >= lin || std::abs(d.phi()) >= ang_deg * kDeg;
+}
+
 /** Odometric motion, which bounds how far the wheels can have erred. */
 struct Motion
 {
@@ -198,8 +205,7 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 			scans.push_back({t, graph.size() - 1, CPose2D()});
 			return;
 		}
-		const CPose2D moved = pose - last_match;
-		if (std::hypot(moved.x(), moved.y()) >= o.localization_lin || std::abs(moved.phi()) >= o.localization_ang_deg * kDeg)
+		if (beyond(pose - last_match, o.localization_lin, o.localization_ang_deg))
 		{
 			last_match = pose;
 			mrpt::maps::CSimplePointsMap points;
@@ -227,10 +233,7 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 				}
 			}
 		}
-		const CPose2D from_keyframe = pose - keyframeAt();
-		if (std::hypot(from_keyframe.x(), from_keyframe.y()) >= o.insertion_lin ||
-			std::abs(from_keyframe.phi()) >= o.insertion_ang_deg * kDeg)
-			insertKeyframe(scan);
+		if (beyond(pose - keyframeAt(), o.insertion_lin, o.insertion_ang_deg)) insertKeyframe(scan);
 		scans.push_back({t, graph.size() - 1, pose - keyframeAt()});
 	});
 	loop.run();

@@ -5,12 +5,11 @@
 #include <omnirange_eval/SensoryFrameFormat.h>
 #include <omnirange_eval/Trajectory.h>
 
-#include "DrawnScans.h"
+#include "../common/DrawnScans.h"
 
 #include <omnirange/io/SensorLabels.h>
 
 #include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <Eigen/Eigenvalues>
@@ -19,8 +18,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <functional>
-#include <limits>
 #include <vector>
 
 using namespace omnirange;

@@ -5,7 +5,7 @@
 #include <omnirange_eval/KeyframeGraph.h>
 #include <omnirange_eval/Trajectory.h>
 
-#include "DrawnScans.h"
+#include "../common/DrawnScans.h"
 
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -130,7 +130,7 @@ TEST(KeyframeGraph, ALoopThatTurnsTheRobotMoreThanTheDriftAllowsIsRefused)
 	tight.search_turn_deg = 0.5;
 	EXPECT_EQ(runRing(tight).loops, 0);
 	LoopClosureOptions near = shipped();
-	near.search_radius = 0.2;  // nearer than the drift: no old keyframe is in reach
+	near.search_radius = 0.2;  // shorter than the drift: the drifted estimate passes no old keyframe this near
 	EXPECT_EQ(runRing(near).loops, 0);
 }
 

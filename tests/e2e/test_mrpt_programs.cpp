@@ -4,16 +4,12 @@
 // the sensor plugin.
 #include "Programs.h"
 
+#include "../common/DrawnScans.h"
+
 #include <omnirange_eval/SensoryFrameFormat.h>
 
-#include <omnirange/core/PolarScanner.h>
-#include <omnirange/io/SensorLabels.h>
-
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
-#include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
@@ -39,37 +35,17 @@ void expectIcpSlamKeepsTheSamplesStraightPath(const std::string& dir, const std:
 	EXPECT_LT(std::abs(last[3]), 0.1);
 }
 /** A straight corridor 2.4 m wide, walls without features, driven 12 m along
- * its axis in steps of 0.16 m: each step an exact odometry reading and a
- * 360-ray scan that, like the omnicam's, sees 3.8 m at most. */
+ * its axis in steps of 0.16 m, 0.4 s apart: each step an exact odometry
+ * reading and a 360-ray scan that, like the omnicam's, sees 3.8 m at most. */
 void writeCorridorRun(const std::string& file)
 {
-	mrpt::io::CFileGZOutputStream out(file);
-	auto a = mrpt::serialization::archiveFrom(out);
-	const int S = 360;
-	const float max_range = 3.8f, half_width = 1.2f;
-	for (int k = 0; k <= 75; ++k)
-	{
-		const auto t = mrpt::Clock::fromDouble(1000.0 + 0.4 * k);
-		auto odo = mrpt::obs::CObservationOdometry::Create();
-		odo->sensorLabel = omnirange::kOdometryLabel;
-		odo->timestamp = t;
-		odo->odometry = mrpt::poses::CPose2D(0.16 * k, 0, 0);
-		auto scan = mrpt::obs::CObservation2DRangeScan::Create();
-		scan->sensorLabel = omnirange::kOmniscanLabel;
-		scan->timestamp = t;
-		scan->aperture = static_cast<float>(omnirange::scanAperture(S));
-		scan->maxRange = max_range;
-		scan->resizeScan(S);
-		for (int i = 0; i < S; ++i)
-		{
-			const double bearing = -scan->aperture / 2 + i * scan->aperture / (S - 1);
-			const double s = std::abs(std::sin(bearing));
-			const double r = s > 1e-6 ? half_width / s : 1e9;
-			scan->setScanRange(i, static_cast<float>(std::min<double>(r, max_range)));
-			scan->setScanRangeValidity(i, r < max_range);
-		}
-		a << *odo << *scan;
-	}
+	const std::vector<omnirange::test::Wall> corridor{{-50, -1.2, 50, -1.2}, {-50, 1.2, 50, 1.2}};
+	omnirange::test::writeDrive(
+		file, 76, [](int k) { return mrpt::poses::CPose2D(0.16 * k, 0, 0); },
+		[&](int k, double t) {
+			return omnirange::test::drawScan(corridor, mrpt::poses::CPose2D(0.16 * k, 0, 0), t, omnirange::scanAperture(360));
+		},
+		0.4);
 }
 
 /** Where icp-slam's path ends along the corridor, with the omnicam's ini

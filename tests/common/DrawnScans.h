@@ -1,6 +1,8 @@
 #pragma once
-// Scans drawn from walls whose places are known, and rawlogs of drives
-// through them: the matcher's and the keyframe graph's tests.
+// Scans drawn from walls whose places are known, with the omnicam's ray
+// geometry, and rawlogs of drives through them: the matcher's and the
+// keyframe graph's tests, and icp-slam's corridor.
+#include <omnirange/core/PolarScanner.h>
 #include <omnirange/io/SensorLabels.h>
 
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -30,21 +32,23 @@ struct Wall
 inline const std::vector<Wall> kCorridor{{-50, -1, 50, -1}, {-50, 1, 50, 1}};  // 2 m wide, no end in sight
 inline const std::vector<Wall> kRoom{{-2, -2, 2, -2}, {2, -2, 2, 2}, {2, 2, -2, 2}, {-2, 2, -2, -2}};  // 4 x 4 m
 
-// A 360-ray scan of `walls` from `pose`, out to 3.8 m (no hit beyond).
-inline mrpt::obs::CObservation2DRangeScan::Ptr drawScan(const std::vector<Wall>& walls, const CPose2D& pose, double t)
+// A 360-ray OMNISCAN scan of `walls` from `pose` over `aperture` (the
+// rangefinder's own is scanAperture(360)), out to 3.8 m (no hit beyond).
+inline mrpt::obs::CObservation2DRangeScan::Ptr drawScan(const std::vector<Wall>& walls, const CPose2D& pose, double t,
+														 double aperture = 2 * M_PI)
 {
 	constexpr int n = 360;
 	constexpr double max_range = 3.8;
 	auto s = mrpt::obs::CObservation2DRangeScan::Create();
-	s->sensorLabel = "OMNISCAN";
+	s->sensorLabel = kOmniscanLabel;
 	s->timestamp = mrpt::Clock::fromDouble(t);
-	s->aperture = 2 * M_PI;
+	s->aperture = static_cast<float>(aperture);
 	s->rightToLeft = true;
 	s->maxRange = max_range;
 	s->resizeScan(n);
 	for (int i = 0; i < n; ++i)
 	{
-		const double a = pose.phi() - M_PI + i * 2 * M_PI / (n - 1);
+		const double a = pose.phi() + s->getScanAngle(i);
 		const double dx = std::cos(a), dy = std::sin(a);
 		double best = std::numeric_limits<double>::infinity();
 		for (const auto& w : walls)
@@ -63,25 +67,33 @@ inline mrpt::obs::CObservation2DRangeScan::Ptr drawScan(const std::vector<Wall>&
 	return s;
 }
 
-// A rawlog of a drive: at each step the odometry reading, then the scan drawn
-// from `scan_pose(step)`. Removed when it goes.
+// Writes a drive to `file`: at each step, `dt` seconds apart, the odometry
+// reading, then the scan `scan(step, time)`.
+inline void writeDrive(const std::string& file, int steps, const std::function<CPose2D(int)>& odometry,
+					   const std::function<mrpt::obs::CObservation2DRangeScan::Ptr(int, double)>& scan,
+					   double dt = 1.0)
+{
+	mrpt::io::CFileGZOutputStream out(file);
+	auto a = mrpt::serialization::archiveFrom(out);
+	for (int i = 0; i < steps; ++i)
+	{
+		const double t = 1000.0 + dt * i;
+		auto odo = mrpt::obs::CObservationOdometry::Create();
+		odo->sensorLabel = kOdometryLabel;
+		odo->timestamp = mrpt::Clock::fromDouble(t);
+		odo->odometry = odometry(i);
+		a << *odo << *scan(i, t);
+	}
+}
+
+// The same in the tests' temporary folder, removed when it goes.
 struct Drive
 {
 	Drive(const std::string& name, int steps, const std::function<CPose2D(int)>& odometry,
 		  const std::function<mrpt::obs::CObservation2DRangeScan::Ptr(int, double)>& scan)
 		: file(testing::TempDir() + name)
 	{
-		mrpt::io::CFileGZOutputStream out(file);
-		auto a = mrpt::serialization::archiveFrom(out);
-		for (int i = 0; i < steps; ++i)
-		{
-			const double t = 1000.0 + i;
-			auto odo = mrpt::obs::CObservationOdometry::Create();
-			odo->sensorLabel = kOdometryLabel;
-			odo->timestamp = mrpt::Clock::fromDouble(t);
-			odo->odometry = odometry(i);
-			a << *odo << *scan(i, t);
-		}
+		writeDrive(file, steps, odometry, scan);
 	}
 	~Drive() { std::filesystem::remove(file); }
 	std::string file;
