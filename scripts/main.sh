@@ -8,8 +8,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
-for experiment in maze factory office warehouse lab hallway library classroom canteen kitchen garage shop livingroom meetingroom reception studio nursery bakery workshop gym clinic gallery hotel laundry pharmacy factory-hyperbolic; do
+for experiment in maze factory office warehouse lab hallway library classroom canteen kitchen garage shop livingroom meetingroom reception studio nursery bakery workshop gym clinic gallery hotel laundry pharmacy bookshop factory-hyperbolic; do
   echo "== experiment: $experiment"
   build/apps/omnirange-experiment "ini/$experiment.ini"
 done
-echo "reports: results/{maze,factory,office,warehouse,lab,hallway,library,classroom,canteen,kitchen,garage,shop,livingroom,meetingroom,reception,studio,nursery,bakery,workshop,gym,clinic,gallery,hotel,laundry,pharmacy,factory-hyperbolic}/report.md"
+echo "reports: results/{maze,factory,office,warehouse,lab,hallway,library,classroom,canteen,kitchen,garage,shop,livingroom,meetingroom,reception,studio,nursery,bakery,workshop,gym,clinic,gallery,hotel,laundry,pharmacy,bookshop,factory-hyperbolic}/report.md"
