@@ -17,6 +17,7 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <utility>
 
 namespace omnirange::eval
 {
@@ -47,12 +48,30 @@ struct Motion
 };
 }  // namespace
 
+const OptionsTable<GuardedIcpOptions>& GuardedIcpOptions::guardTable()
+{
+	using O = GuardedIcpOptions;
+	static const auto t =
+		OptionsTable<O>()
+			.add("max_jump", "m", "a match may move the robot this far from the odometry's prediction",
+				 [](O& o) -> auto& { return o.max_jump; })
+			.add("max_jump_per_metre", "m/m", "plus this much per metre driven since the last match",
+				 [](O& o) -> auto& { return o.max_jump_per_metre; })
+			.add("max_turn_deg", "deg", "and turn it this far", [](O& o) -> auto& { return o.max_turn_deg; })
+			.add("max_turn_per_radian", "deg/deg", "plus this much per angle turned since the last match",
+				 [](O& o) -> auto& { return o.max_turn_per_radian; })
+			.add("weak_direction_ratio", "-",
+				 "a direction with less than this share of the strongest's information is left to the odometry",
+				 [](O& o) -> auto& { return o.weak_direction_ratio; });
+	return t;
+}
+
 GuardedIcpOptions GuardedIcpOptions::fromIni(const mrpt::config::CConfigFileBase& ini)
 {
 	GuardedIcpOptions o;
 	o.icp.loadFromConfigFile(ini, "ICP");
-	const std::string app = "MappingApplication", points = "MappingApplication_pointsMap_00_insertOpts",
-					  guard = "odometry_guard";
+	// icp-slam's own sections, read as it reads them (MRPT's keys beside ours).
+	const std::string app = "MappingApplication", points = "MappingApplication_pointsMap_00_insertOpts";
 	const struct
 	{
 		const std::string& section;
@@ -63,14 +82,21 @@ GuardedIcpOptions GuardedIcpOptions::fromIni(const mrpt::config::CConfigFileBase
 				{app, "insertionLinDistance", o.insertion_lin},
 				{app, "insertionAngDistance", o.insertion_ang_deg},
 				{app, "minICPgoodnessToAccept", o.min_goodness},
-				{points, "minDistBetweenLaserPoints", o.min_dist_between_points},
-				{guard, "max_jump", o.max_jump},
-				{guard, "max_jump_per_metre", o.max_jump_per_metre},
-				{guard, "max_turn_deg", o.max_turn_deg},
-				{guard, "max_turn_per_radian", o.max_turn_per_radian},
-				{guard, "weak_direction_ratio", o.weak_direction_ratio}};
+				{points, "minDistBetweenLaserPoints", o.min_dist_between_points}};
 	for (const auto& k : keys) k.value = positiveKey(ini, k.section, k.key, k.value);
-	if (o.weak_direction_ratio > 1) throw std::runtime_error("[odometry_guard] weak_direction_ratio must be in [0, 1]");
+	try
+	{
+		if (ini.sectionExists("odometry_guard")) guardTable().load(o, ini, "odometry_guard");  // optional
+		for (const auto& [key, v] : {std::pair{"max_jump", o.max_jump}, {"max_jump_per_metre", o.max_jump_per_metre},
+									 {"max_turn_deg", o.max_turn_deg}, {"max_turn_per_radian", o.max_turn_per_radian}})
+			require(v >= 0, std::string("[odometry_guard] ") + key + " must be >= 0");
+		require(o.weak_direction_ratio >= 0 && o.weak_direction_ratio <= 1,
+				"[odometry_guard] weak_direction_ratio must be in [0, 1]");
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(e.what());
+	}
 	o.loops = LoopClosureOptions::fromIni(ini);
 	return o;
 }

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <stdexcept>
 
 namespace omnirange::eval
@@ -38,36 +39,61 @@ bool constrainsTranslation(const mrpt::obs::CObservation2DRangeScan& scan, doubl
 }
 }  // namespace
 
+const OptionsTable<LoopClosureOptions>& LoopClosureOptions::table()
+{
+	using O = LoopClosureOptions;
+	static const auto t =
+		OptionsTable<O>()
+			.add("enabled", "-", "close loops; false keeps the keyframes where the matcher put them",
+				 [](O& o) -> auto& { return o.enabled; })
+			.add("min_travel", "m", "odometry driven since an old keyframe before it counts as a loop",
+				 [](O& o) -> auto& { return o.min_travel; })
+			.add("search_radius", "m", "old keyframes this near the new one are searched",
+				 [](O& o) -> auto& { return o.search_radius; })
+			.add("search_turn_deg", "deg", "a loop match turning the robot more is refused",
+				 [](O& o) -> auto& { return o.search_turn_deg; })
+			.add("min_goodness", "-", "ICP goodness a loop match needs", [](O& o) -> auto& { return o.min_goodness; })
+			.add("local_keyframes", "-", "old keyframes either side of the nearest in the map matched against",
+				 [](O& o) -> auto& { return o.local_keyframes; })
+			.add("chain_sigma", "m", "consecutive keyframes' sigma, its floor", [](O& o) -> auto& { return o.chain_sigma; })
+			.add("chain_sigma_per_metre", "m/m", "and its share of the distance driven",
+				 [](O& o) -> auto& { return o.chain_sigma_per_metre; })
+			.add("chain_sigma_deg", "deg", "their heading's sigma, its floor",
+				 [](O& o) -> auto& { return o.chain_sigma_deg; })
+			.add("chain_sigma_deg_per_metre", "deg/m", "and its growth with the distance driven",
+				 [](O& o) -> auto& { return o.chain_sigma_deg_per_metre; })
+			.add("loop_sigma", "m", "a loop match's sigma", [](O& o) -> auto& { return o.loop_sigma; })
+			.add("loop_sigma_deg", "deg", "a loop match's heading sigma", [](O& o) -> auto& { return o.loop_sigma_deg; });
+	return t;
+}
+
+void LoopClosureOptions::validate() const
+{
+	const std::string s = "[loop_closure] ";
+	for (const auto& [key, v] : {std::pair{"min_travel", min_travel}, {"search_radius", search_radius},
+								 {"search_turn_deg", search_turn_deg}, {"min_goodness", min_goodness},
+								 {"chain_sigma_per_metre", chain_sigma_per_metre},
+								 {"chain_sigma_deg_per_metre", chain_sigma_deg_per_metre}})
+		require(v >= 0, s + key + " must be >= 0");
+	for (const auto& [key, v] : {std::pair{"chain_sigma", chain_sigma}, {"chain_sigma_deg", chain_sigma_deg},
+								 {"loop_sigma", loop_sigma}, {"loop_sigma_deg", loop_sigma_deg}})
+		require(v > 0, s + key + " must be > 0");
+	require(min_goodness <= 1, s + "min_goodness must be in [0, 1]");
+	require(local_keyframes >= 0, s + "local_keyframes must be >= 0");
+}
+
 LoopClosureOptions LoopClosureOptions::fromIni(const mrpt::config::CConfigFileBase& ini)
 {
-	const std::string s = "loop_closure";
 	LoopClosureOptions o;
-	o.enabled = ini.read_bool(s, "enabled", o.enabled);
-	const struct
+	try
 	{
-		const char* key;
-		double& value;
-		bool positive;  ///< > 0, not only >= 0
-	} keys[] = {{"min_travel", o.min_travel, false},
-				{"search_radius", o.search_radius, false},
-				{"search_turn_deg", o.search_turn_deg, false},
-				{"min_goodness", o.min_goodness, false},
-				{"chain_sigma", o.chain_sigma, true},
-				{"chain_sigma_per_metre", o.chain_sigma_per_metre, false},
-				{"chain_sigma_deg", o.chain_sigma_deg, true},
-				{"chain_sigma_deg_per_metre", o.chain_sigma_deg_per_metre, false},
-				{"loop_sigma", o.loop_sigma, true},
-				{"loop_sigma_deg", o.loop_sigma_deg, true}};
-	for (const auto& k : keys)
-	{
-		k.value = ini.read_double(s, k.key, k.value);
-		if (!std::isfinite(k.value) || k.value < 0 || (k.positive && k.value == 0))
-			throw std::runtime_error("[" + s + "] " + k.key + " must be a number " + (k.positive ? "> 0" : ">= 0") +
-									 ", not " + std::to_string(k.value));
+		if (ini.sectionExists("loop_closure")) table().load(o, ini, "loop_closure");  // optional
+		o.validate();
 	}
-	o.local_keyframes = ini.read_int(s, "local_keyframes", o.local_keyframes);
-	if (o.local_keyframes < 0) throw std::runtime_error("[" + s + "] local_keyframes must be >= 0");
-	if (o.min_goodness > 1) throw std::runtime_error("[" + s + "] min_goodness must be in [0, 1]");
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(e.what());
+	}
 	return o;
 }
 

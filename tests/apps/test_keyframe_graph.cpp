@@ -158,7 +158,8 @@ TEST(KeyframeGraph, TheIniSectionIsReadAndCheckedKeyByKey)
 	EXPECT_FALSE(o.enabled);
 	EXPECT_DOUBLE_EQ(o.search_radius, 2);
 	EXPECT_DOUBLE_EQ(o.min_travel, LoopClosureOptions{}.min_travel);  // absent: the default
-	for (const std::string bad : {"loop_sigma = 0", "search_radius = -1", "min_goodness = 1.5", "local_keyframes = -2"})
+	for (const std::string bad : {"loop_sigma = 0", "search_radius = -1", "min_goodness = 1.5", "local_keyframes = -2",
+							 "search_radious = 2", "min_travel = 5m"})
 	{
 		try
 		{

@@ -53,9 +53,13 @@ struct GuardedIcpOptions
 	LoopClosureOptions loops;
 
 	/** Reads an icp-slam ini ([MappingApplication], [ICP], the points map's
-	 * insertion options) and the optional [odometry_guard] and [loop_closure]
-	 * sections. */
+	 * insertion options, as icp-slam reads them) and the optional
+	 * [odometry_guard] and [loop_closure] sections, which are ours and read
+	 * strictly (an unknown or unparsable key is an error naming it). Throws
+	 * std::runtime_error. */
 	static GuardedIcpOptions fromIni(const mrpt::config::CConfigFileBase& ini);
+	/** The [odometry_guard] keys. */
+	static const OptionsTable<GuardedIcpOptions>& guardTable();
 	static GuardedIcpOptions fromIniFile(const std::string& file);
 };
 

@@ -8,6 +8,8 @@
 // (the correction the paper names and never built).
 // docs/method.md ("Closing loops") has the why and the limits.
 
+#include <omnirange/io/OptionsTable.h>
+
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/maps/CSimpleMap.h>
@@ -47,7 +49,11 @@ struct LoopClosureOptions
 	/** Standard deviation of a loop match's relative pose [m, deg]. */
 	double loop_sigma{0.03}, loop_sigma_deg{0.5};
 
+	/** Reads the [loop_closure] section strictly (an unknown or unparsable key
+	 * is an error naming it) and validates it; throws std::runtime_error. */
 	static LoopClosureOptions fromIni(const mrpt::config::CConfigFileBase& ini);
+	static const OptionsTable<LoopClosureOptions>& table();
+	void validate() const;  ///< throws std::invalid_argument naming the key
 };
 
 class KeyframeGraph
