@@ -84,7 +84,7 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 			 "with boundary_model = subpixel, how far past the centre of the first non-free pixel the edge may "
 			 "be placed, "
 			 "within [0, 2.5]; a floor darkened at its edge leaves its last pixels non-free (1: the limit "
-			 "before the eighth session)",
+			 "before commit e13c8b5)",
 			 [](P& p) -> auto& { return p.boundary_reach; })
 		.add("N", "px", "false-positive filter: pixels behind a candidate that must be non-free (>= 1)",
 			 [](P& p) -> auto& { return p.filter.N; })

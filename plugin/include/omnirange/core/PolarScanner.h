@@ -73,7 +73,7 @@ struct PolarScannerParams
 	/** How the edge is placed between pixels (BoundaryRefinement.h). */
 	BoundaryModel boundary_model{BoundaryModel::Subpixel};
 	/** [px] how far past the first non-free pixel the sub-pixel model may
-	 * place the edge (1: the fourth to seventh sessions' limit;
+	 * place the edge (1: the limit before commit e13c8b5;
 	 * docs/results.md measures both). */
 	double boundary_reach{kMaxBoundaryReach};
 	HitFilterParams filter{};
