@@ -19,7 +19,7 @@ ini="$src/ini/factory.ini"
 # --- fixtures -----------------------------------------------------------
 "$apps/omnirange-train" -q -i "$sample" -c "$ini" -o floor.hist || exit 1
 cp "$sample" s.rawlog && cp -r "$src/rawlogs/factory-sample_Images" s_Images
-cp "$ini" f.ini
+cp "$ini" f.ini && cp "$src/ini/experiment-base.ini" .  # f.ini and its base
 head -c 20000 "$sample" > cut.rawlog
 : > empty.rawlog
 head -c 5000 /dev/urandom > random.rawlog
@@ -37,37 +37,31 @@ printf '0 0\n1e300 0\n' > far.route
 printf 'omnirange-world 1\nbox x=1 y=\n' > broken.world
 printf '0 0\n1 abc\n' > broken.route
 
-# ini variants: key=value replaces the key in [rangefinder]; +LINE appends one.
-variant() {  # variant NAME EDIT
-  local name="$1" edit="$2"
-  if [[ "$edit" == +* ]]; then
-    awk -v line="${edit#+}" '{print} /^\[rangefinder\]/{print line}' "$ini" > "$name.ini"
-  else
-    local key="${edit%%=*}" value="${edit#*=}"
-    awk -v key="$key" -v value="$value" '
-      /^\[/ {in_rf = ($0 == "[rangefinder]")}
-      in_rf && $1 == key && $2 == "=" {print key " = " value; next}
-      {print}' "$ini" > "$name.ini"
-  fi
+# ini variants: f.ini (whose [rangefinder] comes from its base) with a
+# [rangefinder] section of the lines given.
+variant() {  # variant NAME LINE...
+  local name="$1"; shift
+  { cat f.ini; printf '\n[rangefinder]\n'; printf '%s\n' "$@"; } > "$name.ini"
 }
-variant thr_abc 'threshold=abc'
-variant thr_comma 'threshold=0,075'
-variant n_suffix 'N=20abc'
-variant h_unit 'h=0.931m'
-variant scan_frac 'scanlines=360.7'
-variant mirrored_maybe 'mirrored=maybe'
-variant dup '+N = 30'
-variant pose_nan 'pose_x=nan'
-variant tol_inf 'outlier_abs_tol=inf'
-variant n_huge 'N=2147483647'
-variant k_huge 'K=2147483647'
-variant width_huge 'outlier_max_width=2147483647'
-variant scan_huge 'scanlines=1e9'
-variant r_abc 'R=abc'
-variant r_neg 'R=-5'
-variant unknown '+thresold = 0.1'
-variant width_small 'image_width=640'
-variant empty_value 'threshold='
+variant thr_abc 'threshold = abc'
+variant thr_comma 'threshold = 0,075'
+variant n_suffix 'N = 20abc'
+variant h_unit 'h = 0.931m'
+variant scan_frac 'scanlines = 360.7'
+variant mirrored_maybe 'mirrored = maybe'
+variant dup 'N = 20' 'N = 30'
+variant pose_nan 'pose_x = nan'
+variant tol_inf 'outlier_abs_tol = inf'
+variant n_huge 'N = 2147483647'
+variant k_huge 'K = 2147483647'
+variant width_huge 'outlier_max_width = 2147483647'
+variant scan_huge 'scanlines = 1e9'
+variant r_abc 'R = abc'
+variant r_neg 'R = -5'
+variant unknown 'thresold = 0.1'
+variant width_small 'image_width = 640'
+variant empty_value 'threshold ='
+sed 's/^base = .*/base = nowhere.ini/' f.ini > no_base.ini
 printf '[laser]\nfov = 180\n' > renamed_robot.ini
 printf '[lazer]\nfov_deg = 90\n' > misspelt_robot.ini
 
@@ -136,10 +130,11 @@ run_case "output folder is a file" error f.ini/out.rawlog -- "$apps/omnirange-sc
 [ "$(id -u)" -ne 0 ] && run_case "output folder read-only" error readonly/out.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o readonly/out.rawlog
 run_case "disk full (file size limit 20 kB)" error out.rawlog -- bash -c 'trap "" XFSZ; ulimit -f 20; exec "$@"' _ "$apps/omnirange-scan" -q "${S[@]}"
 for v in thr_abc thr_comma n_suffix h_unit scan_frac mirrored_maybe dup pose_nan tol_inf n_huge k_huge width_huge scan_huge r_abc r_neg unknown empty_value; do
-  edit=$(diff "$ini" "$v.ini" | grep '^>' | sed 's/^> //')
+  edit=$(diff f.ini "$v.ini" | grep '^>' | grep -v '^> \[rangefinder\]' | sed 's/^> //' | paste -sd ' ' | sed 's/^ *//')
   scan "ini: \`$edit\`" error -i s.rawlog -c "$v.ini" -H floor.hist -o out.rawlog
 done
 scan "ini missing" error -i s.rawlog -c none.ini -H floor.hist -o out.rawlog
+scan "ini whose base is missing" error -i s.rawlog -c no_base.ini -H floor.hist -o out.rawlog
 scan "ini section missing" error "${S[@]}" -s nosection
 scan "threads -j 0" error "${S[@]}" -j 0
 scan "threads -j 70000" error "${S[@]}" -j 70000

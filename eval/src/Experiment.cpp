@@ -8,6 +8,7 @@
 #include "omnirange_eval/SensoryFrameFormat.h"
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/Progress.h>
 #include <omnirange/io/Temporaries.h>
 #include <omnirange/io/RawlogScan.h>
 
@@ -28,7 +29,6 @@ namespace omnirange::eval
 {
 namespace
 {
-constexpr int kStages = 9;
 
 mrpt::maps::COccupancyGridMap2D loadGrid(const std::string& file)
 {
@@ -57,7 +57,7 @@ Experiment::Experiment(ExperimentConfig config)
 
 void Experiment::stage(const std::string& name, const std::function<void()>& body)
 {
-	MRPT_LOG_INFO_STREAM("[" << ++stage_ << "/" << kStages << "] " << name);
+	MRPT_LOG_INFO_STREAM("[" << ++stage_ << "/" << stages_ << "] " << name);
 	try
 	{
 		body();
@@ -112,10 +112,13 @@ Metrics Experiment::run()
 Metrics Experiment::runStages()
 {
 	const auto t0 = std::chrono::steady_clock::now();
-	MRPT_LOG_INFO_STREAM("experiment " << c_.name << " from " << c_.ini_file << "; rangefinder options:\n"
-									   << c_.rangefinder.asIni());
+	MRPT_LOG_INFO_STREAM("experiment " << c_.name << " from " << c_.ini_file
+									   << "; rangefinder, unlike the defaults: " << c_.rangefinder.changes());
+	MRPT_LOG_DEBUG_STREAM("every rangefinder option:\n" << c_.rangefinder.asIni());
 	fs::create_directories(out_ + "/dataset");
 	stage_ = 0;
+	const bool rbpf = std::any_of(r_.sensors.begin(), r_.sensors.end(), [](const auto& s) { return !s.rbpf_ini.empty(); });
+	stages_ = rbpf ? 9 : 8;
 	stage("simulate", [&] { simulate(); });
 	stage("train", [&] { train(); });
 	stage("scan", [&] { scan(); });
@@ -123,7 +126,7 @@ Metrics Experiment::runStages()
 	stage("maps with ground-truth poses", [&] { mapWithGroundTruth(); });
 	stage("icp-slam", [&] { runIcpSlam(); });
 	stage("guarded ICP", [&] { runGuardedIcp(); });
-	stage("rbpf-slam", [&] { runRbpfSlam(); });
+	if (rbpf) stage("rbpf-slam", [&] { runRbpfSlam(); });
 	r_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	stage("report", [&] { writeReport(); });
 	return metricsOf(r_);
@@ -140,7 +143,11 @@ void Experiment::simulate()
 	o.max_frames = c_.max_frames;
 	sim::Simulator s;
 	s.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-	r_.simulated = s.run(o);
+	Progress progress("frames simulated");
+	const bool show = showsProgress();
+	r_.simulated = s.run(o, [&](int done, int total) {
+		if (show) progress.update(done, total);
+	});
 }
 
 // 2. The histogram, trained against the laser (paper §III-A1).
@@ -165,7 +172,8 @@ void Experiment::train()
 void Experiment::learn(const RawlogTrainingOptions& o)
 {
 	const RangefinderParams start = c_.rangefinder;
-	const LearningResult l = learnParameters(start, o);
+	Progress progress("training pairs read for learning");
+	const LearningResult l = learnParameters(start, o, {}, showsProgress() ? &progress : nullptr);
 	c_.rangefinder = l.params;
 	histogram_data_ = l.model;
 	histogram_data_.save(histogram_);
@@ -194,7 +202,8 @@ void Experiment::scan()
 	RawlogScanOptions o;
 	o.input = dataset_;
 	o.output = scanned_;
-	const auto s = scanRawlog(rf, o);
+	Progress progress("objects scanned");
+	const auto s = scanRawlog(rf, o, showsProgress() ? &progress : nullptr);
 	r_.omni_hit_fraction = double(s.hits) / std::max<std::size_t>(1, s.rays);
 }
 

@@ -4,7 +4,7 @@
 #include <omnirange_sim/RobotParams.h>
 #include <omnirange_sim/World.h>
 
-#include <mrpt/config/CConfigFile.h>
+#include <omnirange/io/LayeredIni.h>
 
 #include <filesystem>
 #include <sstream>
@@ -50,11 +50,14 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 
 namespace
 {
-/** Resolves the files the [experiment] section names against the ini's folder. */
-void resolvePaths(ExperimentConfig& c, const fs::path& dir)
+/** Resolves the files the [experiment] section names, each against the
+ * folder of the ini that names it (the experiment's own, or a base's). */
+void resolvePaths(ExperimentConfig& c, const LayeredIni& layers)
 {
 	const auto resolve = [&](std::string& v, const std::string& key, bool must_exist) {
 		if (v.empty()) throw std::invalid_argument("[experiment] " + key + " is missing");
+		const std::string from = layers.originOf("experiment", key);
+		const fs::path dir = fs::absolute(from.empty() ? layers.files.back() : from).parent_path();
 		v = fs::path(v).is_absolute() ? v : (dir / v).lexically_normal().string();
 		if (must_exist && !fs::is_regular_file(v)) throw std::invalid_argument(key + ": no file '" + v + "'");
 	};
@@ -95,10 +98,10 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 	c.ini_file = ini;
 	try
 	{
-		requireNoRepeatedKeys(ini);
-		const mrpt::config::CConfigFile cfg(ini);
+		const LayeredIni layers = readLayeredIni(ini);
+		const auto& cfg = *layers.merged;
 		table().load(c, cfg, "experiment");
-		resolvePaths(c, fs::absolute(ini).parent_path());
+		resolvePaths(c, layers);
 		validate(c);
 		c.rangefinder.loadFromConfig(cfg, "rangefinder");
 		checkSimulatorInputs(c);

@@ -7,9 +7,12 @@
 #include <omnirange_apps/ScanApp.h>
 #include <omnirange_apps/TrainApp.h>
 #include <omnirange_eval/ExperimentConfig.h>
+#include <omnirange_eval/Suite.h>
+#include <omnirange/io/LayeredIni.h>
 
 #include <omnirange/io/RawlogReader.h>
 
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -108,7 +111,7 @@ TEST(AppClasses, ScanWarnsWhenTheRobotsBodyIsInsideTheScanCircle)
 	// scanline starts on the body, which is not floor. As the paper scans
 	// (base_shadow 0) each ray ends there at once, and the scan warns.
 	const std::string dir = workDir("small_base");
-	std::string ini = readText(kIni);
+	std::string ini = test::factoryIniText();
 	const std::string key = "\nbase_radius = 40\n";
 	ASSERT_NE(ini.find(key), std::string::npos);
 	ini.replace(ini.find(key), key.size(), "\nbase_radius = 10\n");
@@ -123,7 +126,9 @@ TEST(AppClasses, ScanWarnsWhenTheRobotsBodyIsInsideTheScanCircle)
 		return scanWithWarnings(s);
 	};
 	std::string paper = ini;
-	paper.replace(paper.find("[rangefinder]\n"), 14, "[rangefinder]\nbase_shadow = 0\n");
+	const std::string shadow = "\nbase_shadow = 1\n";
+	ASSERT_NE(paper.find(shadow), std::string::npos);
+	paper.replace(paper.find(shadow), shadow.size(), "\nbase_shadow = 0\n");
 	const auto [ended, warned] = scan("paper", paper);
 	EXPECT_GT(ended.too_close, ended.rays / 2);
 	EXPECT_NE(warned.find("too close): check base_radius"), std::string::npos) << warned;
@@ -349,17 +354,42 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	EXPECT_LT(acc.stats.meanAbs(), 0.1375);  // within the paper's worst Table II figure
 }
 
-TEST(AppClasses, EveryShippedExperimentLoads)
+TEST(AppClasses, EveryListedExperimentLoads)
 {
-	// Each ini names its world, route, robot and MRPT configurations; load()
-	// checks them all, and that the route keeps clear of the world's solids.
-	for (const std::string name : {"maze", "factory", "office", "warehouse"})
+	// Each ini of the suite names its world, route, robot and MRPT
+	// configurations (through its base); load() checks them all, and that the
+	// route keeps clear of the world's solids.
+	const auto suite = eval::loadSuite(kSource + "/ini/suite.txt");
+	ASSERT_GE(suite.size(), 2u);
+	EXPECT_EQ(suite[0].name, "maze");
+	EXPECT_EQ(suite[1].name, "factory");
+	for (const auto& e : suite)
 	{
-		const auto c = eval::ExperimentConfig::load(kSource + "/ini/" + name + ".ini");
-		EXPECT_EQ(c.name, name);
-		EXPECT_TRUE(c.learn) << name;  // the stock experiments learn their parameters
-		EXPECT_DOUBLE_EQ(c.train_fraction, 0.2) << name;
+		const auto c = eval::ExperimentConfig::load(kSource + "/ini/" + e.name + ".ini");
+		EXPECT_EQ(c.name, e.name);
+		EXPECT_TRUE(c.learn) << e.name;  // the stock experiments learn their parameters
+		EXPECT_DOUBLE_EQ(c.train_fraction, 0.2) << e.name;
+		EXPECT_EQ(c.train_every, 1) << e.name;
+		EXPECT_EQ(fs::path(c.output).filename(), e.name);
 	}
+	// The base sets no [experiment] key to the code's default (one fact, one place).
+	const mrpt::config::CConfigFile base(kSource + "/ini/experiment-base.ini");
+	std::vector<std::string> keys;
+	base.getAllKeys("experiment", keys);
+	const eval::ExperimentConfig defaults;
+	for (const auto& f : eval::ExperimentConfig::table().fields())
+	{
+		if (std::find(keys.begin(), keys.end(), f.info.key) == keys.end()) continue;
+		EXPECT_NE(base.read_string("experiment", f.info.key, ""), f.print(defaults)) << f.info.key;
+	}
+	// Every experiment ini in ini/ is listed: nothing is run by one script and forgotten by another.
+	for (const auto& f : fs::directory_iterator(kSource + "/ini"))
+		if (omnirange::iniBaseOf(f.path().string()) != "")
+		{
+			const std::string name = f.path().stem().string();
+			EXPECT_TRUE(std::any_of(suite.begin(), suite.end(), [&](const auto& e) { return e.name == name; }))
+				<< name << " is not in ini/suite.txt";
+		}
 }
 
 TEST(AppClasses, AnOutputOntoAnInputIsRefusedAndTheInputKept)
@@ -368,7 +398,8 @@ TEST(AppClasses, AnOutputOntoAnInputIsRefusedAndTheInputKept)
 	const std::string rawlog = dir + "/in.rawlog", ini = dir + "/in.ini";
 	fs::copy_file(kSample, rawlog);
 	fs::create_directory_symlink(kSource + "/rawlogs/factory-sample_Images", dir + "/in_Images");
-	fs::copy_file(kIni, ini);
+	const std::string ini_text = test::factoryIniText();
+	std::ofstream(ini) << ini_text;
 	fs::create_symlink(ini, dir + "/link.ini");
 	const auto size = fs::file_size(rawlog);
 
@@ -382,7 +413,7 @@ TEST(AppClasses, AnOutputOntoAnInputIsRefusedAndTheInputKept)
 		EXPECT_THROW(TrainApp(t).run(), std::runtime_error) << out;
 	}
 	EXPECT_EQ(fs::file_size(rawlog), size);
-	EXPECT_EQ(fs::file_size(ini), fs::file_size(kIni));
+	EXPECT_EQ(readText(ini), ini_text);
 
 	t.output = dir + "/f.hist";
 	TrainApp(t).run();
@@ -490,11 +521,16 @@ TEST(AppClasses, FloorAdaptationScansTheSameWithAnyNumberOfThreads)
 {
 	const std::string dir = workDir("adaptation_threads");
 	{
-		std::ifstream in(kIni);
+		std::istringstream in(test::factoryIniText());
 		std::ofstream out(dir + "/adapt.ini");
 		for (std::string line; std::getline(in, line);)
-			out << line << "\n" << (line == "[rangefinder]" ? "floor_adaptation = true\nadaptation_memory = 3\n" : "");
+			out << (line == "floor_adaptation = false" ? "floor_adaptation = true"
+					: line == "adaptation_memory = 50" ? "adaptation_memory = 3"
+													   : line)
+				<< "\n";
 	}
+	ASSERT_NE(readText(dir + "/adapt.ini").find("floor_adaptation = true"), std::string::npos);
+	ASSERT_NE(readText(dir + "/adapt.ini").find("adaptation_memory = 3"), std::string::npos);
 	// A floor of pure magenta: only what adaptation learns is free.
 	ColourHistogram magenta;
 	const std::uint8_t bgr[3] = {255, 0, 255};

@@ -2,6 +2,8 @@
 // What the in-process tests share: the factory sample, its ini, a fresh
 // folder per test, a file's text.
 
+#include <omnirange/core/Rangefinder.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -20,6 +22,13 @@ inline std::string freshDir(const std::string& group, const std::string& name)
 	std::filesystem::remove_all(d);
 	std::filesystem::create_directories(d);
 	return d.string();
+}
+
+/** kIni and its base as one [rangefinder] section with every key written
+ * out: for tests that edit an ini's text or copy it where its base is not. */
+inline std::string factoryIniText()
+{
+	return "[rangefinder]\n" + RangefinderParams::loadFromFile(kIni, "rangefinder").asIni();
 }
 
 inline std::string readText(const std::string& path)

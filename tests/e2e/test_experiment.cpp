@@ -21,8 +21,13 @@ TEST(Experiment, SmallFactoryRunEndToEnd)
 	// 50 frames: 20 s of the loop's first leg, past the cabinet; the lossless
 	// camera, whose accuracy the paper's figures bound (the stock JPEG camera's
 	// is measured in docs/results.md, not asserted).
-	const RunResult r = run(app("omnirange-experiment") + " -q " + q(kSource + "/ini/factory.ini") + " -n 50 -o " +
-							q(dir + "/report") + " --robot " + q(kSource + "/ini/robot-omnip2dx-png.ini"));
+	// The factory's ini and rbpf-slam's configurations, which the stock experiments leave out.
+	const std::string ini = kSource + "/ini/tmp-rbpf.ini";  // beside the real ini, so relative paths resolve
+	std::ofstream(ini) << readText(kSource + "/ini/factory.ini")
+					   << "rbpf_laser_ini = rbpf-slam-laser.ini\nrbpf_omni_ini = rbpf-slam-omniscan.ini\n";
+	const RunResult r = run(app("omnirange-experiment") + " -q " + q(ini) + " -n 50 -o " + q(dir + "/report") +
+							" --robot " + q(kSource + "/ini/robot-omnip2dx-png.ini"));
+	fs::remove(ini);
 	ASSERT_EQ(r.code, 0) << r.out;
 	for (const std::string f : {"report.md", "maps_gt.png", "maps_icp.png", "accuracy_histogram.png", "fig1_fused.png",
 								"gt_laser_gridmap_no00.gridmap", "icp_slam_omniscan/log_estimated_path.txt"})
@@ -136,14 +141,9 @@ TEST(Experiment, ACameraWhoseImageIsNotRadialEndToEnd)
 	const std::string terms = "aspect = 1.03\nskew = -3\np1 = 0.003\np2 = -0.002\n";
 	const auto withTerms = [&](std::string text) { return text.replace(text.find("k2 = 0\n"), 7, "k2 = 0\n" + terms); };
 	std::ofstream(dir + "/robot.ini") << withTerms(readText(kSource + "/ini/robot-hyperbolic.ini"));
-	std::string experiment = readText(kSource + "/ini/factory-hyperbolic.ini");
-	for (const std::string key : {"world = ", "route = ", "robot = ", "icp_laser_ini = ", "icp_omni_ini = ", "map_laser_ini = ",
-								  "map_omni_ini = ", "rbpf_laser_ini = ", "rbpf_omni_ini = "})
-	{
-		const auto at = experiment.find("\n" + key);
-		if (at != std::string::npos) experiment.insert(at + 1 + key.size(), kSource + "/ini/");
-	}
-	std::ofstream(dir + "/whole.ini") << withTerms(experiment);
+	// The stock experiment as a base: its paths stay relative to its own folder.
+	std::ofstream(dir + "/whole.ini") << "base = " << kSource << "/ini/factory-hyperbolic.ini\n\n[rangefinder]\n"
+									  << terms;
 	const RunResult r = run(app("omnirange-experiment") + " -q " + q(dir + "/whole.ini") + " -n 50 -o " + q(dir + "/whole") +
 							" --robot " + q(dir + "/robot.ini"));
 	ASSERT_EQ(r.code, 0) << r.out;
@@ -190,12 +190,14 @@ TEST(Experiment, BadIniFailsBeforeAnyStage)
 		EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
 		EXPECT_FALSE(fs::exists(dir + "/out")) << "a stage ran";
 	};
-	expectRejected("tmp-typo.ini", "'s/^train_every = /trainevery = /'", "unknown key 'trainevery'");
+	// Keys added under [experiment]; the factory's own ini has no [rangefinder], its base has.
+	const std::string in_experiment = "'/^\\[experiment\\]$/a ";
+	expectRejected("tmp-typo.ini", in_experiment + "trainevery = 1'", "unknown key 'trainevery'");
 	expectRejected("tmp-missing.ini", "'s/^world = .*/world = ..\\/worlds\\/nowhere.world/'", "nowhere.world");
-	expectRejected("tmp-impossible.ini", "'s/^train_every = .*/train_every = 0/'", "train_every must be >= 1");
-	expectRejected("tmp-theta.ini", "'s/^threshold = .*/threshold = 2/'", "threshold");
+	expectRejected("tmp-impossible.ini", in_experiment + "train_every = 0'", "train_every must be >= 1");
+	expectRejected("tmp-theta.ini", "'$a [rangefinder]\\nthreshold = 2'", "threshold");
 	// Nothing to study without learning.
-	expectRejected("tmp-nolearn.ini", "'s/^learn = .*/learn = false/'", "--study-candidates needs learn = true",
+	expectRejected("tmp-nolearn.ini", in_experiment + "learn = false'", "--study-candidates needs learn = true",
 				   " --study-candidates");
 	const RunResult none = run(app("omnirange-experiment") + " -q " + q(dir + "/none.ini"));
 	EXPECT_EQ(none.code, 1);
@@ -214,7 +216,7 @@ TEST(Experiment, AFailedRunLeavesTheOldReportAsItWas)
 	// builds no map and the maps stage fails after simulate, train and scan wrote.
 	const std::string ini = kSource + "/ini/tmp-staging.ini";
 	std::ofstream(dir + "/empty.ini") << "";
-	ASSERT_EQ(run("sed 's#^map_omni_ini = .*#map_omni_ini = " + dir + "/empty.ini#' " + q(kSource + "/ini/maze.ini") +
+	ASSERT_EQ(run("sed '/^\\[experiment\\]$/a map_omni_ini = " + dir + "/empty.ini' " + q(kSource + "/ini/maze.ini") +
 				  " > " + q(ini)).code,
 			  0);
 	r = run(app("omnirange-experiment") + " -q " + q(ini) + " -n 30 -o " + q(report));

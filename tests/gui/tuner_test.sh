@@ -10,6 +10,7 @@ src=$1; apps=$2; work=$3
 rm -rf "$work" && mkdir -p "$work"
 "$apps/omnirange-train" -q -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -o "$work/f.hist"
 cp "$src/ini/factory.ini" "$work/user.ini"
+cp "$src/ini/experiment-base.ini" "$work/"  # user.ini's base
 
 display=:$(( 90 + RANDOM % 9 ))
 Xvfb "$display" -screen 0 1600x1000x24 >/dev/null 2>&1 & xvfb=$!

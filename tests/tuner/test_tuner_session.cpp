@@ -100,7 +100,9 @@ TEST(TunerSession, SavingKeepsTheUsersCommentsAndOtherSections)
 	const std::string dir = workDir("save");
 	TunerSession s = trainedSession(dir);
 	const std::string user = dir + "/user.ini";
-	fs::copy_file(kIni, user);
+	// The maze's ini: an [experiment] section, then a [rangefinder] one.
+	const std::string original = test::kSource + "/ini/maze.ini";
+	fs::copy_file(original, user);
 	RangefinderParams p = s.params();
 	p.threshold = 0.0123;
 	p.scanner.filter.K = 5;
@@ -120,7 +122,7 @@ TEST(TunerSession, SavingKeepsTheUsersCommentsAndOtherSections)
 			if (!l.empty() && l[0] == ';') out.push_back(l);
 		return out;
 	};
-	const auto kept = comments(read(kIni)), now = comments(read(user));
+	const auto kept = comments(read(original)), now = comments(read(user));
 	std::size_t k = 0;
 	std::set<std::string> table;
 	for (const auto& [key, c] : RangefinderParams::table().comments()) table.insert("; " + c);
@@ -131,7 +133,7 @@ TEST(TunerSession, SavingKeepsTheUsersCommentsAndOtherSections)
 	}
 	EXPECT_EQ(k, kept.size()) << "a comment of the user's ini was lost";
 	EXPECT_GT(now.size(), kept.size());  // keys the factory ini lacks (e.g. xi) came with theirs
-	const std::string before = read(kIni), after = read(user);
+	const std::string before = read(original), after = read(user);
 	EXPECT_EQ(after.substr(0, after.find("[rangefinder]")), before.substr(0, before.find("[rangefinder]")));
 }
 

@@ -3,6 +3,7 @@
 #include "SyntheticOmni.h"
 
 #include <omnirange/core/Rangefinder.h>
+#include <omnirange/io/LayeredIni.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -23,10 +24,7 @@ const std::string kSource = OMNIRANGE_SOURCE_DIR;
 
 RangefinderParams loadIni(const std::string& name)
 {
-	mrpt::config::CConfigFile ini(kSource + "/ini/" + name);
-	RangefinderParams p;
-	p.loadFromConfig(ini, "rangefinder");
-	return p;
+	return RangefinderParams::loadFromFile(kSource + "/ini/" + name, "rangefinder");
 }
 
 std::vector<std::string> lines(const std::string& path)
@@ -79,6 +77,55 @@ TEST(IniFiles, EveryKeyHasAUnitComment)
 				has_unit = false;  // a unit comment covers only the keys right below it
 		}
 	}
+}
+
+TEST(IniFiles, AnExperimentIniRepeatsNoKeyOfItsBaseAndTheBaseNoDefault)
+{
+	// One fact in one place: a key an experiment sets to its base's value, or
+	// a key the base sets to the code's default, is a copy that can drift.
+	const auto keysOf = [](const std::string& path) {
+		mrpt::config::CConfigFile f(path);
+		std::map<std::string, std::string> m;  // "[section] key" -> value
+		std::vector<std::string> sections, keys;
+		f.getAllSections(sections);
+		for (const auto& s : sections)
+		{
+			f.getAllKeys(s, keys);
+			for (const auto& k : keys)
+				if (!s.empty()) m["[" + s + "] " + k] = f.read_string(s, k, "", true);
+		}
+		return m;
+	};
+	int experiments = 0;
+	for (const auto& entry : std::filesystem::directory_iterator(kSource + "/ini"))
+	{
+		const std::string base = iniBaseOf(entry.path().string());
+		if (base.empty()) continue;
+		++experiments;
+		const auto own = keysOf(entry.path().string()), inherited = keysOf(base);
+		for (const auto& [key, value] : own)
+		{
+			EXPECT_FALSE(inherited.count(key) && inherited.at(key) == value)
+				<< entry.path().filename() << " repeats " << key << " = " << value << " of its base";
+		}
+	}
+	EXPECT_GE(experiments, 2);
+	const auto same = [](const std::string& a, const std::string& b) {
+		char *ea = nullptr, *eb = nullptr;
+		const double da = std::strtod(a.c_str(), &ea), db = std::strtod(b.c_str(), &eb);
+		return (*ea == 0 && *eb == 0 && ea != a.c_str()) ? da == db : a == b;
+	};
+	const auto base = keysOf(kSource + "/ini/experiment-base.ini");
+	const RangefinderParams defaults;
+	for (const auto& f : RangefinderParams::table().fields())
+	{
+		const auto it = base.find("[rangefinder] " + f.info.key);
+		if (it == base.end()) continue;
+		EXPECT_FALSE(same(it->second, f.print(defaults))) << "experiment-base.ini repeats the default " << it->first;
+	}
+	int base_keys = 0;
+	for (const auto& [key, value] : base) base_keys += key.rfind("[rangefinder] ", 0) == 0;
+	EXPECT_GE(base_keys, 1);
 }
 
 TEST(IniFiles, DocsListEveryKeyWithTheCodesUnitAndDefault)

@@ -80,7 +80,8 @@ RangefinderParams loadRangefinderIni(const std::string& file, const std::string&
 									 mrpt::system::COutputLogger& log)
 {
 	const RangefinderParams p = RangefinderParams::loadFromFile(file, section);
-	log.logStr(mrpt::system::LVL_INFO, "options from " + file + " [" + section + "]:\n" + p.asIni());
+	log.logStr(mrpt::system::LVL_INFO, file + " [" + section + "], unlike the defaults: " + p.changes());
+	log.logStr(mrpt::system::LVL_DEBUG, "every option:\n" + p.asIni());
 	return p;
 }
 

@@ -2,7 +2,7 @@
 
 #include "omnirange/io/OptionsTable.h"
 
-#include <mrpt/config/CConfigFile.h>
+#include "omnirange/io/LayeredIni.h"
 #include <mrpt/config/CConfigFileBase.h>
 #include <opencv2/core.hpp>
 
@@ -65,8 +65,7 @@ RangefinderParams RangefinderParams::loadFromFile(const std::string& path, const
 	RangefinderParams p;
 	try
 	{
-		requireNoRepeatedKeys(path);
-		p.loadFromConfig(mrpt::config::CConfigFile(path), section);
+		p.loadFromConfig(*readLayeredIni(path).merged, section);
 	}
 	catch (const std::invalid_argument& e)
 	{
@@ -110,6 +109,13 @@ void RangefinderParams::validate() const
 }
 
 std::string RangefinderParams::asIni() const { return table().print(*this); }
+
+std::string RangefinderParams::changes() const
+{
+	RangefinderParams defaults;
+	defaults.sensor_pose.z(camera.h);  // pose_z follows h unless set
+	return table().printChanges(*this, defaults);
+}
 
 int RangeScan::count(RayStatus s) const
 {

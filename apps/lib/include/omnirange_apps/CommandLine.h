@@ -43,8 +43,9 @@ void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv);
  * "NAME: error: MESSAGE" on one line for any exception. */
 int runApp(const std::string& name, const std::function<void()>& body);
 
-/** The rangefinder's section of an ini file, with the file named in
- * errors; the options are logged once to `log` at INFO. */
+/** The rangefinder's section of an ini file (over its base), with the file
+ * named in errors; the options that differ from the defaults are logged on
+ * one line at INFO, all of them at DEBUG. */
 RangefinderParams loadRangefinderIni(const std::string& file, const std::string& section,
 									 mrpt::system::COutputLogger& log);
 

@@ -92,6 +92,8 @@ struct RangefinderParams
 	void validate() const;
 	/** One "key = value" line per parameter, in ini syntax. */
 	std::string asIni() const;
+	/** "key=value key=value ..." for the parameters that differ from their defaults, on one line. */
+	std::string changes() const;
 };
 
 /** What one image produced. */

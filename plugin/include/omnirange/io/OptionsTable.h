@@ -142,6 +142,16 @@ class OptionsTable
 			  const std::vector<std::string>& also_allowed = {}) const;
 	/** One "key = value" line per field, in ini syntax. */
 	std::string print(const S& s) const;
+	/** "key=value" for each field of `s` that prints unlike in `defaults`, blank-separated
+	 * ("(all defaults)" if none): the one line a program shows of its options. */
+	std::string printChanges(const S& s, const S& defaults) const
+	{
+		std::string line;
+		for (const auto& f : fields_)
+			if (const std::string v = f.print(s); v != f.print(defaults))
+				line += (line.empty() ? "" : " ") + f.info.key + "=" + v;
+		return line.empty() ? "(all defaults)" : line;
+	}
 	std::vector<std::string> keys() const;
 	const std::vector<Field>& fields() const { return fields_; }
 	/** "[unit] meaning" per key: the comment a key written into a user's ini gets. */

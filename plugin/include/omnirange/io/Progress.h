@@ -33,7 +33,7 @@ class Progress
 	bool tty_;
 	bool open_line_{false};
 	std::size_t last_printed_{0};
-	std::chrono::steady_clock::time_point last_;
+	std::chrono::steady_clock::time_point start_, last_;
 	Callback show_;
 	std::size_t latest_done_{0}, latest_total_{0};  // what finish() shows the callback last
 };

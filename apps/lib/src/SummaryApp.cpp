@@ -1,0 +1,89 @@
+#include "omnirange_apps/SummaryApp.h"
+
+#include "omnirange_apps/CommandLine.h"
+
+#include <omnirange_eval/Summary.h>
+
+#include <omnirange/io/AtomicWrite.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace omnirange::app
+{
+SummaryApp::Options SummaryApp::parse(int argc, const char* const* argv)
+{
+	Options o;
+	TCLAP::CmdLine cmd(
+		"omnirange-summary: the experiments' metrics in one CSV and one page of tables (PREFIX.csv, PREFIX.md); "
+		"or, with --csv, the tables inside Markdown files made again from that CSV (--fill) or checked (--check)",
+		' ', "0.1");
+	TCLAP::ValueArg<std::string> suite("s", "suite", "the list of experiments", false, "ini/suite.txt", "FILE", cmd);
+	TCLAP::MultiArg<std::string> group("g", "group", "only this group of the list (repeatable)", false, "GROUP", cmd);
+	TCLAP::ValueArg<std::string> results("r", "results", "folder of the reports (NAME/metrics.ini)", false, "results", "DIR", cmd);
+	TCLAP::ValueArg<std::string> out("o", "output", "prefix of PREFIX.csv and PREFIX.md", false, "", "PREFIX", cmd);
+	TCLAP::ValueArg<std::string> csv("", "csv", "read this CSV instead of the reports", false, "", "FILE", cmd);
+	TCLAP::MultiArg<std::string> fill("", "fill", "make this file's table blocks again from --csv (repeatable)", false, "FILE", cmd);
+	TCLAP::SwitchArg check("", "check", "with --fill: change nothing; exit 1 if a block differs", cmd);
+	VerbosityArgs verbosity(cmd);
+	parseArgs(cmd, argc, argv);
+	o.suite = suite.getValue(), o.groups = group.getValue(), o.results = results.getValue();
+	o.output = out.getValue(), o.csv = csv.getValue(), o.fill = fill.getValue(), o.check = check.getValue();
+	o.verbosity = verbosity.level();
+	if (!o.fill.empty() && o.csv.empty()) throw std::runtime_error("--fill needs --csv");
+	if (o.check && o.fill.empty()) throw std::runtime_error("--check needs --fill");
+	if (o.fill.empty() && o.output.empty()) throw std::runtime_error("give -o PREFIX, or --csv with --fill");
+	return o;
+}
+
+SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summary"), o_(std::move(o))
+{
+	setMinLoggingLevel(o_.verbosity);
+}
+
+void SummaryApp::fillOrCheck(const std::string& file, const std::string& csv)
+{
+	std::ifstream in(file);
+	if (!in) throw std::runtime_error("cannot read '" + file + "'");
+	std::ostringstream text;
+	text << in.rdbuf();
+	const std::string filled = eval::fillTables(text.str(), eval::readCsv(csv));
+	if (filled == text.str())
+	{
+		MRPT_LOG_INFO_STREAM(file << ": its tables are " << csv << "'s");
+		return;
+	}
+	if (o_.check) throw std::runtime_error(file + ": a table differs from what " + csv + " gives (omnirange-summary --fill)");
+	writeFileAtomically(file, filled);
+	MRPT_LOG_INFO_STREAM(file << ": tables made again from " << csv);
+}
+
+void SummaryApp::run()
+{
+	if (!o_.fill.empty())
+	{
+		for (const auto& f : o_.fill) fillOrCheck(f, o_.csv);
+		return;
+	}
+	std::vector<eval::SuiteEntry> entries = eval::loadSuite(o_.suite);
+	if (!o_.groups.empty())
+		entries.erase(std::remove_if(entries.begin(), entries.end(),
+									 [&](const auto& e) {
+										 return std::find(o_.groups.begin(), o_.groups.end(), e.group) == o_.groups.end();
+									 }),
+					  entries.end());
+	if (entries.empty()) throw std::runtime_error(o_.suite + ": no experiment of the groups asked for");
+	const eval::Summary s = o_.csv.empty() ? eval::collectMetrics(entries, o_.results) : eval::readCsv(o_.csv);
+	std::string page = "# omnirange: the experiments' figures\n\nMade by omnirange-summary from each report's metrics.ini.\n";
+	for (const auto& name : eval::tableNames()) page += "\n## " + name + "\n\n" + eval::markdownTable(name, s);
+	writeFileAtomically(o_.output + ".csv", eval::toCsv(s));
+	writeFileAtomically(o_.output + ".md", page);
+	MRPT_LOG_INFO_STREAM("\naccuracy (against the laser and the truth), after the training fifth:\n"
+						 << eval::markdownTable("short", s) << "\npath error, ATE RMSE / final position error:\n"
+						 << eval::markdownTable("paths", s) << "\nevery table: " << o_.output
+						 << ".md; every figure: " << o_.output << ".csv");
+}
+
+}  // namespace omnirange::app

@@ -1,0 +1,281 @@
+#include "omnirange_eval/Summary.h"
+
+#include <omnirange/io/OptionsTable.h>
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace omnirange::eval
+{
+double SummaryRow::get(const std::string& key) const
+{
+	const auto it = metrics.find(key);
+	return it == metrics.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
+}
+
+Summary collectMetrics(const std::vector<SuiteEntry>& entries, const std::string& results_dir)
+{
+	Summary s;
+	for (const auto& e : entries)
+	{
+		const std::string file = results_dir + "/" + e.name + "/metrics.ini";
+		if (!fs::is_regular_file(file)) throw std::runtime_error("no report of '" + e.name + "': '" + file + "' is missing");
+		const mrpt::config::CConfigFile ini(file);
+		std::vector<std::string> keys;
+		ini.getAllKeys("metrics", keys);
+		SummaryRow r{e.name, e.group, {}};
+		for (const auto& k : keys)
+		{
+			try
+			{
+				r.metrics[k] = parseDouble(ini.read_string("metrics", k, "", true));
+			}
+			catch (const std::invalid_argument& err)
+			{
+				throw std::runtime_error(file + ": " + k + ": " + err.what());
+			}
+		}
+		s.push_back(std::move(r));
+	}
+	return s;
+}
+
+std::string toCsv(const Summary& s)
+{
+	std::set<std::string> keys;
+	for (const auto& r : s)
+		for (const auto& [k, v] : r.metrics) keys.insert(k);
+	std::ostringstream o;
+	o << "name,group";
+	for (const auto& k : keys) o << "," << k;
+	o << "\n";
+	for (const auto& r : s)
+	{
+		o << r.name << "," << r.group;
+		for (const auto& k : keys) o << "," << (r.metrics.count(k) ? formatDouble(r.metrics.at(k)) : "");
+		o << "\n";
+	}
+	return o.str();
+}
+
+namespace
+{
+std::vector<std::string> splitCsv(const std::string& line)
+{
+	std::vector<std::string> cells;
+	std::istringstream in(line);
+	for (std::string c; std::getline(in, c, ',');) cells.push_back(c);
+	if (!line.empty() && line.back() == ',') cells.emplace_back();
+	return cells;
+}
+}  // namespace
+
+Summary readCsv(const std::string& path)
+{
+	Summary s;
+	std::vector<std::string> header;
+	forEachDataLine(path, "summary CSV", [&](int, const std::string& line) {
+		const auto cells = splitCsv(line);
+		if (header.empty())
+		{
+			if (cells.size() < 2 || cells[0] != "name" || cells[1] != "group")
+				throw std::invalid_argument("the first line must be 'name,group,...'");
+			header = cells;
+			return;
+		}
+		if (cells.size() != header.size())
+			throw std::invalid_argument(std::to_string(cells.size()) + " cells, the header has " +
+										std::to_string(header.size()));
+		SummaryRow r{cells[0], cells[1], {}};
+		for (std::size_t i = 2; i < cells.size(); ++i)
+			if (!cells[i].empty()) r.metrics[header[i]] = parseDouble(cells[i]);
+		s.push_back(std::move(r));
+	});
+	return s;
+}
+
+namespace
+{
+std::string fmt(const char* f, double v)
+{
+	if (std::isnan(v)) return "–";
+	char b[64];
+	std::snprintf(b, sizeof b, f, v);
+	return b;
+}
+std::string percent(double share) { return fmt("%.1f %%", 100 * share); }
+std::string metres(double v) { return fmt("%.3f m", v); }
+
+/** The engine's path error, flagged when it is worse than the wheels alone:
+ * the engine lost its way, and the figure is not a fair one of the sensor. */
+std::string pathCell(const SummaryRow& r, const std::string& prefix)
+{
+	const double ate = r.get(prefix + "_ate_rmse"), final_xy = r.get(prefix + "_final_xy");
+	const bool diverged = ate > r.get("odometry_ate_rmse");
+	return metres(ate) + " / " + metres(final_xy) + (diverged ? " (diverged)" : "");
+}
+
+const std::map<std::string, std::pair<double, double>> kPaperTableII = {
+	{"maze", {0.1375, 7.639}}, {"factory", {0.0809, 4.493}}};
+
+void table2(std::ostream& o, const Summary& s)
+{
+	o << "| world | paper: mean abs. difference | paper: mean % | ours: mean abs. difference | ours: mean % | ours: "
+		 "signed mean | pairs excluded |\n|---|---|---|---|---|---|---|\n";
+	for (const auto& r : s)
+	{
+		const auto paper = kPaperTableII.find(r.name);
+		if (paper == kPaperTableII.end()) continue;
+		o << "| " << r.name << " | " << metres(paper->second.first) << " | " << fmt("%.3f %%", paper->second.second)
+		  << " | " << metres(r.get("accuracy_mean_abs")) << " | " << fmt("%.3f %%", r.get("accuracy_mean_percent"))
+		  << " | " << metres(r.get("accuracy_signed_mean")) << " | " << percent(r.get("accuracy_excluded_fraction"))
+		  << " |\n";
+	}
+}
+
+void truth(std::ostream& o, const Summary& s)
+{
+	o << "| world | group | within 2 cm | within 5 cm | missed | false obstacles | mean abs. vs truth | mean abs. vs "
+		 "laser |\n|---|---|---|---|---|---|---|---|\n";
+	for (const auto& r : s)
+		o << "| " << r.name << " | " << r.group << " | " << percent(r.get("truth_within_2cm")) << " | "
+		  << percent(r.get("truth_within_5cm")) << " | " << percent(r.get("truth_missed")) << " | "
+		  << percent(r.get("truth_false_obstacles")) << " | " << metres(r.get("truth_mean_abs")) << " | "
+		  << metres(r.get("accuracy_mean_abs")) << " |\n";
+}
+
+void maps(std::ostream& o, const Summary& s)
+{
+	o << "| world | laser: precision | laser: recall | laser: wall thickness | omnicam: precision | omnicam: recall | "
+		 "omnicam: wall thickness |\n|---|---|---|---|---|---|---|\n";
+	for (const auto& r : s)
+	{
+		o << "| " << r.name;
+		for (const std::string sensor : {"LASER", "OMNISCAN"})
+			o << " | " << fmt("%.3f", r.get("gt_" + sensor + "_precision")) << " | "
+			  << fmt("%.3f", r.get("gt_" + sensor + "_recall")) << " | " << metres(r.get("gt_" + sensor + "_thickness"));
+		o << " |\n";
+	}
+}
+
+void paths(std::ostream& o, const Summary& s)
+{
+	o << "| world | odometry alone | icp-slam, laser | icp-slam, omnicam | guarded, laser | guarded, omnicam |\n"
+	  << "|---|---|---|---|---|---|\n";
+	for (const auto& r : s)
+		o << "| " << r.name << " | " << metres(r.get("odometry_ate_rmse")) << " / " << metres(r.get("odometry_final_xy"))
+		  << " | " << pathCell(r, "icp_LASER") << " | " << pathCell(r, "icp_OMNISCAN") << " | "
+		  << pathCell(r, "guarded_LASER") << " | " << pathCell(r, "guarded_OMNISCAN") << " |\n";
+}
+
+void clocks(std::ostream& o, const Summary& s)
+{
+	o << "| world | frames | run |\n|---|---|---|\n";
+	double total = 0;
+	for (const auto& r : s)
+	{
+		o << "| " << r.name << " | " << fmt("%.0f", r.get("frames")) << " | " << fmt("%.0f s", r.get("seconds")) << " |\n";
+		total += r.get("seconds");
+	}
+	o << "| all, one after another | | " << fmt("%.0f s", total) << " |\n";
+}
+
+double median(std::vector<double> v)
+{
+	if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+	std::sort(v.begin(), v.end());
+	return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+void shortTable(std::ostream& o, const Summary& s)
+{
+	o << "| world | mean abs. vs laser (paper) | within 5 cm of the truth | missed | guarded path ATE, omnicam |\n"
+	  << "|---|---|---|---|---|\n";
+	std::map<std::string, std::vector<const SummaryRow*>> groups;
+	for (const auto& r : s)
+	{
+		const auto paper = kPaperTableII.find(r.name);
+		if (r.group != "room")
+		{
+			o << "| " << r.name << " | " << metres(r.get("accuracy_mean_abs"))
+			  << (paper != kPaperTableII.end() ? " (" + metres(paper->second.first) + ")" : "") << " | "
+			  << percent(r.get("truth_within_5cm")) << " | " << percent(r.get("truth_missed")) << " | "
+			  << metres(r.get("guarded_OMNISCAN_ate_rmse")) << " |\n";
+			continue;
+		}
+		groups[r.group].push_back(&r);
+	}
+	for (const auto& [group, rows] : groups)
+	{
+		const auto med = [&](const std::string& key) {
+			std::vector<double> v;
+			for (const auto* r : rows) v.push_back(r->get(key));
+			return median(v);
+		};
+		o << "| " << rows.size() << " held-out rooms, median | " << metres(med("accuracy_mean_abs")) << " | "
+		  << percent(med("truth_within_5cm")) << " | " << percent(med("truth_missed")) << " | "
+		  << metres(med("guarded_OMNISCAN_ate_rmse")) << " |\n";
+	}
+}
+
+using TableWriter = void (*)(std::ostream&, const Summary&);
+const std::vector<std::pair<std::string, TableWriter>>& writers()
+{
+	static const std::vector<std::pair<std::string, TableWriter>> w = {
+		{"table2", table2}, {"truth", truth}, {"maps", maps}, {"paths", paths}, {"time", clocks}, {"short", shortTable}};
+	return w;
+}
+}  // namespace
+
+const std::vector<std::string>& tableNames()
+{
+	static const std::vector<std::string> names = [] {
+		std::vector<std::string> n;
+		for (const auto& [name, w] : writers()) n.push_back(name);
+		return n;
+	}();
+	return names;
+}
+
+std::string markdownTable(const std::string& name, const Summary& s)
+{
+	for (const auto& [n, write] : writers())
+		if (n == name)
+		{
+			std::ostringstream o;
+			write(o, s);
+			return o.str();
+		}
+	throw std::runtime_error("no table '" + name + "'");
+}
+
+std::string fillTables(const std::string& text, const Summary& s)
+{
+	static const std::string open = "<!-- table: ", close = "<!-- end table -->";
+	std::string out;
+	std::size_t at = 0;
+	for (std::size_t start; (start = text.find(open, at)) != std::string::npos;)
+	{
+		const std::size_t name_end = text.find(" -->", start);
+		const std::size_t end = text.find(close, start);
+		if (name_end == std::string::npos || end == std::string::npos)
+			throw std::runtime_error("a table block opened at character " + std::to_string(start) + " is not closed");
+		const std::string name = text.substr(start + open.size(), name_end - start - open.size());
+		out += text.substr(at, name_end + 4 - at) + "\n" + markdownTable(name, s) + close;
+		at = end + close.size();
+	}
+	return out + text.substr(at);
+}
+
+}  // namespace omnirange::eval

@@ -1,0 +1,43 @@
+#pragma once
+// An ini file of ours over a base: a line `base = FILE` before the first
+// section names another ini (relative to this file's folder) whose keys this
+// one starts from; each key this file sets replaces the base's. A base may
+// have a base of its own. Experiment inis use it to hold only what differs
+// from ini/experiment-base.ini, so a default is written once.
+
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace omnirange
+{
+struct LayeredIni
+{
+	/** The files read, the deepest base first and `path` last. */
+	std::vector<std::string> files;
+	/** Every section and key of all of them, later files winning. */
+	std::shared_ptr<const mrpt::config::CConfigFileMemory> merged;
+	/** "section/key" -> the file whose value `merged` holds: a relative path
+	 * in a value is relative to the folder of the file that wrote it. */
+	std::map<std::string, std::string> origin;
+
+	/** The file that set `key` of `section` ("" if none did). */
+	std::string originOf(const std::string& section, const std::string& key) const
+	{
+		const auto it = origin.find(section + "/" + key);
+		return it == origin.end() ? std::string() : it->second;
+	}
+};
+
+/** The `base = FILE` of the ini `path`, resolved against its folder; "" if it has none. */
+std::string iniBaseOf(const std::string& path);
+
+/** Reads `path` and its bases. Each file must be a regular file with no key
+ * repeated in a section; a missing base or a cycle of bases is an error.
+ * Throws std::runtime_error naming the file. */
+LayeredIni readLayeredIni(const std::string& path);
+
+}  // namespace omnirange

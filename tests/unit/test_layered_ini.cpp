@@ -1,0 +1,89 @@
+// An ini over a base: the file's keys replace the base's, bases chain, and a
+// missing base or a cycle is an error that names the file.
+#include <omnirange/io/LayeredIni.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace omnirange;
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string write(const std::string& dir, const std::string& name, const std::string& text)
+{
+	fs::create_directories(dir);
+	const std::string path = dir + "/" + name;
+	std::ofstream(path) << text;
+	return path;
+}
+
+std::string dir(const std::string& name) { return testing::TempDir() + "layered_ini_" + name; }
+}  // namespace
+
+TEST(LayeredIni, TheFilesKeysReplaceTheBasesAndTheRestIsInherited)
+{
+	const std::string d = dir("replace");
+	write(d, "base.ini", "[a]\nx = 1\ny = 2\n[b]\nz = 3\n");
+	const std::string top = write(d, "top.ini", "; a comment\nbase = base.ini\n\n[a]\ny = 20\nw = 4\n");
+	const LayeredIni ini = readLayeredIni(top);
+	ASSERT_EQ(ini.files.size(), 2u);
+	EXPECT_EQ(fs::path(ini.files[0]).filename(), "base.ini");
+	EXPECT_EQ(ini.merged->read_int("a", "x", 0), 1);
+	EXPECT_EQ(ini.merged->read_int("a", "y", 0), 20);
+	EXPECT_EQ(ini.merged->read_int("a", "w", 0), 4);
+	EXPECT_EQ(ini.merged->read_int("b", "z", 0), 3);
+	EXPECT_FALSE(ini.merged->keyExists("", "base"));
+	// Which file each value came from: relative paths in it are relative to that file's folder.
+	EXPECT_EQ(fs::path(ini.originOf("a", "x")).filename(), "base.ini");
+	EXPECT_EQ(fs::path(ini.originOf("a", "y")).filename(), "top.ini");
+	EXPECT_EQ(ini.originOf("a", "nothing"), "");
+}
+
+TEST(LayeredIni, BasesChainAndAFileWithoutOneIsItself)
+{
+	const std::string d = dir("chain");
+	write(d + "/deep", "root.ini", "[s]\nk = root\nonly_root = 1\n");
+	write(d, "mid.ini", "base = deep/root.ini\n[s]\nk = mid\n");
+	const std::string top = write(d, "top.ini", "base = mid.ini\n[s]\nk = top\n");
+	const LayeredIni ini = readLayeredIni(top);
+	EXPECT_EQ(ini.files.size(), 3u);
+	EXPECT_EQ(ini.merged->read_string("s", "k", ""), "top");
+	EXPECT_EQ(ini.merged->read_int("s", "only_root", 0), 1);
+	EXPECT_EQ(readLayeredIni(d + "/deep/root.ini").files.size(), 1u);
+	EXPECT_EQ(iniBaseOf(d + "/deep/root.ini"), "");
+}
+
+TEST(LayeredIni, AMissingBaseACycleAndARepeatedKeyAreErrorsNamingTheFile)
+{
+	const std::string d = dir("errors");
+	const auto fails = [](const std::string& path, const std::string& says) {
+		try
+		{
+			readLayeredIni(path);
+			ADD_FAILURE() << path << " was read";
+		}
+		catch (const std::runtime_error& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+		}
+	};
+	fails(write(d, "orphan.ini", "base = nowhere.ini\n[s]\nk = 1\n"), "nowhere.ini");
+	write(d, "one.ini", "base = two.ini\n[s]\n");
+	fails(write(d, "two.ini", "base = one.ini\n[s]\n"), "lead back");
+	write(d, "twice.ini", "[s]\nk = 1\nk = 2\n");
+	fails(write(d, "over-twice.ini", "base = twice.ini\n[s]\n"), "twice.ini:3");
+	fails(write(d, "empty-base.ini", "base =\n[s]\n"), "names no file");
+	fails(d + "/absent.ini", "absent.ini");
+}
+
+TEST(LayeredIni, ABaseKeyInsideASectionIsAnOrdinaryKey)
+{
+	// Only a `base` before the first section names a base.
+	const std::string d = dir("in_section");
+	const std::string top = write(d, "top.ini", "[s]\nbase = other.ini\n");
+	EXPECT_EQ(iniBaseOf(top), "");
+	EXPECT_EQ(readLayeredIni(top).merged->read_string("s", "base", ""), "other.ini");
+}
