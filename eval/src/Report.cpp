@@ -27,7 +27,7 @@ void writeMapsTable(std::ostream& o, const ExperimentResults& r)
 	const auto slamRow = [&](const std::string& engine, const SensorMaps& s, const MapMetrics& g, const PathError& p) {
 		o << "| " << engine << " + odometry | " << s.label << " | " << g.occupied << " | " << fmt("%.3f", g.precision)
 		  << " | " << fmt("%.3f", g.recall) << " | " << fmt("%.3f m", g.thickness) << " | " << fmt("%.3f m", p.ate_rmse)
-		  << " | " << fmt("%.3f m", p.final_xy) << ", " << fmt("%.1f deg", p.final_yaw * 180 / M_PI) << " |\n";
+		  << (worseThanOdometry(p.ate_rmse, r.odometry_path.ate_rmse) ? kWorseThanOdometry : "") << " | " << fmt("%.3f m", p.final_xy) << ", " << fmt("%.1f deg", p.final_yaw * 180 / M_PI) << " |\n";
 	};
 	const auto& odo = r.odometry_path;
 	o << "| odometry alone | - | - | - | - | - | " << fmt("%.3f m", odo.ate_rmse) << " | " << fmt("%.3f m", odo.final_xy)

@@ -1,5 +1,7 @@
 #include "omnirange_eval/Summary.h"
 
+#include "omnirange_eval/Trajectory.h"
+
 #include <omnirange/io/OptionsTable.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -117,13 +119,12 @@ std::string fmt(const char* f, double v)
 std::string percent(double share) { return fmt("%.1f %%", 100 * share); }
 std::string metres(double v) { return fmt("%.3f m", v); }
 
-/** The engine's path error, flagged when it is worse than the wheels alone:
- * the engine lost its way, and the figure is not a fair one of the sensor. */
+/** "ATE / final", flagged when the engine lost its way (worseThanOdometry()). */
 std::string pathCell(const SummaryRow& r, const std::string& prefix)
 {
 	const double ate = r.get(prefix + "_ate_rmse"), final_xy = r.get(prefix + "_final_xy");
-	const bool diverged = ate > r.get("odometry_ate_rmse");
-	return metres(ate) + " / " + metres(final_xy) + (diverged ? " (diverged)" : "");
+	return metres(ate) + " / " + metres(final_xy) +
+		   (worseThanOdometry(ate, r.get("odometry_ate_rmse")) ? kWorseThanOdometry : "");
 }
 
 const std::map<std::string, std::pair<double, double>> kPaperTableII = {

@@ -83,7 +83,7 @@ TEST(Summary, TablesShowTheRunsFiguresThePapersBesideAndFlagADivergedEngine)
 	const std::string paths = eval::markdownTable("paths", s);
 	// The maze's engine beat the wheels; the lab's is 13 times worse than them.
 	EXPECT_NE(paths.find("0.179 m / 0.665 m |"), std::string::npos) << paths;
-	EXPECT_NE(paths.find("3.963 m / 5.000 m (diverged)"), std::string::npos) << paths;
+	EXPECT_NE(paths.find("3.963 m / 5.000 m (worse than odometry)"), std::string::npos) << paths;
 	EXPECT_THROW(eval::markdownTable("no-such-table", s), std::runtime_error);
 }
 

@@ -39,6 +39,11 @@ struct PathError
 	mrpt::poses::CPose2D alignment;  ///< estimated frame -> ground-truth frame (best fit)
 };
 
+/** An engine whose path error is above the wheels' alone lost its way: its
+ * figure says nothing fair about the sensor, and reports flag it. */
+inline bool worseThanOdometry(double engine_ate, double odometry_ate) { return engine_ate > odometry_ate; }
+inline constexpr const char* kWorseThanOdometry = " (worse than odometry)";
+
 /** Compares estimated poses with the ground truth at the same times. */
 PathError comparePaths(const std::vector<StampedPose>& estimated, const std::vector<StampedPose>& truth);
 
