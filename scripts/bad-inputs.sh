@@ -187,6 +187,24 @@ awk '{print} /^\[experiment\]/{print "unknown_key = 1"}' "$ini" > exp/ini/exp_ba
 run_case "experiment: unknown key" error report -- "$apps/omnirange-experiment" -q exp/ini/exp_bad.ini -o report
 run_case "experiment: ini missing" error report -- "$apps/omnirange-experiment" -q none.ini -o report
 
+# The output rule: an output replaces only what the same program wrote
+# before; the user's own files around it must come through whole.
+mkdir -p users_folder && echo mine > users_folder/note.txt && echo mine > users_file.txt
+kept() {  # kept FILE...: each still holds "mine"
+  for f in "$@"; do
+    [ "$(cat "$f" 2>/dev/null)" = mine ] || { echo "| | PROBLEM: $f of the user's was changed or removed |"; problems=$((problems + 1)); }
+  done
+}
+run_case "experiment: -o names a folder of the user's" error none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o users_folder
+run_case "experiment: -o names a file of the user's" error none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o users_file.txt
+run_case "experiment: -o names the worlds folder it reads" error none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o exp/worlds/
+run_case "scan: an output whose NAME_Images is the input's" error none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o s.rawlog.gz
+run_case "scan: an output onto a text file of the user's" error none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o users_file.txt
+run_case "calibrate: --save-to the colour model it reads" error none.out -- "$apps/omnirange-calibrate" -q -i s.rawlog -c f.ini -H floor.hist --save-to floor.hist
+run_case "import: an output inside its images folder" error none.out -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv -o imp/out.rawlog
+kept users_folder/note.txt users_file.txt
+[ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
+
 chmod 755 readonly
 echo
 echo "$n cases, $problems problems"

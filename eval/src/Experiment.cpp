@@ -8,6 +8,7 @@
 #include "omnirange_eval/SensoryFrameFormat.h"
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/OutputRule.h>
 #include <omnirange/io/Progress.h>
 #include <omnirange/io/Temporaries.h>
 #include <omnirange/io/RawlogScan.h>
@@ -29,6 +30,7 @@ namespace omnirange::eval
 {
 namespace
 {
+constexpr const char* kProgram = "omnirange-experiment";
 
 mrpt::maps::COccupancyGridMap2D loadGrid(const std::string& file)
 {
@@ -81,10 +83,17 @@ Metrics Experiment::run()
 	// Every stage writes into a fresh staging folder; the report folder is
 	// replaced only when all of them succeeded, so a failed run never leaves
 	// new data beside an old report.
-	const std::string report = fs::absolute(c_.output).lexically_normal().string();
+	const std::string report = outputPath(fs::absolute(c_.output).string());
+	recoverLeftoversOf(report);
+	requireOutputAllowed(report, OutputKind::Folder, kProgram,
+						 {c_.ini_file, c_.world, c_.route, c_.robot, c_.icp_laser_ini, c_.icp_omni_ini, c_.map_laser_ini,
+						  c_.map_omni_ini, c_.rbpf_laser_ini, c_.rbpf_omni_ini},
+						 force_);
 	const std::string staging = report + ".staging-" + std::to_string(::getpid());
 	fs::remove_all(staging);
 	temporaries::add(staging);
+	fs::create_directories(staging);
+	markOutputFolder(staging, kProgram);
 	setFolder(staging);
 	Metrics m;
 	try
@@ -94,17 +103,15 @@ Metrics Experiment::run()
 	catch (const std::exception& e)
 	{
 		temporaries::forget(staging);
-		const std::string failed = report + ".failed";
-		fs::remove_all(failed);
-		fs::rename(staging, failed);
+		// What the failed run made, kept for a look where a failed run of ours kept it before.
+		std::string failed = report + ".failed";
+		if (fs::exists(failed) && !isOutputFolderOf(failed, kProgram)) failed = staging;
+		else fs::remove_all(failed), fs::rename(staging, failed);
 		throw std::runtime_error(std::string(e.what()) + " (partial output in '" + failed + "'; '" + report +
 								 "' is as it was)");
 	}
 	temporaries::forget(staging);
-	const std::string old = report + ".old-" + std::to_string(::getpid());
-	if (fs::exists(report)) fs::rename(report, old);
-	fs::rename(staging, report);
-	fs::remove_all(old);
+	replaceFolder(report, staging);
 	setFolder(report);
 	return m;
 }

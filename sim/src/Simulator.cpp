@@ -50,6 +50,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	const std::string base = stemOf(o.output);
 	requireOutputsAreNotInputs({o.output, base + "_truemap.png", base + "_truemap.gridmap.gz"},
 							   {o.world_file, o.route_file, o.robot_ini});
+	requireRawlogOutputAllowed(o.output, {o.world_file, o.route_file, o.robot_ini}, o.force);
 	RobotParams robot;
 	if (!o.robot_ini.empty()) robot = RobotParams::loadFile(o.robot_ini);
 	if (!o.image_format.empty())
@@ -72,6 +73,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 
 	// 2. The frames: ODOMETRY, GT, OMNICAM, TRUTH, LASER at each pose.
 	RawlogWriter out(o.output);
+	if (o.force) out.replaceAnyImagesFolder();
 	OdometrySimulator odometry(robot.odometry, robot.robot.seed * 31u + 1u);
 	std::mt19937_64 laser_rng(robot.robot.seed * 131u + 7u);
 	const auto& cam = robot.omnicam;

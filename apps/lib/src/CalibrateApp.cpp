@@ -3,6 +3,8 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/OutputRule.h>
+#include <omnirange/io/RawlogWriter.h>
 #include <omnirange/io/IniSectionWriter.h>
 #include <omnirange/io/OptionsTable.h>
 #include <omnirange/io/Progress.h>
@@ -72,6 +74,12 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-calibrate"), o_(std::move(o))
 {
 	setMinLoggingLevel(o_.verbosity);
+	// --save-to writes keys into an ini (the -c one is the usual choice), never into what was read.
+	std::vector<std::string> inputs{o_.calibration.input, o_.histogram, o_.ocamcalib};
+	inputs.insert(inputs.end(), o_.checkerboards.begin(), o_.checkerboards.end());
+	inputs.insert(inputs.end(), o_.rim_images.begin(), o_.rim_images.end());
+	if (!o_.calibration.input.empty()) inputs.push_back(imagesDirFor(o_.calibration.input));
+	requireOutputAllowed(o_.save_to, OutputKind::Ini, "omnirange-calibrate", inputs);
 }
 
 MirrorCalibration CalibrateApp::run()

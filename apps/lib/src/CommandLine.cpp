@@ -40,6 +40,12 @@ VerbosityArgs::VerbosityArgs(TCLAP::CmdLine& cmd)
 {
 }
 
+ForceArg::ForceArg(TCLAP::CmdLine& cmd)
+	: force("", "force",
+			"replace an existing output (file or folder) that this program did not write; never an input", cmd)
+{
+}
+
 mrpt::system::VerbosityLevel VerbosityArgs::level()
 {
 	if (quiet.getValue()) return mrpt::system::LVL_ERROR;

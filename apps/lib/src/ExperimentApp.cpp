@@ -18,9 +18,11 @@ ExperimentApp::Options ExperimentApp::parse(int argc, const char* const* argv)
 						   "with learn = true, also score every candidate learning tried on the rest of the route "
 						   "against the truth, into candidates_on_route.csv in the report folder (a study; minutes more)",
 						   cmd);
+	ForceArg force(cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	o.ini = ini.getValue(), o.output = output.getValue(), o.max_frames = frames.getValue(), o.robot = robot.getValue();
+	o.force = force.value();
 	o.study_candidates = study.getValue();
 	o.verbosity = verbosity.level();
 	return o;
@@ -39,6 +41,7 @@ eval::Metrics ExperimentApp::run()
 	if (o_.study_candidates && !config.learn)
 		throw std::runtime_error("--study-candidates needs learn = true in '" + o_.ini + "': it studies learning's candidates");
 	eval::Experiment e(config);
+	e.setForce(o_.force);
 	e.setMinLoggingLevel(o_.verbosity);
 	e.setCandidateStudy(o_.study_candidates);
 	const auto m = e.run();

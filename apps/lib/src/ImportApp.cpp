@@ -37,8 +37,10 @@ ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<double> max_range("", "laser-max-range", "ranges <= 0 or >= this are no return [m]", false, i.laser_max_range, "M", cmd);
 	TCLAP::ValueArg<std::string> omni_label("", "omni-label", "label of the images", false, i.omni_label, "LABEL", cmd);
 	TCLAP::ValueArg<std::string> laser_label("", "laser-label", "label of the laser scans", false, i.laser_label, "LABEL", cmd);
+	ForceArg force(cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	i.force = force.value();
 	i.images_dir = images.getValue(), i.image_list = list.getValue(), i.laser_csv = laser.getValue();
 	i.odometry_csv = odometry.getValue(), i.carmen_log = carmen.getValue(), i.output = out.getValue();
 	i.omni_label = omni_label.getValue(), i.laser_label = laser_label.getValue();

@@ -32,8 +32,10 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	TCLAP::SwitchArg skip_bad("", "skip-bad-images",
 							  "skip a missing, cut or undecodable image (no scan for it; each named, and counted) instead of stopping",
 							  cmd);
+	ForceArg force(cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	s.force = force.value();
 	o.ini = ini.getValue(), o.section = section.getValue(), o.histogram = hist.getValue();
 	s.input = in.getValue(), s.output = out.getValue(), s.omni_label = omni.getValue();
 	s.threads = threads.getValue(), s.decode_only = decode_only.getValue();

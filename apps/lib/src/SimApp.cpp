@@ -18,8 +18,10 @@ SimApp::Options SimApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<int> frames("n", "max-frames", "stop after this many frames (0: the whole route)", false, s.max_frames, "N", cmd);
 	TCLAP::ValueArg<int> threads("j", "threads", "rendering threads", false, s.threads, "N", cmd);
 	TCLAP::ValueArg<std::string> format("f", "image-format", "png or jpg, overriding the robot ini", false, "", "FMT", cmd);
+	ForceArg force(cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	s.force = force.value();
 	s.world_file = world.getValue(), s.route_file = route.getValue(), s.robot_ini = robot.getValue();
 	s.output = out.getValue(), s.max_frames = frames.getValue(), s.threads = threads.getValue();
 	s.image_format = format.getValue();

@@ -18,14 +18,26 @@
 namespace omnirange
 {
 void writeAtomically(
-	const std::string& path, const std::function<void(const std::string&)>& write)
+	const std::string& given, const std::function<void(const std::string&)>& write)
 {
+	namespace fs = std::filesystem;
+	// A link is written through (the file it names is replaced, the link
+	// stays), and a file keeps its mode; a read-only one is not replaced.
+	std::error_code ec;
+	const std::string path = fs::is_symlink(given, ec) ? fs::weakly_canonical(given, ec).string() : given;
+	const bool existed = fs::is_regular_file(path, ec);
+	const auto mode = existed ? fs::status(path, ec).permissions() : fs::perms::unknown;
+	// By its mode bits, not access(): root may write anything, but a user
+	// who made a file read-only meant it to stay.
+	if (existed && (::access(path.c_str(), W_OK) != 0 || (mode & fs::perms::owner_write) == fs::perms::none))
+		throw std::runtime_error("'" + given + "' is read-only: refusing to replace it");
 	const std::string tmp =
 		path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
 	temporaries::add(tmp);
 	try
 	{
 		write(tmp);
+		if (existed) fs::permissions(tmp, mode);
 		syncToDisk(tmp, path);
 	}
 	catch (...)

@@ -149,15 +149,15 @@ LogImportSummary importLogs(const LogImportOptions& o)
 {
 	require(o.laser_fov > 0 && o.laser_fov <= 2 * M_PI, "the laser's field of view must be within (0, 360] degrees");
 	require(o.laser_max_range > 0, "the laser's max range must be > 0 m");
-	requireOutputsAreNotInputs({o.output}, {o.image_list, o.laser_csv, o.odometry_csv, o.carmen_log});
+	requireRawlogOutputAllowed(o.output, {o.image_list, o.images_dir, o.laser_csv, o.odometry_csv, o.carmen_log}, o.force);
 	require(o.carmen_log.empty() || (o.laser_csv.empty() && o.odometry_csv.empty()),
 			"a CARMEN log gives the laser and the odometry: not with laser or odometry CSVs too");
 	// 1. Read and check everything before writing anything.
 	const std::vector<TimedImage> images = listImages(o.images_dir, o.image_list);
 	// The output's image folder is replaced at the end: it must hold no input.
-	std::set<std::string> image_dirs;
-	for (const TimedImage& im : images) image_dirs.insert(fs::path(im.file).parent_path().string());
-	requireOutputsAreNotInputs({imagesDirFor(o.output)}, {image_dirs.begin(), image_dirs.end()});
+	std::vector<std::string> image_files;
+	for (const TimedImage& im : images) image_files.push_back(im.file);
+	requireRawlogOutputAllowed(o.output, image_files, o.force);
 	std::vector<LaserRow> scans = o.laser_csv.empty() ? std::vector<LaserRow>{} : readLaserCsv(o.laser_csv);
 	std::vector<OdometryRow> odometry =
 		o.odometry_csv.empty() ? std::vector<OdometryRow>{} : readOdometryCsv(o.odometry_csv);
@@ -188,6 +188,7 @@ LogImportSummary importLogs(const LogImportOptions& o)
 
 	// 2. Write the three streams merged in time order (at one time: image, scan, odometry).
 	RawlogWriter out(o.output);
+	if (o.force) out.replaceAnyImagesFolder();
 	std::size_t i = 0, j = 0, k = 0;
 	const auto time = [](auto& v, std::size_t n) { return n < v.size() ? v[n].time : INFINITY; };
 	while (i < images.size() || j < scans.size() || k < odometry.size())

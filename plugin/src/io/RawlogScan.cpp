@@ -133,7 +133,7 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, Progress* progress)
 {
 	if (o.threads < 1 || o.threads > 256) throw std::invalid_argument("threads must be within [1, 256]");
-	if (!o.decode_only) requireOutputsAreNotInputs({o.output}, {o.input});
+	if (!o.decode_only) requireRawlogOutputAllowed(o.output, {o.input, imagesDirFor(o.input)}, o.force);
 	cv::setNumThreads(o.threads);
 
 	RawlogProcessor loop(o.input);
@@ -142,6 +142,7 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	{
 		writer.emplace(o.output);
 		writer->linkImagesTo(imagesDirFor(o.input));
+		if (o.force) writer->replaceAnyImagesFolder();
 	}
 	const std::size_t batch_images = 8 * static_cast<std::size_t>(o.threads);
 	std::optional<FloorAdaptation> adaptation;

@@ -1,6 +1,7 @@
 #include "omnirange/io/RawlogWriter.h"
 
 #include "omnirange/io/AtomicWrite.h"
+#include "omnirange/io/OutputRule.h"
 #include "omnirange/io/Temporaries.h"
 
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -28,9 +29,25 @@ std::string imagesDirFor(const std::string& rawlog_path)
 	return (p.parent_path() / (stem + "_Images")).string();
 }
 
+void requireRawlogOutputAllowed(const std::string& rawlog, const std::vector<std::string>& inputs, bool force)
+{
+	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
+	requireOutputAllowed(imagesDirFor(outputPath(rawlog)), OutputKind::Folder, kRawlogImagesOwner, inputs, force);
+}
+
+namespace
+{
+/** A link is written through: the file it names is replaced, the link stays. */
+std::string writtenThrough(const std::string& path)
+{
+	std::error_code ec;
+	return fs::is_symlink(path, ec) ? fs::weakly_canonical(path, ec).string() : path;
+}
+}  // namespace
+
 RawlogWriter::RawlogWriter(const std::string& path, int gz_level)
-	: path_(path),
-	  tmp_path_(path + ".tmp-" + std::to_string(::getpid())),
+	: path_(writtenThrough(path)),
+	  tmp_path_(path_ + ".tmp-" + std::to_string(::getpid())),
 	  images_(imagesDirFor(path)),
 	  tmp_images_(images_ + ".tmp-" + std::to_string(::getpid())),
 	  out_(std::make_unique<mrpt::io::CFileGZOutputStream>())
@@ -73,6 +90,7 @@ void RawlogWriter::startImages()
 	if (has_images_) return;
 	fs::remove_all(tmp_images_);
 	fs::create_directories(tmp_images_);
+	markOutputFolder(tmp_images_, kRawlogImagesOwner);
 	has_images_ = true;
 }
 
@@ -106,18 +124,41 @@ void RawlogWriter::commit()
 	// flush that failed (a full disk) is found before the file is renamed.
 	requireWholeGzipFile(tmp_path_, path_);
 	syncToDisk(tmp_path_, path_);
-	if (has_images_)
+	const bool link = !has_images_ && !link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_);
+	if (!has_images_ && !link)
 	{
-		fs::remove_all(images_);
-		fs::rename(tmp_images_, images_);
+		fs::rename(tmp_path_, path_);
+		committed_ = true;
+		return;
 	}
-	else if (!link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_))
+	// The old images go aside, the new ones in, then the rawlog; only when
+	// all three moves succeeded is the old folder removed.
+	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
+	if (had_old && !fs::is_symlink(images_) && !replace_any_ && !fs::is_empty(images_) &&
+		!isOutputFolderOf(images_, kRawlogImagesOwner))
+		throw std::runtime_error("'" + images_ + "' is a folder no rawlog writer of ours made (no " + kOutputMarker +
+								 "): refusing to replace it (--force to)");
+	const std::string old = images_ + ".old-" + std::to_string(::getpid());
+	if (had_old) fs::rename(images_, old);
+	bool moved_in = false;
+	try
 	{
-		fs::remove_all(images_);
-		fs::create_directory_symlink(fs::absolute(link_to_), images_);
+		if (has_images_) fs::rename(tmp_images_, images_);
+		else fs::create_directory_symlink(fs::absolute(link_to_), images_);
+		moved_in = true;
+		fs::rename(tmp_path_, path_);
 	}
-	fs::rename(tmp_path_, path_);
+	catch (const std::exception& e)
+	{
+		std::error_code ec;
+		if (moved_in) fs::remove_all(images_, ec);  // ours, just moved in (a link: only the link)
+		if (had_old) fs::rename(old, images_, ec);
+		throw std::runtime_error("cannot move '" + path_ + "' and its images into place (" + e.what() +
+								 "); the old ones are as they were");
+	}
 	committed_ = true;
+	std::error_code ec;
+	if (had_old) fs::remove_all(old, ec);
 }
 
 }  // namespace omnirange

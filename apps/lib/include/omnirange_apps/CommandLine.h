@@ -35,6 +35,16 @@ struct VerbosityArgs
 	TCLAP::SwitchArg quiet, verbose;
 };
 
+/** --force, added to a command line: replace an output that this program
+ * did not write (the output rule, OutputRule.h; never an input). */
+struct ForceArg
+{
+	explicit ForceArg(TCLAP::CmdLine& cmd);
+	bool value() { return force.getValue(); }
+
+	TCLAP::SwitchArg force;
+};
+
 /** Parses the command line; on --help/--version or an error (reported on
  * one line of stderr), throws ExitRequest with code 0 or 2. */
 void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv);

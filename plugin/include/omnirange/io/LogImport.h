@@ -68,6 +68,8 @@ struct LogImportOptions
 	double laser_fov{3.14159265358979323846};  ///< [rad] from the first ray to the last
 	double laser_max_range{19.8};  ///< [m] a range <= 0 or >= this is no return
 	double laser_std_error{0.01};  ///< [m]
+	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; OutputRule.h). */
+	bool force{false};
 };
 
 struct LogImportSummary

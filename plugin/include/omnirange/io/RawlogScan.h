@@ -26,6 +26,8 @@ struct RawlogScanOptions
 	/** A missing, cut or undecodable image is skipped (no scan for it, counted
 	 * in the summary and named in `skipped_names`) instead of stopping the run. */
 	bool skip_bad_images{false};
+	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; OutputRule.h). */
+	bool force{false};
 };
 
 struct RawlogScanSummary

@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace mrpt::io
 {
@@ -19,6 +20,15 @@ namespace omnirange
 {
 /** NAME_Images beside NAME.rawlog (the folder MRPT's programs look in). */
 std::string imagesDirFor(const std::string& rawlog_path);
+
+/** What the marker of a NAME_Images folder written by RawlogWriter names (OutputRule.h). */
+inline constexpr const char* kRawlogImagesOwner = "omnirange rawlog images";
+
+/** The output rule (OutputRule.h) for a rawlog this writer is to write and
+ * its NAME_Images: the rawlog may replace only a rawlog, the folder only
+ * images a writer of ours made (or a link); neither may be, hold or sit in
+ * an input. Throws std::runtime_error naming the path, before any work. */
+void requireRawlogOutputAllowed(const std::string& rawlog, const std::vector<std::string>& inputs, bool force);
 
 class RawlogWriter
 {
@@ -40,8 +50,13 @@ class RawlogWriter
 	/** At commit(), make NAME_Images a symbolic link to an existing images
 	 * folder (a rawlog that adds observations to another keeps its images). */
 	void linkImagesTo(const std::string& existing_dir) { link_to_ = existing_dir; }
+	/** Let commit() replace a NAME_Images folder that no rawlog writer of
+	 * ours made (the user's --force; the output rule, OutputRule.h). */
+	void replaceAnyImagesFolder() { replace_any_ = true; }
 	/** Finishes the rawlog and moves it (and its images, if any) into place,
-	 * replacing what was there. */
+	 * replacing what a rawlog writer of ours wrote there before. If a step
+	 * fails, the old rawlog and images are left as they were. Throws
+	 * std::runtime_error naming a NAME_Images folder that is not ours. */
 	void commit();
 
 	std::size_t objectsWritten() const { return count_; }
@@ -51,7 +66,7 @@ class RawlogWriter
 
 	std::string path_, tmp_path_, images_, tmp_images_, link_to_;
 	std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
-	bool has_images_{false}, committed_{false};
+	bool has_images_{false}, committed_{false}, replace_any_{false};
 	std::size_t count_{0};
 };
 

@@ -1,0 +1,57 @@
+#pragma once
+// The one rule for what a program may write over, for every program:
+//  - an output replaces only what the same program wrote before: a folder
+//    it made holds a marker file naming the program (kOutputMarker); a file
+//    must be of the output's own kind, told by its first bytes;
+//  - any other existing file, or a non-empty folder, is refused with one
+//    line naming it, unless the user says --force;
+//  - no output may be, contain or sit inside an input, through symlinks.
+// Paths are taken as a user types them: "out/" is the folder "out".
+
+#include <string>
+#include <vector>
+
+namespace omnirange
+{
+/** The file a folder made by one of our programs holds: the program's name. */
+inline constexpr const char* kOutputMarker = ".omnirange-output";
+
+enum class OutputKind
+{
+	Rawlog,  ///< a gzip file (MRPT's rawlogs as we write them)
+	Histogram,  ///< a colour model (ColourHistogram's "OMNIHIST" magic)
+	Ini,  ///< text whose first line that is not blank is a comment, a section or a key
+	Text,  ///< text (CSV, Markdown): no NUL byte
+	Image,  ///< PNG or JPEG
+	Folder  ///< a folder holding kOutputMarker
+};
+
+/** `path` as a user means it: no trailing '/', "." resolved; "" stays "". */
+std::string outputPath(const std::string& path);
+
+/** Throws std::runtime_error, before any work, naming `output` when the rule
+ * above forbids `program` to write it. With `force`, an existing file or
+ * folder of another kind may be replaced, but never an input. */
+void requireOutputAllowed(const std::string& output, OutputKind kind, const std::string& program,
+						  const std::vector<std::string>& inputs, bool force = false);
+
+/** Writes the marker into the folder `dir` (being made) naming `program`. */
+void markOutputFolder(const std::string& dir, const std::string& program);
+
+/** true when `dir` is a folder whose marker names `program`. */
+bool isOutputFolderOf(const std::string& dir, const std::string& program);
+
+/** Puts the finished folder `fresh` in the place of `target`: the old
+ * `target` (if any) goes aside as TARGET.old-PID, `fresh` is renamed in,
+ * then the old one is removed. If the rename fails, the old is put back and
+ * the error names both. All-or-nothing for a multi-file output. */
+void replaceFolder(const std::string& target, const std::string& fresh);
+
+/** What killed runs of the output `target` left beside it, as names with a
+ * process id (TARGET.staging-PID, TARGET.tmp-PID, TARGET.old-PID) whose
+ * process is gone: staging and temporary copies are removed; an old copy
+ * is put back when `target` is missing (the run died between the two
+ * renames), else removed. */
+void recoverLeftoversOf(const std::string& target);
+
+}  // namespace omnirange

@@ -1,0 +1,197 @@
+#include "omnirange/io/OutputRule.h"
+
+#include "omnirange/io/OptionsTable.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace omnirange
+{
+std::string outputPath(const std::string& path)
+{
+	if (path.empty()) return path;
+	std::string p = fs::path(path).lexically_normal().string();
+	while (p.size() > 1 && p.back() == '/') p.pop_back();
+	return p;
+}
+
+namespace
+{
+std::string firstBytes(const std::string& path, std::size_t n)
+{
+	std::ifstream f(path, std::ios::binary);
+	std::string b(n, '\0');
+	f.read(b.data(), static_cast<std::streamsize>(n));
+	b.resize(static_cast<std::size_t>(f.gcount()));
+	return b;
+}
+
+bool isText(const std::string& bytes) { return bytes.find('\0') == std::string::npos; }
+
+bool isIni(const std::string& path)
+{
+	const std::string head = firstBytes(path, 4096);
+	if (!isText(head)) return false;
+	std::ifstream f(path);
+	for (std::string line; std::getline(f, line);)
+	{
+		const std::string t = trimmed(line);
+		if (t.empty()) continue;
+		return t[0] == ';' || t[0] == '#' || t[0] == '[' || parseIniLine(t).kind == IniLine::Kind::Key;
+	}
+	return true;  // blank: nothing to lose
+}
+
+bool ofKind(const std::string& path, OutputKind kind)
+{
+	const std::string head = firstBytes(path, 8);
+	switch (kind)
+	{
+		case OutputKind::Rawlog: return head.size() >= 2 && head[0] == '\x1f' && head[1] == '\x8b';
+		case OutputKind::Histogram: return head == "OMNIHIST";
+		case OutputKind::Ini: return isIni(path);
+		case OutputKind::Text: return isText(firstBytes(path, 4096));
+		case OutputKind::Image: return head.rfind("\x89PNG", 0) == 0 || head.rfind("\xff\xd8\xff", 0) == 0;
+		case OutputKind::Folder: return false;
+	}
+	return false;
+}
+
+const char* kindName(OutputKind kind)
+{
+	switch (kind)
+	{
+		case OutputKind::Rawlog: return "a rawlog";
+		case OutputKind::Histogram: return "a colour model";
+		case OutputKind::Ini: return "an ini file";
+		case OutputKind::Text: return "a text file";
+		case OutputKind::Image: return "an image";
+		case OutputKind::Folder: return "a folder";
+	}
+	return "";
+}
+
+/** `inner` is `outer` or lies somewhere below it. */
+bool within(const fs::path& inner, const fs::path& outer)
+{
+	auto i = inner.begin(), o = outer.begin();
+	for (; o != outer.end(); ++i, ++o)
+		if (i == inner.end() || *i != *o) return false;
+	return true;
+}
+
+void requireApartFromInputs(const std::string& output, OutputKind kind, const std::vector<std::string>& inputs)
+{
+	std::error_code ec;
+	// A linked folder is replaced as a link (nothing it points to is lost); a
+	// linked file is written through, so the file it names is the output.
+	const fs::path abs = fs::absolute(output);
+	const bool link_itself = kind == OutputKind::Folder && fs::is_symlink(abs, ec);
+	const fs::path out = link_itself ? fs::weakly_canonical(abs.parent_path(), ec) / abs.filename()
+									 : fs::weakly_canonical(abs, ec);
+	for (const auto& in : inputs)
+	{
+		if (in.empty()) continue;
+		const fs::path input = fs::weakly_canonical(fs::absolute(outputPath(in)), ec);
+		if (out == input) throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
+		// Also as written: a folder that reaches an input through a link holds it too.
+		const bool holds_as_written = within(fs::absolute(outputPath(in)).lexically_normal(), abs.lexically_normal());
+		if (within(input, out) || holds_as_written)
+			throw std::runtime_error("the output '" + output + "' holds the input '" + in + "': refusing to replace it");
+		if (within(out, input))
+			throw std::runtime_error("the output '" + output + "' is inside the input '" + in + "': write it elsewhere");
+	}
+}
+}  // namespace
+
+void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, const std::string& program,
+						  const std::vector<std::string>& inputs, bool force)
+{
+	const std::string output = outputPath(output_as_given);
+	if (output.empty()) return;
+	requireApartFromInputs(output, kind, inputs);
+	const fs::path p(output);
+	std::error_code ec;
+	if (kind == OutputKind::Folder && fs::is_symlink(p, ec)) return;  // a link is replaced, not what it names
+	const auto status = fs::status(p, ec);  // through symlinks
+	if (!fs::exists(status)) return;
+	const std::string hint = force ? "" : " (give another output, or --force to replace it)";
+	if (kind == OutputKind::Folder)
+	{
+		if (!fs::is_directory(status))
+			throw std::runtime_error("the output folder '" + output + "' is a file" + (force ? "" : " (give another output)"));
+		if (force || fs::is_empty(p, ec) || isOutputFolderOf(output, program)) return;
+		throw std::runtime_error("'" + output + "' is a folder " + program + " did not write (no " + kOutputMarker +
+								 " naming it)" + hint);
+	}
+	if (!fs::is_regular_file(status))
+		throw std::runtime_error("the output '" + output + "' exists and is not a file");
+	if (force || ofKind(output, kind)) return;
+	throw std::runtime_error("'" + output + "' exists and is not " + kindName(kind) + hint);
+}
+
+void replaceFolder(const std::string& target, const std::string& fresh)
+{
+	const std::string old = target + ".old-" + std::to_string(::getpid());
+	std::error_code ec;
+	const bool had_old = fs::exists(fs::symlink_status(target, ec));
+	if (had_old) fs::rename(target, old);
+	try
+	{
+		fs::rename(fresh, target);
+	}
+	catch (const std::exception& e)
+	{
+		if (had_old) fs::rename(old, target, ec);
+		throw std::runtime_error("cannot move '" + fresh + "' to '" + target + "' (" + e.what() + "); '" + target +
+								 "' is as it was");
+	}
+	if (had_old) fs::remove_all(old, ec);
+}
+
+void recoverLeftoversOf(const std::string& target)
+{
+	const fs::path t(target);
+	const fs::path dir = t.parent_path().empty() ? fs::path(".") : t.parent_path();
+	std::error_code ec;
+	if (!fs::is_directory(dir, ec)) return;
+	const std::string name = t.filename().string();
+	for (const auto& e : fs::directory_iterator(dir, ec))
+	{
+		const std::string other = e.path().filename().string();
+		for (const std::string kind : {".staging-", ".tmp-", ".old-"})
+		{
+			if (other.rfind(name + kind, 0) != 0) continue;
+			const std::string pid = other.substr(name.size() + kind.size());
+			if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+			const long id = std::stol(pid);
+			if (id == ::getpid() || ::kill(static_cast<pid_t>(id), 0) == 0 || errno != ESRCH) continue;  // alive
+			if (kind == ".staging-" && !fs::exists(e.path() / kOutputMarker, ec)) continue;  // not ours
+			if (kind == ".old-" && !fs::exists(fs::symlink_status(t, ec))) fs::rename(e.path(), t, ec);
+			else fs::remove_all(e.path(), ec);
+		}
+	}
+}
+
+void markOutputFolder(const std::string& dir, const std::string& program)
+{
+	std::ofstream f(fs::path(dir) / kOutputMarker);
+	f << program << "\n";
+	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
+}
+
+bool isOutputFolderOf(const std::string& dir, const std::string& program)
+{
+	std::ifstream f(fs::path(dir) / kOutputMarker);
+	std::string name;
+	return f && std::getline(f, name) && trimmed(name) == program;
+}
+
+}  // namespace omnirange

@@ -1,0 +1,183 @@
+// The one output rule: an output replaces only what the same program wrote
+// before, never an input or a folder or file of anyone else's (unless
+// --force, and then never an input); a multi-file output commits all or
+// nothing, and what a killed run left is cleared by the next.
+#include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/OutputRule.h>
+#include <omnirange/io/RawlogWriter.h>
+
+#include <mrpt/obs/CObservationOdometry.h>
+#include <opencv2/core.hpp>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace omnirange;
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string fresh(const std::string& name)
+{
+	const fs::path d = fs::temp_directory_path() / "omnirange_output_rule" / name;
+	fs::remove_all(d);
+	fs::create_directories(d);
+	return d.string();
+}
+
+void write(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+std::string read(const std::string& path)
+{
+	std::ifstream f(path, std::ios::binary);
+	return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+/** The error requireOutputAllowed() throws, or "" when it allows the output. */
+std::string refusal(const std::string& out, OutputKind kind, const std::vector<std::string>& inputs = {}, bool force = false)
+{
+	try
+	{
+		requireOutputAllowed(out, kind, "omnirange-test", inputs, force);
+		return "";
+	}
+	catch (const std::runtime_error& e)
+	{
+		return e.what();
+	}
+}
+}  // namespace
+
+TEST(OutputRule, AFolderIsReplacedOnlyWhenEmptyOrMarkedByTheSameProgram)
+{
+	const std::string d = fresh("folders");
+	EXPECT_EQ(refusal(d + "/absent", OutputKind::Folder), "");
+	fs::create_directory(d + "/empty");
+	EXPECT_EQ(refusal(d + "/empty", OutputKind::Folder), "");
+	fs::create_directory(d + "/users");
+	write(d + "/users/notes.txt", "mine");
+	EXPECT_NE(refusal(d + "/users", OutputKind::Folder).find("did not write"), std::string::npos);
+	EXPECT_NE(refusal(d + "/users/", OutputKind::Folder).find("did not write"), std::string::npos);  // as tab completion writes it
+	EXPECT_EQ(refusal(d + "/users", OutputKind::Folder, {}, true), "");  // --force
+	fs::create_directory(d + "/ours");
+	markOutputFolder(d + "/ours", "omnirange-test");
+	write(d + "/ours/report.md", "old");
+	EXPECT_EQ(refusal(d + "/ours", OutputKind::Folder), "");
+	fs::create_directory(d + "/other");
+	markOutputFolder(d + "/other", "omnirange-other");
+	write(d + "/other/x", "x");
+	EXPECT_NE(refusal(d + "/other", OutputKind::Folder), "");  // another program's
+	write(d + "/a-file", "text");
+	EXPECT_NE(refusal(d + "/a-file", OutputKind::Folder).find("is a file"), std::string::npos);
+	EXPECT_NE(refusal(d + "/a-file", OutputKind::Folder, {}, true).find("is a file"), std::string::npos);
+}
+
+TEST(OutputRule, AFileIsReplacedOnlyByAnOutputOfItsKind)
+{
+	const std::string d = fresh("files");
+	write(d + "/notes.txt", "my notes\n");
+	write(d + "/old.rawlog", std::string("\x1f\x8b\x08\x00", 4));
+	write(d + "/floor.hist", "OMNIHIST....");
+	write(d + "/my.ini", "; mine\n[rangefinder]\nN = 3\n");
+	EXPECT_EQ(refusal(d + "/old.rawlog", OutputKind::Rawlog), "");
+	EXPECT_NE(refusal(d + "/notes.txt", OutputKind::Rawlog).find("is not a rawlog"), std::string::npos);
+	EXPECT_NE(refusal(d + "/floor.hist", OutputKind::Ini).find("is not an ini file"), std::string::npos);
+	EXPECT_NE(refusal(d + "/old.rawlog", OutputKind::Ini), "");
+	EXPECT_EQ(refusal(d + "/my.ini", OutputKind::Ini), "");
+	EXPECT_EQ(refusal(d + "/floor.hist", OutputKind::Histogram), "");
+	EXPECT_NE(refusal(d + "/my.ini", OutputKind::Histogram), "");
+	EXPECT_EQ(refusal(d + "/notes.txt", OutputKind::Rawlog, {}, true), "");  // --force
+}
+
+TEST(OutputRule, NoOutputIsHoldsOrSitsInAnInputEvenWithForce)
+{
+	const std::string d = fresh("inputs");
+	fs::create_directories(d + "/data/images");
+	write(d + "/data/images/1.jpg", "jpg");
+	write(d + "/data/log.csv", "1,2");
+	fs::create_directory_symlink(d + "/data", d + "/link");
+	for (const bool force : {false, true})
+	{
+		EXPECT_NE(refusal(d + "/data/log.csv", OutputKind::Text, {d + "/data/log.csv"}, force).find("is the input"),
+				  std::string::npos);
+		EXPECT_NE(refusal(d + "/data", OutputKind::Folder, {d + "/data/images/1.jpg"}, force).find("holds the input"),
+				  std::string::npos);
+		EXPECT_NE(refusal(d + "/data/images/out.rawlog", OutputKind::Rawlog, {d + "/data/images"}, force)
+					  .find("is inside the input"),
+				  std::string::npos);
+		// Through a link to the input's folder.
+		EXPECT_NE(refusal(d + "/link/log.csv", OutputKind::Text, {d + "/data/log.csv"}, force), "");
+	}
+	EXPECT_EQ(refusal(d + "/elsewhere.rawlog", OutputKind::Rawlog, {d + "/data/log.csv", d + "/data/images"}), "");
+}
+
+TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
+{
+	const std::string d = fresh("replace");
+	fs::create_directory(d + "/report");
+	write(d + "/report/old.md", "old");
+	fs::create_directory(d + "/report.staging-1");
+	write(d + "/report.staging-1/new.md", "new");
+	replaceFolder(d + "/report", d + "/report.staging-1");
+	EXPECT_EQ(read(d + "/report/new.md"), "new");
+	EXPECT_FALSE(fs::exists(d + "/report/old.md"));
+	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1);  // nothing aside is left
+	// A rename that fails (nothing to move) leaves the old folder where it was.
+	EXPECT_THROW(replaceFolder(d + "/report", d + "/nothing"), std::runtime_error);
+	EXPECT_EQ(read(d + "/report/new.md"), "new");
+
+	// A run killed between its two renames: the old copy aside, no output. Process 999999 is not running.
+	fs::rename(d + "/report", d + "/report.old-999999");
+	fs::create_directory(d + "/report.staging-999998");
+	markOutputFolder(d + "/report.staging-999998", "omnirange-test");
+	write(d + "/report.tmp-999997", "half");
+	fs::create_directory(d + "/report.staging-999996");  // no marker: not ours, kept
+	recoverLeftoversOf(d + "/report");
+	EXPECT_EQ(read(d + "/report/new.md"), "new");  // put back
+	EXPECT_FALSE(fs::exists(d + "/report.old-999999"));
+	EXPECT_FALSE(fs::exists(d + "/report.staging-999998"));
+	EXPECT_FALSE(fs::exists(d + "/report.tmp-999997"));
+	EXPECT_TRUE(fs::exists(d + "/report.staging-999996"));
+}
+
+TEST(OutputRule, AFileIsWrittenThroughItsLinkKeepsItsModeAndAReadOnlyOneIsKept)
+{
+	const std::string d = fresh("links");
+	write(d + "/real.ini", "old");
+	fs::permissions(d + "/real.ini", fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+	fs::create_symlink(d + "/real.ini", d + "/link.ini");
+	writeFileAtomically(d + "/link.ini", "new");
+	EXPECT_TRUE(fs::is_symlink(d + "/link.ini"));
+	EXPECT_EQ(read(d + "/real.ini"), "new");
+	EXPECT_EQ(fs::status(d + "/real.ini").permissions(),
+			  fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+	write(d + "/locked.ini", "keep");
+	fs::permissions(d + "/locked.ini", fs::perms::owner_read);
+	EXPECT_THROW(writeFileAtomically(d + "/locked.ini", "lost"), std::runtime_error);
+	EXPECT_EQ(read(d + "/locked.ini"), "keep");
+}
+
+TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
+{
+	const std::string d = fresh("writer");
+	const auto writeOne = [&](bool force) {
+		RawlogWriter w(d + "/log.rawlog");
+		if (force) w.replaceAnyImagesFolder();
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 2, 3)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit();
+	};
+	fs::create_directory(d + "/log_Images");
+	write(d + "/log_Images/photo.jpg", "the user's");
+	EXPECT_THROW(writeOne(false), std::runtime_error);
+	EXPECT_EQ(read(d + "/log_Images/photo.jpg"), "the user's");
+	EXPECT_FALSE(fs::exists(d + "/log.rawlog"));
+	writeOne(true);  // --force
+	EXPECT_TRUE(fs::exists(d + "/log_Images/0.png"));
+	EXPECT_TRUE(isOutputFolderOf(d + "/log_Images", kRawlogImagesOwner));
+	writeOne(false);  // now ours: replaced again without asking
+	EXPECT_TRUE(fs::exists(d + "/log.rawlog"));
+	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 2);  // no .old or .tmp left
+}
