@@ -7,6 +7,7 @@
 
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/SensorLabels.h>
+#include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -48,9 +49,10 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	// 1. Inputs: robot, world, route; all checked before anything is written,
 	//    and none of them is an output.
 	const std::string base = stemOf(o.output);
-	requireOutputsAreNotInputs({o.output, base + "_truemap.png", base + "_truemap.gridmap.gz"},
-							   {o.world_file, o.route_file, o.robot_ini});
-	requireRawlogOutputAllowed(o.output, {o.world_file, o.route_file, o.robot_ini}, o.force);
+	const std::vector<std::string> inputs{o.world_file, o.route_file, o.robot_ini};
+	requireRawlogOutputAllowed(o.output, inputs, o.force);
+	requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::Rawlog}},
+						  "omnirange-sim", inputs, o.force);
 	RobotParams robot;
 	if (!o.robot_ini.empty()) robot = RobotParams::loadFile(o.robot_ini);
 	if (!o.image_format.empty())

@@ -5,6 +5,7 @@
 #include <omnirange_eval/Figures.h>
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/OutputRule.h>
 
 namespace omnirange::app
 {
@@ -38,9 +39,11 @@ AccuracyApp::AccuracyApp(Options o) : mrpt::system::COutputLogger("omnirange-acc
 eval::AccuracyResult AccuracyApp::run()
 {
 	const auto& a = o_.accuracy;
-	requireOutputsAreNotInputs({o_.output + "_pairs.csv", o_.output + "_histogram.png", o_.output + "_table.md",
-								o_.output + "_truth.md"},
-							   {o_.input});
+	requireOutputsAllowed({{o_.output + "_pairs.csv", OutputKind::Text},
+						   {o_.output + "_histogram.png", OutputKind::Image},
+						   {o_.output + "_table.md", OutputKind::Text},
+						   {o_.output + "_truth.md", OutputKind::Text}},
+						  "omnirange-accuracy", {o_.input});
 	const eval::AccuracyResult r = eval::evaluateAccuracy(o_.input, a);
 	const std::string table = r.table(a.max_difference);
 	writeFileAtomically(o_.output + "_pairs.csv", r.csv);

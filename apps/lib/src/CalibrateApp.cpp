@@ -145,7 +145,7 @@ MirrorCalibration CalibrateApp::run()
 
 CheckerboardCalibration CalibrateApp::runIntrinsics()
 {
-	if (!o_.intrinsics_output.empty()) requireOutputsAreNotInputs({o_.intrinsics_output}, o_.checkerboards);
+	requireOutputAllowed(o_.intrinsics_output, OutputKind::Text, "omnirange-calibrate", o_.checkerboards);
 	const CheckerboardCalibration c = calibrateFromCheckerboards(o_.checkerboards, o_.board);
 	for (const auto& i : c.images)
 		std::printf("%s: %s%s\n", i.file.c_str(), i.found ? ("board found (" + i.detector + ")").c_str() : "no board",

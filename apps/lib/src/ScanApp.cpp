@@ -2,6 +2,8 @@
 
 #include "omnirange_apps/CommandLine.h"
 
+#include <omnirange/io/RawlogWriter.h>
+
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/Progress.h>
 
@@ -52,7 +54,7 @@ ScanApp::ScanApp(Options o) : mrpt::system::COutputLogger("omnirange-scan"), o_(
 RawlogScanSummary ScanApp::run()
 {
 	// The rawlog input scanRawlog checks itself; these are the app's own inputs.
-	requireOutputsAreNotInputs({o_.scan.output}, {o_.ini, o_.histogram});
+	requireRawlogOutputAllowed(o_.scan.output, {o_.ini, o_.histogram}, o_.scan.force);
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	const Rangefinder rf(params, ColourModel::load(o_.histogram));
 	if (rf.compensationMissing())

@@ -5,9 +5,12 @@
 #include <omnirange_eval/GridMaps.h>
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/OutputRule.h>
+#include <omnirange/io/Temporaries.h>
 
 #include <cmath>
 #include <cstdio>
+#include <unistd.h>
 #include <filesystem>
 
 namespace omnirange::app
@@ -40,11 +43,18 @@ SlamApp::SlamApp(Options o) : mrpt::system::COutputLogger("omnirange-slam"), o_(
 
 eval::GuardedIcpResult SlamApp::run()
 {
-	const std::string map = o_.output + "/_finalmap_.simplemap", path = o_.output + "/log_estimated_path.txt";
-	requireOutputsAreNotInputs({map, path}, {o_.input, o_.ini});
+	// icp-slam's kind of outputs, in a folder of this program's that is swapped in whole.
+	const std::string folder = outputPath(o_.output);
+	recoverLeftoversOf(folder);
+	requireOutputAllowed(folder, OutputKind::Folder, "omnirange-slam", {o_.input, o_.ini});
+	const std::string staging = folder + ".staging-" + std::to_string(::getpid());
+	const std::string map = staging + "/_finalmap_.simplemap", path = staging + "/log_estimated_path.txt";
 	const auto options = eval::GuardedIcpOptions::fromIniFile(o_.ini);
 	const eval::GuardedIcpResult r = eval::runGuardedIcp(o_.input, o_.scan_label, o_.odometry_label, options);
-	std::filesystem::create_directories(o_.output);
+	std::filesystem::remove_all(staging);
+	std::filesystem::create_directories(staging);
+	temporaries::add(staging);
+	markOutputFolder(staging, "omnirange-slam");
 	eval::saveSimplemap(r.keyframes, map);
 	std::string text = "% time [s], x [m], y [m], phi [rad]: the estimated pose at every scan\n";
 	char line[128];
@@ -54,6 +64,8 @@ eval::GuardedIcpResult SlamApp::run()
 		text += line;
 	}
 	writeFileAtomically(path, text);
+	replaceFolder(folder, staging);
+	temporaries::forget(staging);
 	MRPT_LOG_INFO_STREAM(r.path.size() << " scans, " << r.keyframes.size() << " keyframes; " << r.matches
 									   << " matches accepted, " << r.refused_jumps << " refused as jumps, "
 									   << r.poor_matches << " too poor; " << r.weak_directions

@@ -5,6 +5,7 @@
 #include <omnirange_eval/Summary.h>
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/OutputRule.h>
 
 #include <algorithm>
 #include <fstream>
@@ -75,6 +76,8 @@ void SummaryApp::run()
 									 }),
 					  entries.end());
 	if (entries.empty()) throw std::runtime_error(o_.suite + ": no experiment of the groups asked for");
+	requireOutputsAllowed({{o_.output + ".csv", OutputKind::Text}, {o_.output + ".md", OutputKind::Text}},
+						  "omnirange-summary", {o_.suite, o_.csv});
 	const eval::Summary s = o_.csv.empty() ? eval::collectMetrics(entries, o_.results) : eval::readCsv(o_.csv);
 	std::string page = "# omnirange: the experiments' figures\n\nMade by omnirange-summary from each report's metrics.ini.\n";
 	for (const auto& name : eval::tableNames()) page += "\n## " + name + "\n\n" + eval::markdownTable(name, s);

@@ -3,6 +3,8 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/OutputRule.h>
+#include <omnirange/io/RawlogWriter.h>
 #include <omnirange/io/Progress.h>
 
 #include <cmath>
@@ -72,9 +74,11 @@ RawlogTrainingResult TrainApp::run()
 {
 	const auto& t = o_.training;
 	const std::string fig = t.figures_prefix;
-	requireOutputsAreNotInputs({o_.output, o_.learn_ini, o_.learn_candidates, fig.empty() ? "" : fig + "_birdseye.png",
-								fig.empty() ? "" : fig + "_laser.png", fig.empty() ? "" : fig + "_fused.png"},
-							   {t.input, o_.ini});
+	const auto figure = [&](const std::string& name) { return Output{fig.empty() ? "" : fig + name, OutputKind::Image}; };
+	requireOutputsAllowed({{o_.output, OutputKind::Histogram}, {o_.learn_ini, OutputKind::Ini},
+						   {o_.learn_candidates, OutputKind::Text}, figure("_birdseye.png"), figure("_laser.png"),
+						   figure("_fused.png")},
+						  "omnirange-train", {t.input, imagesDirFor(t.input), o_.ini});
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	Progress progress("objects read");
 	if (!o_.learn_ini.empty()) return learn(params);

@@ -54,20 +54,6 @@ void writeAtomically(
 	}
 }
 
-void requireOutputsAreNotInputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs)
-{
-	namespace fs = std::filesystem;
-	for (const auto& out : outputs)
-		for (const auto& in : inputs)
-		{
-			if (out.empty() || in.empty()) continue;
-			std::error_code ec;
-			const bool same = (fs::exists(out) && fs::exists(in) && fs::equivalent(out, in, ec)) ||
-				fs::weakly_canonical(out, ec) == fs::weakly_canonical(in, ec);
-			if (same) throw std::runtime_error("the output '" + out + "' is the input '" + in + "': refusing to overwrite it");
-		}
-}
-
 void syncToDisk(const std::string& path, const std::string& what)
 {
 	const int fd = ::open(path.c_str(), O_RDONLY);

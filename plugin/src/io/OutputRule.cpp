@@ -137,6 +137,12 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	throw std::runtime_error("'" + output + "' exists and is not " + kindName(kind) + hint);
 }
 
+void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
+						   const std::vector<std::string>& inputs, bool force)
+{
+	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force);
+}
+
 void replaceFolder(const std::string& target, const std::string& fresh)
 {
 	const std::string old = target + ".old-" + std::to_string(::getpid());

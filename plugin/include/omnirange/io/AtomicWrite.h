@@ -19,11 +19,6 @@ namespace omnirange
 void writeAtomically(
 	const std::string& path, const std::function<void(const std::string&)>& write);
 
-/** Throws std::runtime_error, before any work, if an output is one of the
- * inputs (the same file, also through links or another spelling): an input
- * is never overwritten. Empty paths are ignored. */
-void requireOutputsAreNotInputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
-
 /** fsync()s the file `path`; throws std::runtime_error naming `what` if it fails. */
 void syncToDisk(const std::string& path, const std::string& what);
 

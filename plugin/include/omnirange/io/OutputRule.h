@@ -35,6 +35,15 @@ std::string outputPath(const std::string& path);
 void requireOutputAllowed(const std::string& output, OutputKind kind, const std::string& program,
 						  const std::vector<std::string>& inputs, bool force = false);
 
+struct Output
+{
+	std::string path;
+	OutputKind kind;
+};
+/** requireOutputAllowed() for each of a program's outputs ("" paths skipped). */
+void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
+						   const std::vector<std::string>& inputs, bool force = false);
+
 /** Writes the marker into the folder `dir` (being made) naming `program`. */
 void markOutputFolder(const std::string& dir, const std::string& program);
 
