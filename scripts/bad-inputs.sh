@@ -202,6 +202,18 @@ run_case "scan: an output whose NAME_Images is the input's" error none.out -- "$
 run_case "scan: an output onto a text file of the user's" error none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o users_file.txt
 run_case "calibrate: --save-to the colour model it reads" error none.out -- "$apps/omnirange-calibrate" -q -i s.rawlog -c f.ini -H floor.hist --save-to floor.hist
 run_case "import: an output inside its images folder" error none.out -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv -o imp/out.rawlog
+
+# Readers: no FIFO, no time that is not decimal seconds, no image too large to decode.
+mkfifo odometry.fifo
+run_case "import: the odometry is a FIFO" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry odometry.fifo -o imp.rawlog
+mkfifo world.fifo
+run_case "sim: the world file is a FIFO" error sim.rawlog -- "$apps/omnirange-sim" -q -w world.fifo -r w.route -o sim.rawlog
+printf '100.0, 1, 2, 3\n1e300, 1, 2, 3\n' > imp_far.csv
+run_case "import: a laser time of 1e300" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_far.csv -o imp.rawlog
+mkdir -p imp_hex && cp imp/100.0.jpg imp_hex/0x10.jpg
+run_case "import: an image named 0x10.jpg" error imp.rawlog -- "$apps/omnirange-import" -q --images imp_hex --laser imp_laser.csv -o imp.rawlog
+printf '\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\x4e\x20\0\0\x4e\x20\x08\x02\0\0\0\0\0\0\0\0\0\0\0IEND\xae\x42\x60\x82' > huge.png
+run_case "calibrate: a checkerboard image of 20000 x 20000 px" error none.out -- "$apps/omnirange-calibrate" -q --checkerboard huge.png --board 8x6
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
 

@@ -1,5 +1,7 @@
 #include "omnirange_sim/Route.h"
 
+#include <omnirange/io/OptionsTable.h>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -14,6 +16,7 @@ double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
 Route loadRoute(const std::string& path)
 {
+	requireRegularFile(path, "route file");
 	std::ifstream f(path);
 	if (!f) throw std::runtime_error(path + ": cannot open route file");
 	Route r;

@@ -1,5 +1,6 @@
 // The world file reader. Syntax: docs/worlds.md. Every error names the file
 // and the line.
+#include <omnirange/io/OptionsTable.h>
 #include "WorldFields.h"
 
 #include "omnirange_sim/World.h"
@@ -34,6 +35,7 @@ class Parser
 
 	World run()
 	{
+		requireRegularFile(path_, "world file");
 		std::ifstream f(path_);
 		if (!f) throw std::runtime_error(path_ + ": cannot open world file");
 		w_.materials = stockMaterials();

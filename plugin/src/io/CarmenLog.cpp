@@ -39,6 +39,19 @@ class Fields
 			throw std::invalid_argument(f_.front() + ": " + name + " '" + f + "': " + e.what());
 		}
 	}
+	/** [s] A timestamp: decimal seconds within MRPT's clock (parseTime()). */
+	double time(const std::string& name)
+	{
+		const std::string& f = take(name);
+		try
+		{
+			return parseTime(f);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw std::invalid_argument(f_.front() + ": " + name + " '" + f + "': " + e.what());
+		}
+	}
 	/** A count of fields that must follow it. */
 	int count(const std::string& name)
 	{
@@ -102,7 +115,7 @@ CarmenLog readCarmenLog(const std::string& path)
 			f.skip(3, "the laser's pose");
 			OdometryRow pose;
 			pose.x = f.number("odom_x"), pose.y = f.number("odom_y"), pose.phi = f.number("odom_theta");
-			row.time = pose.time = f.number("ipc_timestamp");
+			row.time = pose.time = f.time("ipc_timestamp");
 			addScan(kind, log.start_angle, log.fov, 0, std::move(row));
 			laser_poses.push_back(pose);
 		}
@@ -129,7 +142,7 @@ CarmenLog readCarmenLog(const std::string& path)
 				f.skip(5, "tv, rv and the safety fields");
 			}
 			f.need(3, "expected ipc_timestamp, ipc_hostname, logger_timestamp");
-			row.time = pose.time = f.number("ipc_timestamp");
+			row.time = pose.time = f.time("ipc_timestamp");
 			if (!(fov > 0 && fov <= 2 * M_PI)) throw std::invalid_argument(kind + ": field_of_view must be within (0, 2 pi]");
 			if (!(max_range > 0)) throw std::invalid_argument(kind + ": maximum_range must be > 0");
 			addScan(kind, start, fov, max_range, std::move(row));
@@ -141,7 +154,7 @@ CarmenLog readCarmenLog(const std::string& path)
 			OdometryRow pose;
 			pose.x = f.number("x"), pose.y = f.number("y"), pose.phi = f.number("theta");
 			f.skip(3, "tv, rv and accel");
-			pose.time = f.number("ipc_timestamp");
+			pose.time = f.time("ipc_timestamp");
 			if (!log.odometry.empty()) requireTimeAfter(log.odometry.back().time, pose.time, "ODOM time");
 			log.odometry.push_back(pose);
 		}

@@ -14,6 +14,7 @@ namespace omnirange
 {
 std::string iniBaseOf(const std::string& path)
 {
+	requireRegularFile(path, "ini file");
 	std::ifstream f(path);
 	if (!f) throw std::runtime_error("cannot open ini file '" + path + "'");
 	for (std::string line; std::getline(f, line);)

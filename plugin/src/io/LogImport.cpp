@@ -40,6 +40,18 @@ void forEachCsvRow(const std::string& path, const std::string& what,
 	if (rows == 0) throw std::runtime_error("the " + what + " '" + path + "' has no rows");
 }
 
+double logTime(const std::string& field)
+{
+	try
+	{
+		return parseTime(field);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument("time '" + field + "': " + e.what());
+	}
+}
+
 double number(const std::string& field, const std::string& name)
 {
 	try
@@ -77,7 +89,7 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 		double previous = -INFINITY;
 		forEachCsvRow(list_csv, "image list", [&](const std::vector<std::string>& f) {
 			if (f.size() != 2) throw std::invalid_argument("expected TIME, FILE");
-			const double t = number(f[0], "time");
+			const double t = logTime(f[0]);
 			requireTimeAfter(previous, t);
 			previous = t;
 			const fs::path file = base / f[1];
@@ -93,13 +105,13 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 		const std::string stem = entry.path().stem().string();
 		try
 		{
-			images.push_back({parseDouble(stem), entry.path().string()});
+			images.push_back({parseTime(stem), entry.path().string()});
 		}
 		catch (const std::invalid_argument&)
 		{
 			throw std::runtime_error("'" + entry.path().string() +
-									 "': the file name is not a time in seconds (name images TIME.jpg, or give an "
-									 "image list)");
+									 "': the file name is not a time in decimal seconds below 1e11 (name images TIME.jpg, or "
+									 "give an image list)");
 		}
 	}
 	if (images.empty()) throw std::runtime_error("no image (jpg, png, pgm, ppm, bmp) in '" + dir + "'");
@@ -117,7 +129,7 @@ std::vector<LaserRow> readLaserCsv(const std::string& path)
 	forEachCsvRow(path, "laser log", [&](const std::vector<std::string>& f) {
 		if (f.size() < 3) throw std::invalid_argument("expected TIME, then two or more ranges");
 		LaserRow row;
-		row.time = number(f[0], "time");
+		row.time = logTime(f[0]);
 		requireTimeAfter(previous, row.time);
 		previous = row.time;
 		for (std::size_t i = 1; i < f.size(); ++i) row.ranges.push_back(number(f[i], "range " + std::to_string(i - 1)));
@@ -136,7 +148,7 @@ std::vector<OdometryRow> readOdometryCsv(const std::string& path)
 	forEachCsvRow(path, "odometry log", [&](const std::vector<std::string>& f) {
 		if (f.size() != 4) throw std::invalid_argument("expected TIME, x, y, phi");
 		OdometryRow row;
-		row.time = number(f[0], "time");
+		row.time = logTime(f[0]);
 		requireTimeAfter(previous, row.time);
 		previous = row.time;
 		row.x = number(f[1], "x"), row.y = number(f[2], "y"), row.phi = number(f[3], "phi");

@@ -13,32 +13,70 @@ namespace omnirange
 {
 namespace
 {
-/** Why the bytes of an image file are not a whole JPEG or PNG, or "". A cut
- * file would otherwise decode with grey rows and only a libjpeg warning. */
-std::string incompleteImage(const std::vector<unsigned char>& bytes)
+using Bytes = std::string_view;
+
+unsigned be16(Bytes b, std::size_t at) { return (static_cast<unsigned char>(b[at]) << 8) | static_cast<unsigned char>(b[at + 1]); }
+unsigned long be32(Bytes b, std::size_t at) { return (static_cast<unsigned long>(be16(b, at)) << 16) | be16(b, at + 2); }
+
+/** A JPEG's size from its frame header, walking the markers; whether its
+ * entropy-coded data reaches the end-of-image marker. Bytes after that
+ * marker (a camera's trailer) are allowed. Returns why it is not whole, or "". */
+std::string jpegProblem(Bytes b, unsigned long& width, unsigned long& height)
 {
-	const std::string_view b(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-	const auto ends_with_within = [&](const std::string& marker, std::size_t tail) {
-		const std::size_t from = b.size() > tail ? b.size() - tail : 0;
-		return b.find(marker, from) != std::string::npos;
-	};
+	std::size_t at = 2;
+	while (at + 4 <= b.size())
+	{
+		if (static_cast<unsigned char>(b[at]) != 0xFF) return "not a JPEG: no marker at byte " + std::to_string(at);
+		const unsigned char m = static_cast<unsigned char>(b[at + 1]);
+		if (m == 0xFF) { ++at; continue; }  // fill byte
+		if (m == 0xD9) return "";  // end of image before any scan: nothing to decode, imdecode says so
+		const std::size_t length = be16(b, at + 2);
+		if (length < 2 || at + 2 + length > b.size()) return "truncated: a JPEG segment runs past the file's end";
+		const bool frame = m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC;
+		if (frame && length >= 7) height = be16(b, at + 5), width = be16(b, at + 7);
+		if (m == 0xDA)  // start of scan: in the coded data 0xFF is followed by 0 or a restart, so this is the end
+			return b.find("\xFF\xD9", at + 2 + length) == std::string::npos ? "truncated: no JPEG end-of-image marker" : "";
+		at += 2 + length;
+	}
+	return "truncated: no JPEG end-of-image marker";
+}
+
+/** Why the bytes of an image file cannot be decoded whole (cut, or too many
+ * pixels to decode), or "". A cut file would otherwise decode with grey rows
+ * and only a libjpeg warning; a huge one would take minutes and gigabytes. */
+std::string imageProblem(Bytes b)
+{
+	unsigned long width = 0, height = 0;
+	std::string why;
 	if (b.size() >= 2 && static_cast<unsigned char>(b[0]) == 0xFF && static_cast<unsigned char>(b[1]) == 0xD8)
-		return ends_with_within("\xFF\xD9", 64) ? "" : "truncated: no JPEG end-of-image marker";
-	if (b.size() >= 8 && b.substr(1, 3) == "PNG") return ends_with_within("IEND", 16) ? "" : "truncated: no PNG end chunk";
-	return "";
+		why = jpegProblem(b, width, height);
+	else if (b.size() >= 24 && b.substr(1, 3) == "PNG")
+	{
+		width = be32(b, 16), height = be32(b, 20);
+		const std::size_t from = b.size() > 16 ? b.size() - 16 : 0;
+		if (b.find("IEND", from) == std::string::npos) why = "truncated: no PNG end chunk";
+	}
+	if (why.empty() && width * height > kMaxImagePixels)
+		why = std::to_string(width) + "x" + std::to_string(height) + ": more than " +
+			  std::to_string(kMaxImagePixels / 1000000) + " megapixels";
+	return why;
 }
 }  // namespace
 
-cv::Mat decodeImageFile(const std::string& file, const std::string& label)
+cv::Mat decodeImageFile(const std::string& file, const std::string& label, int flags)
 {
+	const std::string what = "image '" + file + "'" + (label.empty() ? "" : " of " + label);
+	if (!std::filesystem::is_regular_file(file))  // a FIFO or a device would block or never end
+		throw std::runtime_error(what + (std::filesystem::exists(file) ? " is not a regular file" : " is missing"));
 	std::ifstream f(file, std::ios::binary | std::ios::ate);
 	std::vector<unsigned char> bytes(f ? static_cast<std::size_t>(f.tellg()) : 0);
 	f.seekg(0);
 	if (!f || !f.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
-		throw std::runtime_error("image '" + file + "' of " + label + " is unreadable");
-	if (const std::string why = incompleteImage(bytes); !why.empty())
-		throw std::runtime_error("image '" + file + "' of " + label + " is " + why);
-	return bytes.empty() ? cv::Mat() : cv::imdecode(bytes, cv::IMREAD_COLOR);
+		throw std::runtime_error(what + " is unreadable");
+	if (const std::string why = imageProblem(Bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+		!why.empty())
+		throw std::runtime_error(what + " is " + why);
+	return bytes.empty() ? cv::Mat() : cv::imdecode(bytes, flags);
 }
 
 cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)

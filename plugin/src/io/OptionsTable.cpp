@@ -7,6 +7,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -32,9 +33,30 @@ double parseDouble(const std::string& text)
 	return v;
 }
 
+double parseTime(const std::string& text)
+{
+	const std::string t = trimmed(text);
+	const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+	const std::size_t dot = t.find('.');
+	const bool decimal = !t.empty() && t != "." && std::all_of(t.begin(), t.end(), [&](char c) { return digit(c) || c == '.'; }) &&
+						 (dot == std::string::npos || t.find('.', dot + 1) == std::string::npos);
+	if (!decimal) throw std::invalid_argument("not a time in decimal seconds");
+	const double v = parseDouble(t);
+	if (!(v < kMaxTime)) throw std::invalid_argument("past MRPT's clock (" + formatDouble(kMaxTime) + " s)");
+	return v;
+}
+
+void requireRegularFile(const std::string& path, const std::string& what)
+{
+	std::error_code ec;
+	if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+		throw std::runtime_error("the " + what + " '" + path + "' is not a regular file");
+}
+
 int forEachDataLine(const std::string& path, const std::string& what,
 					const std::function<void(int, const std::string&)>& row)
 {
+	requireRegularFile(path, what);
 	std::ifstream in(path);
 	if (!in) throw std::runtime_error("cannot read the " + what + " '" + path + "'");
 	int rows = 0;
@@ -129,6 +151,7 @@ namespace
 void forEachIniLine(const std::string& path,
 					const std::function<void(const std::string&, const std::string&, int)>& visit)
 {
+	requireRegularFile(path, "ini file");
 	std::ifstream f(path);
 	if (!f) throw std::runtime_error("cannot open ini file '" + path + "'");
 	std::string section;

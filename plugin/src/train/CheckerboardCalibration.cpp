@@ -1,4 +1,5 @@
 #include "omnirange/train/CheckerboardCalibration.h"
+#include "omnirange/io/ObservationImage.h"
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/vision/chessboard_find_corners.h>
@@ -87,7 +88,7 @@ CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string
 	std::vector<std::size_t> which;  // index in out.images of each board
 	for (const auto& file : files)
 	{
-		const cv::Mat gray = cv::imread(file, cv::IMREAD_GRAYSCALE);
+		const cv::Mat gray = decodeImageFile(file, "", cv::IMREAD_GRAYSCALE);
 		if (gray.empty()) throw std::runtime_error("cannot read image '" + file + "'");
 		if (out.image_size.empty()) out.image_size = gray.size();
 		if (gray.size() != out.image_size)

@@ -1,4 +1,5 @@
 #include "omnirange/train/MirrorRim.h"
+#include "omnirange/io/ObservationImage.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -13,7 +14,7 @@ MirrorRim detectMirrorRim(const std::vector<std::string>& images)
 	cv::Mat brightest;
 	for (const auto& file : images)
 	{
-		const cv::Mat gray = cv::imread(file, cv::IMREAD_GRAYSCALE);
+		const cv::Mat gray = decodeImageFile(file, "", cv::IMREAD_GRAYSCALE);
 		if (gray.empty()) throw std::runtime_error("cannot read image '" + file + "'");
 		if (brightest.empty()) brightest = gray.clone();
 		else if (gray.size() != brightest.size())

@@ -6,13 +6,21 @@
 
 #include <mrpt/obs/CObservationImage.h>
 #include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 namespace omnirange
 {
-/** An image file (of the sensor `label`) as 8-bit BGR; empty if it does not
- * decode. Throws std::runtime_error naming the file if it cannot be read or
- * is a cut JPEG or PNG (which would decode with grey rows and only a warning). */
-cv::Mat decodeImageFile(const std::string& file, const std::string& label);
+/** Images past this many pixels are refused from their header, before decoding. */
+inline constexpr unsigned long kMaxImagePixels = 100000000;
+
+/** An image file (of the sensor `label`; "" for none) as OpenCV's imdecode
+ * `flags` make it (8-bit BGR by default); empty if it does not decode.
+ * Throws std::runtime_error naming the file if it is not a regular file,
+ * cannot be read, is a cut JPEG or PNG (which would decode with grey rows
+ * and only a warning; a JPEG is judged by its markers, so a camera's
+ * trailer after the end marker is fine), or its header says it has more
+ * than kMaxImagePixels. */
+cv::Mat decodeImageFile(const std::string& file, const std::string& label, int flags = cv::IMREAD_COLOR);
 
 /** The observation's image as 8-bit BGR. Throws std::runtime_error naming
  * the file if an external image is missing or unreadable. Thread-safe. */

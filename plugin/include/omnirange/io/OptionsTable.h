@@ -39,12 +39,21 @@ double parseDouble(const std::string& text);  ///< finite; no unit suffix, no co
 int parseInt(const std::string& text);  ///< a whole number that fits an int
 std::uint32_t parseUint32(const std::string& text);  ///< a whole number in [0, 2^32)
 bool parseBool(const std::string& text);  ///< true/false, yes/no, 1/0
+/** [s] A time as logs write it: decimal seconds ("1700000000.25"), no sign,
+ * exponent or hex, within MRPT's clock (below kMaxTime). */
+double parseTime(const std::string& text);
+inline constexpr double kMaxTime = 1e11;
 /** Numbers separated by blanks, each as parseDouble() takes it; "" is none. */
 std::vector<double> parseDoubles(const std::string& text);
 std::string formatDouble(double v);
 std::string formatDoubles(const std::vector<double>& v);  ///< blank-separated
 /** `s` without leading and trailing blanks (spaces, tabs, CR, LF). */
 std::string trimmed(const std::string& s);
+
+/** Throws std::runtime_error("the WHAT 'PATH' is not a regular file") when
+ * `path` is a FIFO, a device or a folder, which a reader would block on or
+ * read without end. A missing file is left to the reader's own message. */
+void requireRegularFile(const std::string& path, const std::string& what);
 
 /** Calls `row(line_number, text)` for every line of the text file `path`
  * that is neither blank nor a '#' comment, trimmed. A std::invalid_argument

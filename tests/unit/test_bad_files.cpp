@@ -1,0 +1,103 @@
+// What readers refuse before they read: a FIFO or a device (it would block
+// or never end), an image whose header asks for too many pixels, a JPEG cut
+// short (judged by its markers, so a camera's trailer is fine), a time that
+// is not decimal seconds within MRPT's clock.
+#include <omnirange/core/ColourModel.h>
+#include <omnirange/io/ObservationImage.h>
+#include <omnirange/io/OptionsTable.h>
+#include <omnirange/core/Rangefinder.h>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace omnirange;
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string dir(const std::string& name)
+{
+	const fs::path d = fs::temp_directory_path() / "omnirange_bad_files" / name;
+	fs::remove_all(d);
+	fs::create_directories(d);
+	return d.string();
+}
+
+std::string errorOf(const std::function<void()>& f)
+{
+	try
+	{
+		f();
+	}
+	catch (const std::exception& e)
+	{
+		return e.what();
+	}
+	return "";
+}
+
+std::string jpeg()
+{
+	cv::Mat img(48, 64, CV_8UC3, cv::Scalar(40, 120, 200));
+	cv::circle(img, {32, 24}, 10, cv::Scalar(0, 0, 0), -1);
+	std::vector<uchar> buf;
+	cv::imencode(".jpg", img, buf);
+	return std::string(buf.begin(), buf.end());
+}
+}  // namespace
+
+TEST(BadFiles, AFifoIsRefusedByEveryReaderWithoutBlocking)
+{
+	const std::string d = dir("fifo");
+	const std::string fifo = d + "/pipe";
+	ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+	EXPECT_NE(errorOf([&] { forEachDataLine(fifo, "laser log", [](int, const std::string&) {}); }).find("not a regular file"),
+			  std::string::npos);
+	EXPECT_NE(errorOf([&] { RangefinderParams::loadFromFile(fifo, "rangefinder"); }), "");
+	EXPECT_NE(errorOf([&] { ColourModel::load(fifo); }), "");
+	EXPECT_NE(errorOf([&] { decodeImageFile(fifo, "OMNICAM"); }).find("not a regular file"), std::string::npos);
+	EXPECT_NE(errorOf([&] { requireNoRepeatedKeys(fifo); }).find("not a regular file"), std::string::npos);
+}
+
+TEST(BadFiles, AJpegIsJudgedByItsMarkersSoATrailerIsFineAndACutIsNot)
+{
+	const std::string d = dir("jpeg");
+	const std::string whole = jpeg();
+	std::ofstream(d + "/trailer.jpg", std::ios::binary) << whole << std::string("CAMERA-TRAILER\xff\x00 and more", 24);
+	const cv::Mat m = decodeImageFile(d + "/trailer.jpg", "OMNICAM");
+	EXPECT_EQ(m.cols, 64);
+	EXPECT_EQ(m.rows, 48);
+	std::ofstream(d + "/cut.jpg", std::ios::binary) << whole.substr(0, whole.size() * 2 / 3);
+	EXPECT_NE(errorOf([&] { decodeImageFile(d + "/cut.jpg", "OMNICAM"); }).find("truncated"), std::string::npos);
+	// A cut inside the headers, before the scan.
+	std::ofstream(d + "/head.jpg", std::ios::binary) << whole.substr(0, 30);
+	EXPECT_NE(errorOf([&] { decodeImageFile(d + "/head.jpg", "OMNICAM"); }), "");
+}
+
+TEST(BadFiles, AnImageWhoseHeaderAsksForTooManyPixelsIsRefusedBeforeDecoding)
+{
+	const std::string d = dir("huge");
+	// A PNG signature and an IHDR chunk saying 20000 x 20000, then IEND.
+	std::string png("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\x4e\x20\0\0\x4e\x20\x08\x02\0\0\0", 29);
+	png += std::string("\0\0\0\0\0\0\0\0IEND\xae\x42\x60\x82", 16);
+	std::ofstream(d + "/huge.png", std::ios::binary) << png;
+	const std::string why = errorOf([&] { decodeImageFile(d + "/huge.png", "", cv::IMREAD_GRAYSCALE); });
+	EXPECT_NE(why.find("20000x20000"), std::string::npos) << why;
+	EXPECT_NE(why.find("huge.png"), std::string::npos) << why;
+}
+
+TEST(BadFiles, ATimeIsDecimalSecondsWithinMrptsClock)
+{
+	EXPECT_DOUBLE_EQ(parseTime("1700000000.25"), 1700000000.25);
+	EXPECT_DOUBLE_EQ(parseTime("100"), 100);
+	EXPECT_DOUBLE_EQ(parseTime("0.5"), 0.5);
+	for (const std::string bad : {"0x10", "1e300", "1e3", "-5", "1.2.3", "", ".", "nan", "inf", "12s", "1,5", "999999999999"})
+		EXPECT_THROW(parseTime(bad), std::invalid_argument) << bad;
+}
