@@ -27,31 +27,9 @@ class Fields
 			throw std::invalid_argument(f_.front() + ": " + std::to_string(f_.size() - 1) + " fields; " + what);
 	}
 	std::string word() { return take("a word"); }
-	double number(const std::string& name)
-	{
-		const std::string& f = take(name);
-		try
-		{
-			return parseDouble(f);
-		}
-		catch (const std::invalid_argument& e)
-		{
-			throw std::invalid_argument(f_.front() + ": " + name + " '" + f + "': " + e.what());
-		}
-	}
+	double number(const std::string& name) { return parsed(name, parseDouble); }
 	/** [s] A timestamp: decimal seconds within MRPT's clock (parseTime()). */
-	double time(const std::string& name)
-	{
-		const std::string& f = take(name);
-		try
-		{
-			return parseTime(f);
-		}
-		catch (const std::invalid_argument& e)
-		{
-			throw std::invalid_argument(f_.front() + ": " + name + " '" + f + "': " + e.what());
-		}
-	}
+	double time(const std::string& name) { return parsed(name, parseTime); }
 	/** A count of fields that must follow it. */
 	int count(const std::string& name)
 	{
@@ -68,6 +46,19 @@ class Fields
 	}
 
    private:
+	/** The next field through `parse`, its error naming the record and the field. */
+	double parsed(const std::string& name, double (*parse)(const std::string&))
+	{
+		const std::string& f = take(name);
+		try
+		{
+			return parse(f);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw std::invalid_argument(f_.front() + ": " + name + " '" + f + "': " + e.what());
+		}
+	}
 	const std::string& take(const std::string& name)
 	{
 		if (next_ >= f_.size()) throw std::invalid_argument(f_.front() + ": " + name + " is missing");
