@@ -214,6 +214,11 @@ mkdir -p imp_hex && cp imp/100.0.jpg imp_hex/0x10.jpg
 run_case "import: an image named 0x10.jpg" error imp.rawlog -- "$apps/omnirange-import" -q --images imp_hex --laser imp_laser.csv -o imp.rawlog
 printf '\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\x4e\x20\0\0\x4e\x20\x08\x02\0\0\0\0\0\0\0\0\0\0\0IEND\xae\x42\x60\x82' > huge.png
 run_case "calibrate: a checkerboard image of 20000 x 20000 px" error none.out -- "$apps/omnirange-calibrate" -q --checkerboard huge.png --board 8x6
+# omnirange-slam's [ICP] section, read as strictly as every ini of ours.
+sed 's/^maxIterations *=.*/maxIterations = abc/' "$src/ini/icp-slam-omniscan.ini" > icp_abc.ini
+run_case "slam: [ICP] maxIterations = abc" error slam_out -- "$apps/omnirange-slam" -q -i s.rawlog -c icp_abc.ini -o slam_out
+sed 's/^thresholdDist *=.*/thresholdDist = 0.2m/' "$src/ini/icp-slam-omniscan.ini" > icp_unit.ini
+run_case "slam: [ICP] thresholdDist = 0.2m" error slam_out -- "$apps/omnirange-slam" -q -i s.rawlog -c icp_unit.ini -o slam_out
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
 

@@ -1,4 +1,5 @@
 #include "omnirange_eval/GuardedIcp.h"
+#include "omnirange_eval/IcpSlamIni.h"
 
 #include <omnirange/io/RawlogProcessor.h>
 
@@ -28,9 +29,18 @@ constexpr double kDeg = M_PI / 180;
 double positiveKey(const mrpt::config::CConfigFileBase& ini, const std::string& section, const std::string& key,
 				   double fallback)
 {
-	const double v = ini.read_double(section, key, fallback);
-	if (!std::isfinite(v) || v < 0)
-		throw std::runtime_error("[" + section + "] " + key + " must be a number >= 0, not " + std::to_string(v));
+	if (!ini.keyExists(section, key)) return fallback;
+	const std::string text = readRawValue(ini, section, key);
+	double v = 0;
+	try
+	{
+		v = parseDouble(text);  // strictly: MRPT's reader takes "0.2m" as 0.2 and "0,4" as 0
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error("[" + section + "] " + key + " = '" + text + "': " + e.what());
+	}
+	if (v < 0) throw std::runtime_error("[" + section + "] " + key + " must be a number >= 0, not " + text);
 	return v;
 }
 
@@ -104,6 +114,7 @@ GuardedIcpOptions GuardedIcpOptions::fromIni(const mrpt::config::CConfigFileBase
 GuardedIcpOptions GuardedIcpOptions::fromIniFile(const std::string& file)
 {
 	if (!std::filesystem::is_regular_file(file)) throw std::runtime_error("cannot read ini '" + file + "'");
+	requireStrictIcpSection(file);
 	return fromIni(mrpt::config::CConfigFile(file));
 }
 

@@ -4,7 +4,11 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/slam/CICP.h>
 
+#include <omnirange/io/OptionsTable.h>
+
 #include <algorithm>
+#include <cctype>
+#include <map>
 #include <filesystem>
 #include <stdexcept>
 
@@ -35,6 +39,51 @@ std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::
 		if (std::find(known.begin(), known.end(), k) == known.end()) ignored.push_back(k);
 	std::sort(ignored.begin(), ignored.end());
 	return ignored;
+}
+
+void requireStrictIcpSection(const std::string& file, const std::string& section)
+{
+	try
+	{
+		requireNoRepeatedKeys(file);
+		if (!mrpt::config::CConfigFile(file).sectionExists(section)) return;  // every option at MRPT's default
+		for (const auto& k : icpKeysMrptIgnores(file, section))
+			throw std::invalid_argument("[" + section + "] " + k + ": not a key MRPT reads (it would keep its default)");
+		// Each value of the kind of MRPT's own default for the key.
+		mrpt::config::CConfigFileMemory written;
+		mrpt::slam::CICP::TConfigParams().saveToConfigFile(written, section);
+		std::map<std::string, std::string> defaults;  // key as read -> MRPT's default, as written
+		std::vector<std::string> padded;
+		written.getAllKeys(section, padded);
+		for (const auto& k : padded) defaults[trimmed(k)] = trimmed(written.read_string(section, k, "", false));
+		const mrpt::config::CConfigFile ini(file);
+		std::vector<std::string> keys;
+		ini.getAllKeys(section, keys);
+		for (const auto& key : keys)
+		{
+			std::string as_written = key;
+			if (key.size() > 4 && key.compare(key.size() - 4, 4, "_DEG") == 0) as_written.resize(key.size() - 4);
+			const std::string model = defaults[as_written];
+			const std::string value = readRawValue(ini, section, key);
+			try
+			{
+				if (model == "true" || model == "false") parseBool(value);
+				else if (!model.empty() && (std::isdigit(static_cast<unsigned char>(model[0])) || model[0] == '-' || model[0] == '.'))
+					parseDouble(value);
+				else if (value.empty() || value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789") != std::string::npos)
+					throw std::invalid_argument("not a name like '" + model + "'");
+			}
+			catch (const std::invalid_argument& e)
+			{
+				throw std::invalid_argument("[" + section + "] " + key + " = '" + value + "': " + e.what());
+			}
+		}
+	}
+	catch (const std::exception& e)
+	{
+		const std::string what = e.what();
+		throw std::runtime_error(what.rfind(file, 0) == 0 ? what : file + ": " + what);
+	}
 }
 
 }  // namespace omnirange::eval

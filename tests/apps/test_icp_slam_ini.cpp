@@ -59,3 +59,32 @@ TEST(IcpSlamIni, AMissingFileIsAnErrorNamingIt)
 		EXPECT_NE(std::string(e.what()).find("/nonexistent/icp.ini"), std::string::npos) << e.what();
 	}
 }
+
+TEST(IcpSlamIni, TheIcpSectionIsReadStrictlyNamingFileSectionAndKey)
+{
+	using omnirange::eval::requireStrictIcpSection;
+	const auto refusal = [](const std::string& text) {
+		const TempIni ini(text);
+		try
+		{
+			requireStrictIcpSection(ini.path);
+			return std::string();
+		}
+		catch (const std::runtime_error& e)
+		{
+			return std::string(e.what());
+		}
+	};
+	EXPECT_EQ(refusal("[ICP]\nmaxIterations = 80\nthresholdAng_DEG = 7\nonlyUniqueRobust = true\n"
+					  "ICP_algorithm = icpClassic\n"),
+			  "");
+	EXPECT_EQ(refusal("[MappingApplication]\ninsertionLinDistance = 0.5\n"), "");  // no [ICP]: MRPT's defaults
+	for (const std::string bad : {"maxIterations = abc", "maxIterations = 0,4", "thresholdDist = 0.2m",
+								  "onlyUniqueRobust = maybe", "ICP_algorithm = 3 classic", "maxIteration = 80"})
+	{
+		const std::string why = refusal("[ICP]\n" + bad + "\n");
+		EXPECT_NE(why.find("omnirange_icp_keys.ini"), std::string::npos) << bad << ": " << why;
+		EXPECT_NE(why.find("[ICP] " + bad.substr(0, bad.find(' '))), std::string::npos) << bad << ": " << why;
+	}
+	EXPECT_NE(refusal("[ICP]\nmaxIterations = 80\nmaxIterations = 90\n").find("repeats"), std::string::npos);
+}

@@ -14,4 +14,10 @@ namespace omnirange::eval
  * cannot be read or has no such section. */
 std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::string& section = "ICP");
 
+/** The ini read strictly, as every ini of ours is: no key repeated in a
+ * section; in [ICP] only keys MRPT reads, each value of the kind MRPT's
+ * default is (a number without unit or decimal comma, true/false, or an
+ * enum's name). Throws std::runtime_error naming the file, section and key. */
+void requireStrictIcpSection(const std::string& file, const std::string& section = "ICP");
+
 }  // namespace omnirange::eval
