@@ -11,6 +11,7 @@
 #include <omnirange/io/LayeredIni.h>
 
 #include <omnirange/io/RawlogReader.h>
+#include <omnirange/io/Temporaries.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -579,4 +580,17 @@ TEST(AppClasses, AHistogramOfAnotherFloorIsWarnedAbout)
 	const auto [r, warned] = scanWithWarnings(s);
 	EXPECT_LT(r.hits, r.rays / 50);
 	EXPECT_NE(warned.find("magenta.hist"), std::string::npos) << warned;
+}
+
+TEST(AppClasses, OutOfMemoryIsOneLineNamingWhatWasBeingRead)
+{
+	testing::internal::CaptureStderr();
+	const int code = runApp("omnirange-test", [] {
+		temporaries::setActivity("reading rawlog 'big.rawlog'");
+		throw std::bad_alloc();
+	});
+	temporaries::setActivity("");
+	const std::string err = testing::internal::GetCapturedStderr();
+	EXPECT_EQ(code, 1);
+	EXPECT_EQ(err, "omnirange-test: error: out of memory while reading rawlog 'big.rawlog'\n");
 }

@@ -75,6 +75,12 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	{
 		return e.code;
 	}
+	catch (const std::bad_alloc&)
+	{
+		const std::string doing = temporaries::currentActivity();
+		std::cerr << name << ": error: out of memory" << (doing.empty() ? "" : " while " + oneLine(doing)) << "\n";
+		return 1;
+	}
 	catch (const std::exception& e)
 	{
 		std::cerr << name << ": error: " << oneLine(e.what()) << "\n";

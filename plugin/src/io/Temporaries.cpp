@@ -96,6 +96,12 @@ void setActivity(const std::string& what)
 	activity() = what;
 }
 
+std::string currentActivity()
+{
+	const std::lock_guard<std::mutex> g(lock());
+	return activity();
+}
+
 void removeAll()
 {
 	const std::lock_guard<std::mutex> g(lock());

@@ -1,5 +1,6 @@
 #include "omnirange/train/CheckerboardCalibration.h"
 #include "omnirange/io/ObservationImage.h"
+#include "omnirange/io/Temporaries.h"
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/vision/chessboard_find_corners.h>
@@ -88,6 +89,7 @@ CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string
 	std::vector<std::size_t> which;  // index in out.images of each board
 	for (const auto& file : files)
 	{
+		temporaries::setActivity("reading image '" + file + "'");
 		const cv::Mat gray = decodeImageFile(file, "", cv::IMREAD_GRAYSCALE);
 		if (gray.empty()) throw std::runtime_error("cannot read image '" + file + "'");
 		if (out.image_size.empty()) out.image_size = gray.size();

@@ -1,5 +1,6 @@
 #include "omnirange/train/MirrorRim.h"
 #include "omnirange/io/ObservationImage.h"
+#include "omnirange/io/Temporaries.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -14,6 +15,7 @@ MirrorRim detectMirrorRim(const std::vector<std::string>& images)
 	cv::Mat brightest;
 	for (const auto& file : images)
 	{
+		temporaries::setActivity("reading image '" + file + "'");
 		const cv::Mat gray = decodeImageFile(file, "", cv::IMREAD_GRAYSCALE);
 		if (gray.empty()) throw std::runtime_error("cannot read image '" + file + "'");
 		if (brightest.empty()) brightest = gray.clone();

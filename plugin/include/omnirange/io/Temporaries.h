@@ -23,5 +23,7 @@ void removeOnInterrupt();
 void removeAtExit(const std::string& program);
 /** What the run is doing, for that message: "reading rawlog 'X'". */
 void setActivity(const std::string& what);
+/** What setActivity() last said ("" if nothing): an error with no file of its own (out of memory) names it. */
+std::string currentActivity();
 
 }  // namespace omnirange::temporaries
