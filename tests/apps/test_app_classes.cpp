@@ -22,6 +22,8 @@
 #include "ScanAndScore.h"
 #include <omnirange_eval/SensoryFrameFormat.h>
 
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -593,4 +595,30 @@ TEST(AppClasses, OutOfMemoryIsOneLineNamingWhatWasBeingRead)
 	const std::string err = testing::internal::GetCapturedStderr();
 	EXPECT_EQ(code, 1);
 	EXPECT_EQ(err, "omnirange-test: error: out of memory while reading rawlog 'big.rawlog'\n");
+}
+
+TEST(AppClasses, ARimDiscPastTheImageOrFarFromRoundIsRefusedUnlessAccepted)
+{
+	// A bright ellipse on a dark image, its right side cut by the image's edge.
+	const std::string dir = workDir("rim_doubt");
+	cv::Mat img(480, 640, CV_8UC1, cv::Scalar(10)), noise(480, 640, CV_8UC1);
+	cv::ellipse(img, {560, 240}, {200, 150}, 0, 0, 360, cv::Scalar(200), -1);
+	cv::randu(noise, 0, 40);
+	img += noise;  // a scene, not two flat grey levels
+	cv::imwrite(dir + "/rim.png", img);
+	CalibrateApp::Options o;
+	o.rim_images = {dir + "/rim.png"};
+	o.save_to = dir + "/my.ini";
+	std::ofstream(o.save_to) << "[rangefinder]\n";
+	testing::internal::CaptureStderr();
+	EXPECT_THROW(CalibrateApp(o).runRim(), std::runtime_error);
+	const std::string warned = testing::internal::GetCapturedStderr();
+	EXPECT_NE(warned.find("past the image"), std::string::npos) << warned;
+	EXPECT_NE(warned.find("not round"), std::string::npos) << warned;
+	EXPECT_EQ(readText(o.save_to), "[rangefinder]\n");  // nothing saved
+	o.accept = true;
+	testing::internal::CaptureStderr();
+	CalibrateApp(o).runRim();
+	testing::internal::GetCapturedStderr();
+	EXPECT_NE(readText(o.save_to).find("cx = "), std::string::npos);
 }

@@ -3,6 +3,7 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/ObservationImage.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/io/IniSectionWriter.h>
@@ -55,8 +56,12 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> laser("", "laser-label", "label of the laser scans", false, c.laser_label, "LABEL", cmd);
 	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between an image and its scan [s]", false, c.max_dt, "S", cmd);
 	TCLAP::ValueArg<int> every("", "every", "use every N-th image/scan pair", false, c.every, "N", cmd);
+	TCLAP::SwitchArg accept("", "accept",
+							"save and exit 0 even when the result looks unsure (RMS over 1 px, an implausible mirror disc)",
+							cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	o.accept = accept.getValue();
 	o.ini = ini.getValue(), o.section = section.getValue(), o.histogram = hist.getValue();
 	c.input = in.getValue(), c.omni_label = omni.getValue(), c.laser_label = laser.getValue();
 	c.max_dt = max_dt.getValue(), c.every = every.getValue();
@@ -148,13 +153,29 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 	requireOutputAllowed(o_.intrinsics_output, OutputKind::Text, "omnirange-calibrate", o_.checkerboards);
 	const CheckerboardCalibration c = calibrateFromCheckerboards(o_.checkerboards, o_.board);
 	for (const auto& i : c.images)
-		std::printf("%s: %s%s\n", i.file.c_str(), i.found ? ("board found (" + i.detector + ")").c_str() : "no board",
-					i.used ? (", reprojection " + std::to_string(i.rms).substr(0, 5) + " px").c_str() :
-							 (i.found ? ", not used by the calibration" : ""));
+		std::printf("%s: %s%s\n", i.file.c_str(),
+					i.found ? ("board found (" + i.detector + ")").c_str()
+							: ("no board of " + std::to_string(o_.board.columns) + "x" + std::to_string(o_.board.rows) +
+							   " inner corners found")
+								  .c_str(),
+					i.used ? (", reprojection " + std::to_string(i.rms).substr(0, 5) + " px").c_str()
+						   : (i.found ? ", not used: cv::omnidir could not start its fit from it" : ""));
 	std::printf("boards found in %d of %zu images, %d used; RMS reprojection error %.3f px\n", c.found(),
 				c.images.size(), c.used(), c.rms);
 	std::printf("fx %.2f  fy %.2f  skew %.3f  cx %.2f  cy %.2f px;  xi %.4f;  k1 %.4f  k2 %.4f  p1 %.5f  p2 %.5f\n",
 				c.K(0, 0), c.K(1, 1), c.K(0, 1), c.K(0, 2), c.K(1, 2), c.xi, c.D[0], c.D[1], c.D[2], c.D[3]);
+	std::vector<std::string> doubts;
+	for (const auto& i : c.images)
+		if (i.part_of_larger)
+			doubts.push_back(i.file + ": a board one corner wider or taller is found there too: is --board " +
+							 std::to_string(o_.board.columns) + "x" + std::to_string(o_.board.rows) +
+							 " the count of inner corners? (OCamCalib and MATLAB count squares, one more each way)");
+	if (c.rms > 1.0)
+		doubts.push_back("the RMS reprojection error, " + formatDouble(std::round(c.rms * 100) / 100) +
+						 " px, is over 1 px: is --board right? It counts inner corners (" +
+						 std::to_string(o_.board.columns) + "x" + std::to_string(o_.board.rows) +
+						 " here); OCamCalib and MATLAB count squares, one more each way");
+	requireSure(doubts);
 	if (!o_.intrinsics_output.empty()) writeFileAtomically(o_.intrinsics_output, c.yaml());
 	if (!o_.save_to.empty())
 	{
@@ -165,11 +186,31 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 	return c;
 }
 
+void CalibrateApp::requireSure(const std::vector<std::string>& doubts) const
+{
+	for (const auto& d : doubts) std::fprintf(stderr, "omnirange-calibrate: warning: %s\n", d.c_str());
+	if (doubts.empty() || o_.accept) return;
+	throw std::runtime_error("the calibration may be wrong (" + std::to_string(doubts.size()) +
+							 (doubts.size() == 1 ? " warning" : " warnings") +
+							 " above): nothing saved; --accept to save it all the same");
+}
+
 MirrorRim CalibrateApp::runRim()
 {
 	const MirrorRim rim = detectMirrorRim(o_.rim_images);
 	std::printf("mirror disc: centre cx = %.1f px, cy = %.1f px; rim radius %.1f px; ellipticity %.3f (from %zu images)\n",
 				rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size());
+	// A disc the whole image could not hold, or far from round, is not a mirror's rim.
+	const cv::Mat first = decodeImageFile(o_.rim_images.front(), "", cv::IMREAD_GRAYSCALE);
+	std::vector<std::string> doubts;
+	if (rim.cx - rim.radius < 0 || rim.cy - rim.radius < 0 || rim.cx + rim.radius > first.cols ||
+		rim.cy + rim.radius > first.rows)
+		doubts.push_back("the disc found (radius " + formatDouble(std::round(rim.radius)) +
+						 " px) reaches past the image: the rim is not all in view, or what was found is not the mirror");
+	if (rim.ellipticity > 0.1)
+		doubts.push_back("the disc found is not round (ellipticity " + formatDouble(std::round(rim.ellipticity * 100) / 100) +
+						 " > 0.1): its centre is not the mirror's");
+	requireSure(doubts);
 	if (!o_.save_to.empty())
 	{
 		writeIniSection(o_.save_to, o_.section,

@@ -36,6 +36,7 @@ MirrorRim detectMirrorRim(const std::vector<std::string>& images)
 		throw std::runtime_error("no bright mirror disc found in the images");
 	std::vector<cv::Point> hull;
 	cv::convexHull(*largest, hull);
+	if (hull.size() < 5) throw std::runtime_error("no mirror disc found in the images: the bright region has no round edge");
 	const cv::RotatedRect e = cv::fitEllipse(hull);
 	const double a = std::max(e.size.width, e.size.height) / 2, b = std::min(e.size.width, e.size.height) / 2;
 	return {e.center.x, e.center.y, (a + b) / 2, 1.0 - b / a};

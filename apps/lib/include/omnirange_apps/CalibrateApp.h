@@ -27,6 +27,8 @@ class CalibrateApp : public mrpt::system::COutputLogger
 		std::vector<std::string> rim_images;  ///< images: find the mirror's disc instead
 		std::string ocamcalib;  ///< OCamCalib's calib_results.txt: take the camera from it instead
 		std::string save_to;  ///< ini to write what was found into (its [section]); empty: print only
+		/** Save and exit 0 even when the result looks unsure (requireSure()). */
+		bool accept{false};
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */
@@ -48,6 +50,9 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	const OrientationFit& orientation() const { return orientation_; }
 
    private:
+	/** Each doubt as a warning on stderr; then, unless --accept, an error:
+	 * nothing is saved from a calibration that says it may be wrong. */
+	void requireSure(const std::vector<std::string>& doubts) const;
 	Options o_;
 	OrientationFit orientation_;
 };

@@ -35,6 +35,10 @@ struct CheckerboardImage
 	std::string detector;  ///< which of CheckerboardOptions::detectors found it
 	bool used{false};  ///< kept by the calibration (cv::omnidir drops some it cannot initialise)
 	double rms{0};  ///< [px] this image's reprojection error, when used
+	/** The same detector also finds a board one corner wider or taller: the
+	 * board given is likely miscounted (a part of the real one, its corners
+	 * then matched to the wrong squares). Checked on the first three boards found. */
+	bool part_of_larger{false};
 };
 
 struct CheckerboardCalibration

@@ -166,3 +166,29 @@ TEST(CheckerboardCalibration, MrptsScaramuzzaDetectorFindsTheCornersOpenCVFinds)
 	EXPECT_THROW(findCheckerboardCorners(cv::Mat::zeros(10, 10, CV_8UC1), pattern, "no-such-detector", none),
 				 std::invalid_argument);
 }
+
+TEST(RealParaboloidMiscount, ABoardGivenOneCornerShortIsFoundAsPartOfTheLargerOne)
+{
+	// 7 x 5 for the 8 x 6 board: OCamCalib and MATLAB count squares, so a
+	// user coming from them gives one less... or one more; the smaller is
+	// found inside the real board, and the calibration must say so.
+	if (!std::filesystem::exists(kRealDir)) GTEST_SKIP() << "no " << kRealDir;
+	std::vector<std::string> files;
+	for (int i = 1; i <= 4; ++i)
+	{
+		char name[32];
+		std::snprintf(name, sizeof name, "/img_para_%03d.pgm", i);
+		files.push_back(kRealDir + name);
+	}
+	CheckerboardOptions o;
+	o.columns = 7, o.rows = 5;
+	const CheckerboardCalibration c = calibrateFromCheckerboards(files, o);
+	int larger = 0;
+	for (const auto& i : c.images) larger += i.part_of_larger;
+	EXPECT_GE(larger, 1);
+}
+
+TEST_F(RealParaboloid, TheRightCountIsNotTakenForPartOfALargerBoard)
+{
+	for (const auto& i : calibration_->images) EXPECT_FALSE(i.part_of_larger) << i.file;
+}
