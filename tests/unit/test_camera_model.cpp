@@ -238,3 +238,19 @@ TEST(CameraModel, OCamCalibPolynomialsThatCannotBeAMirrorAreRejected)
 	EXPECT_THROW(OmniCameraModel{p}, std::invalid_argument);
 	EXPECT_EQ(mirrorModelFromString("ocamcalib"), MirrorModel::OCamCalib);
 }
+
+TEST(CameraModel, AnOCamCalibPolynomialNeedHoldOnlyOverTheImagesPixels)
+{
+	// theta = atan2(rho, -z), z = -100 + 0.001 rho^2 - 1e-6 rho^3: grows to
+	// about 94 degrees near 620 px and turns back after. A 640 x 480 image
+	// centred on the axis reaches 400 px: the polynomial is good over all of
+	// it, though not out to the image's diagonal (800 px), as real fits are not.
+	CameraParams p;
+	p.mirror_model = MirrorModel::OCamCalib;
+	p.image_width = 640, p.image_height = 480, p.cx = 320, p.cy = 240;
+	p.ocam_poly = {-100, 0, 0.001, -1e-6};
+	p.ocam_affine = {1, 0, 0};
+	EXPECT_NO_THROW(p.validate());
+	p.image_width = 1600, p.image_height = 1200, p.cx = 800, p.cy = 600;  // now 1000 px: past the turn
+	EXPECT_THROW(p.validate(), std::invalid_argument);
+}

@@ -53,6 +53,13 @@ double meiUndistorted(const CameraParams& p, double rd)
 	}
 	return r;
 }
+
+/** [px] The image's farthest pixel from the centre: no radius is sought, and
+ * no model need hold, beyond it. */
+double farthestPixelRadius(const CameraParams& p)
+{
+	return std::hypot(std::max(p.cx, p.image_width - p.cx), std::max(p.cy, p.image_height - p.cy));
+}
 }  // namespace
 
 std::string toString(MirrorModel m)
@@ -145,8 +152,9 @@ void CameraParams::validate() const
 		require(ocam_affine.size() == 3, "ocam_affine needs three numbers, c d e");
 		require(std::abs(ocam_affine[0] - ocam_affine[1] * ocam_affine[2] - 1) < 0.5,
 				"ocam_affine's c - d e must be within 0.5 of 1 (it scales the image)");
-		// theta must grow with rho out to the image's diagonal (or to 170 degrees).
-		const double limit = std::hypot(image_width, image_height);
+		// theta must grow with rho out to the image's farthest pixel (or to 170
+		// degrees); past the image a real calibration's polynomial may turn back.
+		const double limit = farthestPixelRadius(*this);
 		double last = 0;
 		for (double rho = 1; rho <= limit; rho += 1)
 		{
@@ -175,7 +183,7 @@ void CameraParams::validate() const
 OmniCameraModel::OmniCameraModel(const CameraParams& p) : p_(p)
 {
 	p_.validate();
-	rho_limit_ = std::hypot(p_.image_width, p_.image_height);
+	rho_limit_ = farthestPixelRadius(p_);
 	if (p_.mirror_model == MirrorModel::Mei)
 		radial_ = p_.aspect == 1.0 && p_.skew == 0.0 && p_.p1 == 0.0 && p_.p2 == 0.0;
 	if (p_.mirror_model == MirrorModel::OCamCalib)

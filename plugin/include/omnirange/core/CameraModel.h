@@ -151,7 +151,7 @@ class OmniCameraModel
 	std::pair<double, double> meiNormalised(const Pixel& px) const;
 
 	CameraParams p_;
-	double rho_limit_{0};  ///< [px] the image's diagonal: no radius is sought beyond it
+	double rho_limit_{0};  ///< [px] the image's farthest pixel from the centre: no radius is sought beyond it
 	bool radial_{true};
 };
 
