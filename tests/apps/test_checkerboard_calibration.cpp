@@ -4,6 +4,7 @@
 // detector alone finds 8), the reprojection error must be at most 0.35 px,
 // and the principal point must agree with the reference the data's README
 // gives (measured with plain OpenCV: cx 643.7, cy 521.3, xi 1.443).
+#include <omnirange_apps/CalibrateApp.h>
 #include <omnirange/train/CheckerboardCalibration.h>
 #include <omnirange/train/MirrorRim.h>
 
@@ -191,4 +192,18 @@ TEST(RealParaboloidMiscount, ABoardGivenOneCornerShortIsFoundAsPartOfTheLargerOn
 TEST_F(RealParaboloid, TheRightCountIsNotTakenForPartOfALargerBoard)
 {
 	for (const auto& i : calibration_->images) EXPECT_FALSE(i.part_of_larger) << i.file;
+}
+
+TEST(CheckerboardCalibration, ACheckerboardFolderGivesItsImagesInNameOrder)
+{
+	using omnirange::app::CalibrateApp;
+	if (!std::filesystem::exists(kRealDir)) GTEST_SKIP() << "no " << kRealDir;
+	const std::string dir = kRealDir;
+	const char* argv[] = {"omnirange-calibrate", "--checkerboard-dir", dir.c_str()};
+	const CalibrateApp::Options o = CalibrateApp::parse(3, argv);
+	ASSERT_EQ(o.checkerboards.size(), 10u);  // the ten PGMs; the README is not an image
+	EXPECT_EQ(o.checkerboards.front(), dir + "/img_para_001.pgm");
+	EXPECT_EQ(o.checkerboards.back(), dir + "/img_para_010.pgm");
+	const char* none[] = {"omnirange-calibrate", "--checkerboard-dir", "/nonexistent/boards"};
+	EXPECT_THROW(CalibrateApp::parse(3, none), std::runtime_error);
 }

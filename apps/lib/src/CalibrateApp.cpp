@@ -10,6 +10,9 @@
 #include <omnirange/io/OptionsTable.h>
 #include <omnirange/io/Progress.h>
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 
@@ -32,6 +35,23 @@ void saveCameraKeys(const std::string& ini, const std::string& section, const Ca
 	std::printf("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), section.c_str(),
 				ini.c_str());
 }
+/** Every image file in `dir`, sorted by name, appended to `files`. */
+void addImagesOf(const std::string& dir, std::vector<std::string>& files)
+{
+	namespace fs = std::filesystem;
+	if (!fs::is_directory(dir)) throw std::runtime_error("--checkerboard-dir: no folder '" + dir + "'");
+	std::vector<std::string> found;
+	for (const auto& e : fs::directory_iterator(dir))
+	{
+		std::string ext = e.path().extension().string();
+		std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+		for (const char* kind : {".jpg", ".jpeg", ".png", ".pgm", ".ppm", ".bmp", ".tif", ".tiff"})
+			if (ext == kind && e.is_regular_file()) found.push_back(e.path().string());
+	}
+	if (found.empty()) throw std::runtime_error("--checkerboard-dir: no image in '" + dir + "'");
+	std::sort(found.begin(), found.end());
+	files.insert(files.end(), found.begin(), found.end());
+}
 }  // namespace
 
 CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
@@ -47,6 +67,9 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", false, "", "FILE", cmd);
 	TCLAP::MultiArg<std::string> boards("", "checkerboard", "an image of a checkerboard (repeat for each; >= 3 found needed)", false, "IMAGE", cmd);
 	TCLAP::ValueArg<std::string> save("", "save-to", "write what was found (orientation, then R or alpha and boundary_offset; cx, cy with --rim; the camera model with --checkerboard or --ocamcalib) into this ini's section, keeping the rest of the file", false, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> board_dir("", "checkerboard-dir",
+										   "every image (jpg, png, pgm, ppm, bmp, tif) in this folder, as --checkerboard each",
+										   false, "", "DIR", cmd);
 	TCLAP::MultiArg<std::string> rims("", "rim", "an ordinary image: find the mirror's centre and rim radius (repeat; a few images)", false, "IMAGE", cmd);
 	TCLAP::ValueArg<std::string> ocam("", "ocamcalib", "OCamCalib's calib_results.txt: the camera's polynomial model (with --save-to: into the ini)", false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> board("", "board", "inner corners, COLUMNSxROWS", false, "8x6", "CxR", cmd);
@@ -67,6 +90,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	c.max_dt = max_dt.getValue(), c.every = every.getValue();
 	o.verbosity = verbosity.level();
 	o.checkerboards = boards.getValue(), o.intrinsics_output = out.getValue(), o.board.square = square.getValue();
+	if (!board_dir.getValue().empty()) addImagesOf(board_dir.getValue(), o.checkerboards);
 	o.rim_images = rims.getValue(), o.save_to = save.getValue(), o.ocamcalib = ocam.getValue();
 	if (std::sscanf(board.getValue().c_str(), "%dx%d", &o.board.columns, &o.board.rows) != 2)
 		throw std::invalid_argument("--board must be COLUMNSxROWS, e.g. 8x6, not '" + board.getValue() + "'");
