@@ -142,7 +142,7 @@ std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r
 		 "\n\n![maps from the guarded matcher](maps_guarded.png)\n\n";
 	const bool rbpf = std::any_of(r.sensors.begin(), r.sensors.end(), [](const auto& s) { return !s.rbpf_ini.empty(); });
 	if (rbpf)
-		o << "rbpf-slam is a particle filter, not seeded: its figures change from run to run.\n\n"
+		o << "rbpf-slam is a particle filter: its figures change with its ini's RANDOM_SEED.\n\n"
 		  << "![maps from rbpf-slam](maps_rbpf.png)\n\n";
 	if (c.hasCheckRegion()) writeCheckRegion(o, c, r);
 	return o.str();
