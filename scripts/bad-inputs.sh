@@ -210,6 +210,8 @@ mkfifo world.fifo
 run_case "sim: the world file is a FIFO" error sim.rawlog -- "$apps/omnirange-sim" -q -w world.fifo -r w.route -o sim.rawlog
 printf '100.0, 1, 2, 3\n1e300, 1, 2, 3\n' > imp_far.csv
 run_case "import: a laser time of 1e300" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_far.csv -o imp.rawlog
+head -c 3000000 /dev/zero | tr '\0' '7' > imp_endless.csv
+run_case "import: a laser log of one 3 MB line" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_endless.csv -o imp.rawlog
 mkdir -p imp_hex && cp imp/100.0.jpg imp_hex/0x10.jpg
 run_case "import: an image named 0x10.jpg" error imp.rawlog -- "$apps/omnirange-import" -q --images imp_hex --laser imp_laser.csv -o imp.rawlog
 printf '\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\x4e\x20\0\0\x4e\x20\x08\x02\0\0\0\0\0\0\0\0\0\0\0IEND\xae\x42\x60\x82' > huge.png

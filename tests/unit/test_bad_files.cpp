@@ -101,3 +101,17 @@ TEST(BadFiles, ATimeIsDecimalSecondsWithinMrptsClock)
 	for (const std::string bad : {"0x10", "1e300", "1e3", "-5", "1.2.3", "", ".", "nan", "inf", "12s", "1,5", "999999999999"})
 		EXPECT_THROW(parseTime(bad), std::invalid_argument) << bad;
 }
+
+TEST(BadFiles, ATextFileOfOneEndlessLineIsRefusedAtItsCap)
+{
+	const std::string d = dir("long_line");
+	std::ofstream(d + "/laser.csv") << "100.0, 1, 2\n" << std::string(kMaxLineBytes + 10, '7') << "\n";
+	int rows = 0;
+	const std::string why = errorOf([&] { forEachDataLine(d + "/laser.csv", "laser log", [&](int, const std::string&) { ++rows; }); });
+	EXPECT_NE(why.find("laser.csv:2: a line of more than 1 MB"), std::string::npos) << why;
+	EXPECT_EQ(rows, 1);
+	std::ofstream(d + "/ok.csv") << "1, 2\n3, 4";  // no newline at the end: still two rows
+	rows = 0;
+	forEachDataLine(d + "/ok.csv", "laser log", [&](int, const std::string&) { ++rows; });
+	EXPECT_EQ(rows, 2);
+}

@@ -53,6 +53,23 @@ void requireRegularFile(const std::string& path, const std::string& what)
 		throw std::runtime_error("the " + what + " '" + path + "' is not a regular file");
 }
 
+namespace
+{
+/** std::getline that stops at `cap` bytes: a file of one endless line (a
+ * binary file given as a log) is found before it fills the memory. */
+bool readLineUpTo(std::istream& in, std::string& line, std::size_t cap)
+{
+	line.clear();
+	for (int c; (c = in.get()) != EOF;)
+	{
+		if (c == '\n') return true;
+		line.push_back(static_cast<char>(c));
+		if (line.size() >= cap) return true;
+	}
+	return !line.empty();
+}
+}  // namespace
+
 int forEachDataLine(const std::string& path, const std::string& what,
 					const std::function<void(int, const std::string&)>& row)
 {
@@ -61,8 +78,11 @@ int forEachDataLine(const std::string& path, const std::string& what,
 	if (!in) throw std::runtime_error("cannot read the " + what + " '" + path + "'");
 	int rows = 0;
 	std::string line;
-	for (int n = 1; std::getline(in, line); ++n)
+	for (int n = 1; readLineUpTo(in, line, kMaxLineBytes); ++n)
 	{
+		if (line.size() >= kMaxLineBytes)
+			throw std::runtime_error(path + ":" + std::to_string(n) + ": a line of more than " +
+									 std::to_string(kMaxLineBytes >> 20) + " MB: is this the " + what + "?");
 		const std::string t = trimmed(line);
 		if (t.empty() || t[0] == '#') continue;
 		try

@@ -55,6 +55,10 @@ std::string trimmed(const std::string& s);
  * read without end. A missing file is left to the reader's own message. */
 void requireRegularFile(const std::string& path, const std::string& what);
 
+/** [bytes] The longest line a text file of ours may have (1 MB: a laser row of
+ * 10,000 ranges is about 100 kB). */
+inline constexpr std::size_t kMaxLineBytes = std::size_t(1) << 20;
+
 /** Calls `row(line_number, text)` for every line of the text file `path`
  * that is neither blank nor a '#' comment, trimmed. A std::invalid_argument
  * from `row` becomes std::runtime_error("PATH:LINE: what"). Throws
