@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The project speaks of itself, never of how it was made: no rounds of work
-# ("the fifth session", "since the eleventh", "in the same session") in its
-# docs, comments, inis or output. Where history matters, a date or a commit.
+# named by their ordinal or as "this" or "that" one, in its docs, comments,
+# inis or output. Where history matters, a date or a commit.
 # The tuner's own sense of "session" (TunerSession, a session over a rawlog)
 # is a thing of the program and stays.
 #   wording_test.sh SOURCE_DIR
