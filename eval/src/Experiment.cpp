@@ -10,7 +10,6 @@
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/Progress.h>
-#include <omnirange/io/Temporaries.h>
 #include <omnirange/io/RawlogScan.h>
 
 #include <mrpt/io/CFileGZInputStream.h>
@@ -18,7 +17,6 @@
 
 #include <algorithm>
 
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -84,16 +82,12 @@ Metrics Experiment::run()
 	// replaced only when all of them succeeded, so a failed run never leaves
 	// new data beside an old report.
 	const std::string report = outputPath(fs::absolute(c_.output).string());
-	recoverLeftoversOf(report);
-	requireOutputAllowed(report, OutputKind::Folder, kProgram,
-						 {c_.ini_file, c_.world, c_.route, c_.robot, c_.icp_laser_ini, c_.icp_omni_ini, c_.map_laser_ini,
-						  c_.map_omni_ini, c_.rbpf_laser_ini, c_.rbpf_omni_ini},
-						 force_);
-	const std::string staging = report + ".staging-" + std::to_string(::getpid());
-	fs::remove_all(staging);
-	temporaries::add(staging);
-	fs::create_directories(staging);
-	markOutputFolder(staging, kProgram);
+	StagedFolder staged(
+		report, kProgram,
+		{c_.ini_file, c_.world, c_.route, c_.robot, c_.icp_laser_ini, c_.icp_omni_ini, c_.map_laser_ini, c_.map_omni_ini,
+		 c_.rbpf_laser_ini, c_.rbpf_omni_ini},
+		force_);
+	const std::string staging = staged.path();
 	setFolder(staging);
 	Metrics m;
 	try
@@ -102,7 +96,7 @@ Metrics Experiment::run()
 	}
 	catch (const std::exception& e)
 	{
-		temporaries::forget(staging);
+		staged.keep();
 		// What the failed run made, kept for a look where a failed run of ours kept it before.
 		std::string failed = report + ".failed";
 		if (fs::exists(failed) && !isOutputFolderOf(failed, kProgram)) failed = staging;
@@ -110,8 +104,7 @@ Metrics Experiment::run()
 		throw std::runtime_error(std::string(e.what()) + " (partial output in '" + failed + "'; '" + report +
 								 "' is as it was)");
 	}
-	temporaries::forget(staging);
-	replaceFolder(report, staging);
+	staged.commit();
 	setFolder(report);
 	return m;
 }

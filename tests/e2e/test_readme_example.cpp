@@ -3,6 +3,10 @@
 // omnirange-scan made of it (exposure compensation included).
 #include "Programs.h"
 
+#include "../common/FactorySample.h"
+
+#include <omnirange/io/OptionsTable.h>
+
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationImage.h>
@@ -12,22 +16,8 @@
 
 using namespace omnirange::e2e;
 
-namespace
-{
-std::string readText(const std::string& path)
-{
-	std::ifstream in(path);
-	std::ostringstream s;
-	s << in.rdbuf();
-	return s.str();
-}
-
-std::string trimmed(const std::string& s)
-{
-	const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
-	return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
-}  // namespace
+using omnirange::trimmed;
+using omnirange::test::readText;
 
 TEST(ReadmeExample, ItsLinesAreTheExampleProgramsInOrder)
 {

@@ -7,6 +7,8 @@
 #include <omnirange/io/OptionsTable.h>
 #include <omnirange/core/Rangefinder.h>
 
+#include "../common/FactorySample.h"
+
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -22,13 +24,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string dir(const std::string& name)
-{
-	const fs::path d = fs::temp_directory_path() / "omnirange_bad_files" / name;
-	fs::remove_all(d);
-	fs::create_directories(d);
-	return d.string();
-}
+std::string dir(const std::string& name) { return test::freshDir("omnirange_bad_files", name); }
 
 std::string errorOf(const std::function<void()>& f)
 {

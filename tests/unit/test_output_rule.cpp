@@ -6,6 +6,8 @@
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 
+#include "../common/FactorySample.h"
+
 #include <mrpt/obs/CObservationOdometry.h>
 #include <opencv2/core.hpp>
 
@@ -19,21 +21,11 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string fresh(const std::string& name)
-{
-	const fs::path d = fs::temp_directory_path() / "omnirange_output_rule" / name;
-	fs::remove_all(d);
-	fs::create_directories(d);
-	return d.string();
-}
+std::string fresh(const std::string& name) { return test::freshDir("omnirange_output_rule", name); }
 
 void write(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
-std::string read(const std::string& path)
-{
-	std::ifstream f(path, std::ios::binary);
-	return std::string(std::istreambuf_iterator<char>(f), {});
-}
+std::string read(const std::string& path) { return test::readText(path); }
 
 /** The error requireOutputAllowed() throws, or "" when it allows the output. */
 std::string refusal(const std::string& out, OutputKind kind, const std::vector<std::string>& inputs = {}, bool force = false)

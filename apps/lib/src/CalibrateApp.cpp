@@ -3,7 +3,6 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange/io/AtomicWrite.h>
-#include <omnirange/io/ObservationImage.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/io/IniSectionWriter.h>
@@ -225,10 +224,9 @@ MirrorRim CalibrateApp::runRim()
 	std::printf("mirror disc: centre cx = %.1f px, cy = %.1f px; rim radius %.1f px; ellipticity %.3f (from %zu images)\n",
 				rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size());
 	// A disc the whole image could not hold, or far from round, is not a mirror's rim.
-	const cv::Mat first = decodeImageFile(o_.rim_images.front(), "", cv::IMREAD_GRAYSCALE);
 	std::vector<std::string> doubts;
-	if (rim.cx - rim.radius < 0 || rim.cy - rim.radius < 0 || rim.cx + rim.radius > first.cols ||
-		rim.cy + rim.radius > first.rows)
+	if (rim.cx - rim.radius < 0 || rim.cy - rim.radius < 0 || rim.cx + rim.radius > rim.image_width ||
+		rim.cy + rim.radius > rim.image_height)
 		doubts.push_back("the disc found (radius " + formatDouble(std::round(rim.radius)) +
 						 " px) reaches past the image: the rim is not all in view, or what was found is not the mirror");
 	if (rim.ellipticity > 0.1)

@@ -6,11 +6,9 @@
 
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
-#include <omnirange/io/Temporaries.h>
 
 #include <cmath>
 #include <cstdio>
-#include <unistd.h>
 #include <filesystem>
 
 namespace omnirange::app
@@ -45,16 +43,10 @@ eval::GuardedIcpResult SlamApp::run()
 {
 	// icp-slam's kind of outputs, in a folder of this program's that is swapped in whole.
 	const std::string folder = outputPath(o_.output);
-	recoverLeftoversOf(folder);
-	requireOutputAllowed(folder, OutputKind::Folder, "omnirange-slam", {o_.input, o_.ini});
-	const std::string staging = folder + ".staging-" + std::to_string(::getpid());
-	const std::string map = staging + "/_finalmap_.simplemap", path = staging + "/log_estimated_path.txt";
+	StagedFolder staged(folder, "omnirange-slam", {o_.input, o_.ini}, false);
+	const std::string map = staged.path() + "/_finalmap_.simplemap", path = staged.path() + "/log_estimated_path.txt";
 	const auto options = eval::GuardedIcpOptions::fromIniFile(o_.ini);
 	const eval::GuardedIcpResult r = eval::runGuardedIcp(o_.input, o_.scan_label, o_.odometry_label, options);
-	std::filesystem::remove_all(staging);
-	std::filesystem::create_directories(staging);
-	temporaries::add(staging);
-	markOutputFolder(staging, "omnirange-slam");
 	eval::saveSimplemap(r.keyframes, map);
 	std::string text = "% time [s], x [m], y [m], phi [rad]: the estimated pose at every scan\n";
 	char line[128];
@@ -64,8 +56,7 @@ eval::GuardedIcpResult SlamApp::run()
 		text += line;
 	}
 	writeFileAtomically(path, text);
-	replaceFolder(folder, staging);
-	temporaries::forget(staging);
+	staged.commit();
 	MRPT_LOG_INFO_STREAM(r.path.size() << " scans, " << r.keyframes.size() << " keyframes; " << r.matches
 									   << " matches accepted, " << r.refused_jumps << " refused as jumps, "
 									   << r.poor_matches << " too poor; " << r.weak_directions

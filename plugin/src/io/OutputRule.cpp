@@ -1,6 +1,7 @@
 #include "omnirange/io/OutputRule.h"
 
 #include "omnirange/io/OptionsTable.h"
+#include "omnirange/io/Temporaries.h"
 
 #include <signal.h>
 #include <unistd.h>
@@ -184,6 +185,39 @@ void recoverLeftoversOf(const std::string& target)
 			else fs::remove_all(e.path(), ec);
 		}
 	}
+}
+
+StagedFolder::StagedFolder(const std::string& target, const std::string& program,
+						   const std::vector<std::string>& inputs, bool force)
+	: target_(target), staging_(target + ".staging-" + std::to_string(::getpid()))
+{
+	recoverLeftoversOf(target_);
+	requireOutputAllowed(target_, OutputKind::Folder, program, inputs, force);
+	fs::remove_all(staging_);
+	temporaries::add(staging_);
+	fs::create_directories(staging_);
+	markOutputFolder(staging_, program);
+}
+
+StagedFolder::~StagedFolder()
+{
+	if (done_) return;
+	temporaries::forget(staging_);
+	std::error_code ec;
+	fs::remove_all(staging_, ec);
+}
+
+void StagedFolder::commit()
+{
+	temporaries::forget(staging_);
+	done_ = true;
+	replaceFolder(target_, staging_);
+}
+
+void StagedFolder::keep()
+{
+	temporaries::forget(staging_);
+	done_ = true;
 }
 
 void markOutputFolder(const std::string& dir, const std::string& program)

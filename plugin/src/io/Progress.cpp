@@ -31,11 +31,13 @@ void Progress::update(std::size_t done, std::size_t total)
 	if (show_) return show_(done, total);
 	const char* start = tty_ ? "\r" : "";
 	const char* end = tty_ ? "\033[K" : "\n";  // on a terminal: clear the rest of the line
-	// Time left at the pace so far: rough, but it says whether to wait or come back.
-	const double left = std::chrono::duration<double>(now - start_).count() * double(total - done) / double(done);
 	if (total > 0 && done < total)
+	{
+		// Time left at the pace so far: rough, but it says whether to wait or come back.
+		const double left = std::chrono::duration<double>(now - start_).count() * double(total - done) / double(done);
 		std::fprintf(stderr, "%s%s: %zu/%zu (%.0f %%, about %.0f s left)%s", start, what_.c_str(), done, total,
 					 100.0 * done / total, left, end);
+	}
 	else if (total > 0)
 		std::fprintf(stderr, "%s%s: %zu/%zu (100 %%)%s", start, what_.c_str(), done, total, end);
 	else

@@ -133,11 +133,10 @@ void RawlogWriter::commit()
 	}
 	// The old images go aside, the new ones in, then the rawlog; only when
 	// all three moves succeeded is the old folder removed.
+	// The rule the programs check before they start, checked again here for
+	// every writer (a library user need not have called it).
+	requireOutputAllowed(images_, OutputKind::Folder, kRawlogImagesOwner, {}, replace_any_);
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
-	if (had_old && !fs::is_symlink(images_) && !replace_any_ && !fs::is_empty(images_) &&
-		!isOutputFolderOf(images_, kRawlogImagesOwner))
-		throw std::runtime_error("'" + images_ + "' is a folder no rawlog writer of ours made (no " + kOutputMarker +
-								 "): refusing to replace it (--force to)");
 	const std::string old = images_ + ".old-" + std::to_string(::getpid());
 	if (had_old) fs::rename(images_, old);
 	bool moved_in = false;

@@ -39,7 +39,7 @@ MirrorRim detectMirrorRim(const std::vector<std::string>& images)
 	if (hull.size() < 5) throw std::runtime_error("no mirror disc found in the images: the bright region has no round edge");
 	const cv::RotatedRect e = cv::fitEllipse(hull);
 	const double a = std::max(e.size.width, e.size.height) / 2, b = std::min(e.size.width, e.size.height) / 2;
-	return {e.center.x, e.center.y, (a + b) / 2, 1.0 - b / a};
+	return {e.center.x, e.center.y, (a + b) / 2, 1.0 - b / a, brightest.cols, brightest.rows};
 }
 
 }  // namespace omnirange

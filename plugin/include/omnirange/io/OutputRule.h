@@ -50,6 +50,31 @@ void markOutputFolder(const std::string& dir, const std::string& program);
 /** true when `dir` is a folder whose marker names `program`. */
 bool isOutputFolderOf(const std::string& dir, const std::string& program);
 
+/** A folder output written in a staging folder and swapped in whole. The
+ * constructor clears what killed runs of `target` left (recoverLeftoversOf()),
+ * checks the rule (requireOutputAllowed()) and makes a fresh staging folder
+ * TARGET.staging-PID, marked as `program`'s and registered as a temporary;
+ * the program writes into path(), then commit() swaps it in (replaceFolder()).
+ * Destroyed without commit() or keep(), the staging folder is removed. */
+class StagedFolder
+{
+   public:
+	StagedFolder(const std::string& target, const std::string& program, const std::vector<std::string>& inputs,
+				 bool force);
+	~StagedFolder();
+	StagedFolder(const StagedFolder&) = delete;
+	StagedFolder& operator=(const StagedFolder&) = delete;
+
+	const std::string& path() const { return staging_; }
+	void commit();
+	/** Leaves the staging folder as it is (a failed run's output, for a look). */
+	void keep();
+
+   private:
+	std::string target_, staging_;
+	bool done_{false};
+};
+
 /** Puts the finished folder `fresh` in the place of `target`: the old
  * `target` (if any) goes aside as TARGET.old-PID, `fresh` is renamed in,
  * then the old one is removed. If the rename fails, the old is put back and

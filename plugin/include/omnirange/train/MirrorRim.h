@@ -18,6 +18,7 @@ struct MirrorRim
 	double cx{0}, cy{0};  ///< [px] the disc's centre
 	double radius{0};  ///< [px] mean of the fitted ellipse's half axes
 	double ellipticity{0};  ///< [-] 1 - minor / major axis: large means a tilted camera or a wrong fit
+	int image_width{0}, image_height{0};  ///< [px] of the images it was found in
 };
 
 /** Throws std::runtime_error naming the file if an image cannot be read or
