@@ -7,13 +7,19 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <omnirange/io/OptionsTable.h>
+#include <omnirange/io/OutputRule.h>
+
 #include <wx/button.h>
+#include <wx/msgdlg.h>
 #include <wx/progdlg.h>
 #include <wx/sizer.h>
 #include <wx/statusbr.h>
 
+#include <cctype>
 #include <chrono>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 
 using namespace omnirange;
@@ -32,7 +38,44 @@ wxBitmap toBitmap(const cv::Mat& bgr, int width)
 	const std::unique_ptr<wxBitmap> b(mrpt::gui::MRPTImage2wxBitmap(mrpt::img::CImage(shown, mrpt::img::DEEP_COPY)));
 	return *b;
 }
+
+/** The text of a spin control as typed, parsed strictly and checked against
+ * its range; throws std::invalid_argument saying why it is refused. */
+template <class Spin>
+double typedValue(const Spin& c, const char* name)
+{
+	const std::string text = c.GetTextValue().ToStdString();
+	double v = 0;
+	try
+	{
+		v = omnirange::parseDouble(text);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument(std::string(name) + " '" + text + "': " + e.what());
+	}
+	if (v < c.GetMin() || v > c.GetMax())
+		throw std::invalid_argument(
+			(wxString::Format("%s '%s' is outside [%g, %g]", name, text, double(c.GetMin()), double(c.GetMax())))
+				.ToStdString());
+	return v;
+}
 }  // namespace
+
+template <class Event, class Handler>
+void TunerFrame::bindGuarded(wxEvtHandler* source, const wxEventTypeTag<Event>& type, Handler handler)
+{
+	source->Bind(type, [this, handler](Event& e) {
+		try
+		{
+			handler(e);
+		}
+		catch (const std::exception& ex)
+		{
+			status(wxString::FromUTF8(ex.what()), Say::Error);
+		}
+	});
+}
 
 TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int first_frame)
 	: wxFrame(nullptr, wxID_ANY, "omnirange-tuner: " + session.options().rawlog),
@@ -83,15 +126,16 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	SetSizerAndFit(frame_sizer);
 	CreateStatusBar();
 
-	prev->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { setFrame(frame_ - 1); });
-	next->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { setFrame(frame_ + 1); });
-	play->Bind(wxEVT_BUTTON, [this, play](wxCommandEvent&) {
+	bindGuarded(prev, wxEVT_BUTTON, [this](wxCommandEvent&) { setFrame(frame_ - 1); });
+	bindGuarded(next, wxEVT_BUTTON, [this](wxCommandEvent&) { setFrame(frame_ + 1); });
+	bindGuarded(play, wxEVT_BUTTON, [this, play](wxCommandEvent&) {
 		if (play_.IsRunning()) play_.Stop(), play->SetLabel("Play");
 		else play_.Start(150), play->SetLabel("Stop");
 	});
-	Bind(wxEVT_TIMER, [this](wxTimerEvent&) { setFrame(frame_ + 1 < s_.frames() ? frame_ + 1 : 0); });
-	slider_->Bind(wxEVT_SLIDER, [this](wxCommandEvent&) { setFrame(slider_->GetValue()); });
-	Bind(wxEVT_CHAR_HOOK, &TunerFrame::onKey, this);
+	bindGuarded(this, wxEVT_TIMER, [this](wxTimerEvent&) { setFrame(frame_ + 1 < s_.frames() ? frame_ + 1 : 0); });
+	bindGuarded(slider_, wxEVT_SLIDER, [this](wxCommandEvent&) { setFrame(slider_->GetValue()); });
+	bindGuarded(this, wxEVT_CHAR_HOOK, [this](wxKeyEvent& e) { onKey(e); });
+	Bind(wxEVT_CLOSE_WINDOW, &TunerFrame::onClose, this);
 
 	controlsFromParams();
 	setFrame(std::clamp(first_frame, 0, s_.frames() - 1));
@@ -105,7 +149,7 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 		label(text);
 		auto* c = new wxSpinCtrl(p, wxID_ANY, "", wxDefaultPosition, wxSize(130, -1), wxSP_ARROW_KEYS, lo, hi);
 		grid->Add(c);
-		c->Bind(wxEVT_SPINCTRL, [this](wxSpinEvent&) { onParamsChanged(); });
+		bindGuarded(c, wxEVT_SPINCTRL, [this](wxSpinEvent&) { onParamsChanged(); });
 		return c;
 	};
 	const auto real = [&](const char* text, double lo, double hi, double inc, int digits) {
@@ -114,7 +158,7 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 									   lo, inc);
 		c->SetDigits(digits);
 		grid->Add(c);
-		c->Bind(wxEVT_SPINCTRLDOUBLE, [this](wxSpinDoubleEvent&) { onParamsChanged(); });
+		bindGuarded(c, wxEVT_SPINCTRLDOUBLE, [this](wxSpinDoubleEvent&) { onParamsChanged(); });
 		return c;
 	};
 	n_ = spin("N [px]", 1, 200);
@@ -137,13 +181,13 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 		label(text);
 		auto* c = new wxCheckBox(p, wxID_ANY, "");
 		grid->Add(c);
-		c->Bind(wxEVT_CHECKBOX, [this](wxCommandEvent&) { onParamsChanged(); });
+		bindGuarded(c, wxEVT_CHECKBOX, [this](wxCommandEvent&) { onParamsChanged(); });
 		return c;
 	};
 	mirrored_ = check("mirrored");
 	walls_ = check("thin walls");
 	exposure_ = check("exposure comp.");
-	for (wxChoice* c : {boundary_, outliers_}) c->Bind(wxEVT_CHOICE, [this](wxCommandEvent&) { onParamsChanged(); });
+	for (wxChoice* c : {boundary_, outliers_}) bindGuarded(c, wxEVT_CHOICE, [this](wxCommandEvent&) { onParamsChanged(); });
 	sizer->Add(grid, 0, wxALL, 4);
 
 	auto* shows = new wxBoxSizer(wxHORIZONTAL);
@@ -155,7 +199,7 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 	{
 		auto* box = new wxCheckBox(p, wxID_ANY, name);
 		box->SetValue(*flag);
-		box->Bind(wxEVT_CHECKBOX, [this, flag = flag, box](wxCommandEvent&) {
+		bindGuarded(box, wxEVT_CHECKBOX, [this, flag = flag, box](wxCommandEvent&) {
 			*flag = box->GetValue();
 			refresh();
 		});
@@ -165,16 +209,16 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 
 	auto* actions = new wxBoxSizer(wxHORIZONTAL);
 	auto* score = new wxButton(p, wxID_ANY, "Score all frames");
-	auto* train = new wxButton(p, wxID_ANY, "Train histogram here");
+	auto* train = new wxButton(p, wxID_ANY, "Train histogram here (Ctrl+H)");
 	auto* save = new wxButton(p, wxID_ANY, "Save ini (Ctrl+S)");
-	score->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { scoreAll(); });
-	train->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { this->train(); });
-	save->Bind(wxEVT_BUTTON, [this](wxCommandEvent&) { this->save(); });
+	bindGuarded(score, wxEVT_BUTTON, [this](wxCommandEvent&) { scoreAll(); });
+	bindGuarded(train, wxEVT_BUTTON, [this](wxCommandEvent&) { this->train(); });
+	bindGuarded(save, wxEVT_BUTTON, [this](wxCommandEvent&) { this->save(); });
 	for (auto* b : {score, train, save}) actions->Add(b, 0, wxALL, 2);
 	sizer->Add(actions, 0, wxALL, 2);
 	sizer->Add(new wxStaticText(p, wxID_ANY,
 								"keys: Left/Right frame, Home/End first/last, [ and ] halve/double the threshold, "
-								"Ctrl+S save"),
+								"Ctrl+T type the threshold, Ctrl+S save, Ctrl+W close"),
 			   0, wxALL, 4);
 }
 
@@ -198,34 +242,43 @@ void TunerFrame::controlsFromParams()
 	updating_ = false;
 }
 
-void TunerFrame::onParamsChanged()
+bool TunerFrame::applyControls()
 {
-	if (updating_) return;
 	RangefinderParams p = s_.params();
-	p.scanner.filter.N = n_->GetValue();
-	p.scanner.filter.K = k_->GetValue();
-	p.threshold = threshold_->GetValue();
-	p.scanner.step_threshold = step_->GetValue();
-	p.scanner.boundary_model = boundary_->GetSelection() == 0 ? BoundaryModel::Midpoint : BoundaryModel::Subpixel;
-	p.outliers.outlier_filter = outliers_->GetSelection() == 0 ? OutlierFilterKind::None : OutlierFilterKind::Spike;
-	p.camera.cx = cx_->GetValue();
-	p.camera.cy = cy_->GetValue();
-	p.camera.R = r_->GetValue();
-	p.camera.forward_azimuth = azimuth_->GetValue() / kDeg;
-	p.camera.mirrored = mirrored_->GetValue();
-	p.walls.wall_fit = walls_->GetValue();
-	p.exposure_compensation = exposure_->GetValue();
 	try
 	{
+		// Text typed but not yet committed (no Enter, focus not left) counts: it is what the user sees.
+		p.scanner.filter.N = static_cast<int>(typedValue(*n_, "N"));
+		p.scanner.filter.K = static_cast<int>(typedValue(*k_, "K"));
+		p.threshold = typedValue(*threshold_, "threshold");
+		p.scanner.step_threshold = typedValue(*step_, "brightness step");
+		p.camera.cx = typedValue(*cx_, "cx");
+		p.camera.cy = typedValue(*cy_, "cy");
+		p.camera.R = typedValue(*r_, "R");
+		p.camera.forward_azimuth = typedValue(*azimuth_, "forward") / kDeg;
+		p.scanner.boundary_model = boundary_->GetSelection() == 0 ? BoundaryModel::Midpoint : BoundaryModel::Subpixel;
+		p.outliers.outlier_filter = outliers_->GetSelection() == 0 ? OutlierFilterKind::None : OutlierFilterKind::Spike;
+		p.camera.mirrored = mirrored_->GetValue();
+		p.walls.wall_fit = walls_->GetValue();
+		p.exposure_compensation = exposure_->GetValue();
 		s_.setParams(p);
 	}
 	catch (const std::exception& e)
 	{
-		status(wxString::FromUTF8(e.what()), true);
-		return;
+		controlsFromParams();  // back to the values in force, visibly
+		status(wxString::FromUTF8(std::string("refused: ") + e.what() + "; the values in force are shown again"),
+			   Say::Error);
+		return false;
 	}
+	controlsFromParams();  // the committed text, as the controls format it
 	rangefinder_changed_ = true;
-	refresh();
+	updateTitle();
+	return true;
+}
+
+void TunerFrame::onParamsChanged()
+{
+	if (!updating_ && applyControls()) refresh();
 }
 
 void TunerFrame::setFrame(int k)
@@ -233,27 +286,44 @@ void TunerFrame::setFrame(int k)
 	frame_ = std::clamp(k, 0, s_.frames() - 1);
 	slider_->SetValue(frame_);
 	frame_label_->SetLabel(wxString::Format("frame %d / %d", frame_, s_.frames() - 1));
-	SetTitle(wxString::Format("omnirange-tuner: frame %d / %d of %s", frame_, s_.frames() - 1, s_.options().rawlog));
+	updateTitle();
 	refresh();
+}
+
+void TunerFrame::updateTitle()
+{
+	// A leading '*' marks values not saved yet, as editors do.
+	SetTitle(wxString::Format("%somnirange-tuner: frame %d / %d of %s", s_.unsaved() ? "*" : "", frame_,
+							  s_.frames() - 1, s_.options().rawlog));
+}
+
+void TunerFrame::showUnreadable(const std::string& why)
+{
+	const RangefinderParams& p = s_.params();
+	const cv::Size size(p.camera.image_width, p.camera.image_height);
+	image_->SetBitmap(toBitmap(tuner::drawPlaceholder(size, "frame " + std::to_string(frame_) + ": " + why), kImageWidth));
+	plot_->SetBitmap(toBitmap(tuner::drawPlaceholder({kPlotSize, kPlotSize}, "no scan"), kPlotSize));
+	birdseye_->SetBitmap(toBitmap(tuner::drawPlaceholder({kSmall, kSmall}, ""), kSmall));
+	frame_score_->SetLabel("frame " + std::to_string(frame_) + " cannot be shown");
+	status(wxString::FromUTF8("frame " + std::to_string(frame_) + ": " + why), Say::Error);
 }
 
 void TunerFrame::refresh()
 {
-	if (!s_.hasColours())
-	{
-		image_->SetBitmap(toBitmap(s_.image(frame_), kImageWidth));
-		return status("no histogram: train one on this rawlog (button) or start with -H FILE");
-	}
 	const auto t0 = std::chrono::steady_clock::now();
 	tuner::FrameScan scan;
 	try
 	{
+		if (!s_.hasColours())
+		{
+			image_->SetBitmap(toBitmap(s_.image(frame_), kImageWidth));
+			return status("no histogram: train one on this rawlog (Ctrl+H) or start with -H FILE", Say::Routine);
+		}
 		scan = s_.scan(frame_);
 	}
 	catch (const std::exception& e)
 	{
-		status(wxString::FromUTF8(e.what()), true);
-		return;
+		return showUnreadable(e.what());
 	}
 	const Rangefinder& rf = s_.rangefinder();
 	image_->SetBitmap(toBitmap(tuner::drawOmniOverlay(scan, rf, overlay_), kImageWidth));
@@ -274,7 +344,7 @@ void TunerFrame::refresh()
 		score += wxString::Format("; against the laser: mean abs %.3f m over %zu rays", a.mean_abs, a.compared);
 	}
 	frame_score_->SetLabel(score);
-	status(wxString::Format("frame %d: scan %.1f ms, update %.1f ms", frame_, scan.scan_ms, ms));
+	status(wxString::Format("frame %d: scan %.1f ms, update %.1f ms", frame_, scan.scan_ms, ms), Say::Routine);
 	Layout();
 }
 
@@ -283,51 +353,87 @@ void TunerFrame::onKey(wxKeyEvent& e)
 	const wxWindow* focus = wxWindow::FindFocus();
 	const bool typing = dynamic_cast<const wxSpinCtrl*>(focus) || dynamic_cast<const wxSpinCtrlDouble*>(focus) ||
 						(focus && focus->GetParent() && dynamic_cast<const wxSpinCtrlDouble*>(focus->GetParent()));
-	const int key = e.GetKeyCode();
-	if (e.ControlDown() && (key == 'S' || key == 's')) return save();
+	const int code = e.GetKeyCode();
+	const int key = code < 128 ? std::toupper(code) : code;
+	if (e.ControlDown())
+	{
+		if (key == 'S') return static_cast<void>(save());
+		if (key == 'H') return train();
+		if (key == 'W' || key == 'Q') return static_cast<void>(Close());
+		if (key == 'T') return threshold_->SetFocus(), threshold_->SetSelection(-1, -1);
+	}
 	if (!typing)
 	{
 		if (key == WXK_RIGHT) return setFrame(frame_ + 1);
 		if (key == WXK_LEFT) return setFrame(frame_ - 1);
 		if (key == WXK_HOME) return setFrame(0);
 		if (key == WXK_END) return setFrame(s_.frames() - 1);
-		if (key == ']' || key == '[')
-		{
-			threshold_->SetValue(std::clamp(threshold_->GetValue() * (key == ']' ? 2.0 : 0.5), 0.0, 1.0));
-			return onParamsChanged();
-		}
+	}
+	if (key == ']' || key == '[')  // a number field takes no brackets: these work wherever the focus is
+	{
+		threshold_->SetValue(std::clamp(threshold_->GetValue() * (key == ']' ? 2.0 : 0.5), 0.0, 1.0));
+		return onParamsChanged();
 	}
 	e.Skip();
 }
 
-void TunerFrame::save()
+bool TunerFrame::save()
 {
+	if (!applyControls()) return false;
 	try
 	{
 		s_.saveIni(save_to_);
-		status("saved [" + s_.options().section + "] to " + save_to_);
 	}
 	catch (const std::exception& e)
 	{
-		status(wxString::FromUTF8(e.what()), true);
+		status(wxString::FromUTF8(e.what()), Say::Error);
+		return false;
 	}
+	status("saved [" + s_.options().section + "] to " + save_to_);
+	updateTitle();
+	refresh();
+	return true;
+}
+
+void TunerFrame::onClose(wxCloseEvent& e)
+{
+	if (e.CanVeto() && (!applyControls() || s_.unsaved()))
+	{
+		wxMessageDialog ask(this, "Save the changed values into " + save_to_ + " before closing?",
+							"omnirange-tuner: unsaved changes", wxYES_NO | wxCANCEL | wxYES_DEFAULT | wxICON_QUESTION);
+		ask.SetYesNoCancelLabels("Save", "Discard", "Cancel");
+		const int answer = ask.ShowModal();
+		if (answer == wxID_CANCEL || (answer == wxID_YES && !save())) return e.Veto();
+	}
+	play_.Stop();
+	Destroy();
 }
 
 void TunerFrame::scoreAll()
 {
-	if (!s_.hasColours()) return status("no histogram yet: train one first", true);
+	if (!s_.hasColours()) return status("no histogram yet: train one first", Say::Error);
 	wxProgressDialog progress("omnirange-tuner", "scanning every frame", s_.frames(), this, wxPD_APP_MODAL | wxPD_AUTO_HIDE);
 	const auto a = s_.scoreAll([&](int done, int) { progress.Update(done); });
-	status(wxString::Format("whole rawlog: mean abs %.4f m over %zu rays of %d frames with a laser", a.mean_abs,
-							a.compared, a.frames));
+	wxString text = wxString::Format("whole rawlog: mean abs %.4f m over %zu rays of %d frames with a laser",
+									 a.mean_abs, a.compared, a.frames);
+	if (a.unreadable > 0) text += wxString::Format(" (%d frames could not be read and are left out)", a.unreadable);
+	status(text);
 	refresh();
 }
 
 void TunerFrame::train()
 {
 	const std::string out = std::filesystem::path(save_to_).replace_extension(".hist").string();
+	const bool exists = std::filesystem::exists(out);
+	if (exists && wxMessageDialog(this, out + " exists. Train a new histogram and replace it?",
+								  "omnirange-tuner: replace the histogram?", wxYES_NO | wxNO_DEFAULT | wxICON_WARNING)
+						  .ShowModal() != wxID_YES)
+		return status("not trained: " + out + " kept");
 	try
 	{
+		// Never over an input, even when the user said yes.
+		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner", {s_.options().rawlog, s_.options().ini},
+							 exists);
 		wxProgressDialog dialog("omnirange-tuner", "training the floor's colours on this rawlog", 100, this,
 								wxPD_APP_MODAL | wxPD_AUTO_HIDE);
 		const auto r = s_.train(out, {}, [&](std::size_t objects) {
@@ -337,13 +443,15 @@ void TunerFrame::train()
 	}
 	catch (const std::exception& e)
 	{
-		return status(wxString::FromUTF8(e.what()), true);
+		return status(wxString::FromUTF8(e.what()), Say::Error);
 	}
 	rangefinder_changed_ = true;
 	refresh();
 }
 
-void TunerFrame::status(const wxString& text, bool error)
+void TunerFrame::status(const wxString& text, Say how)
 {
-	GetStatusBar()->SetStatusText(error ? "error: " + text : text);
+	const wxString line = how == Say::Error ? "error: " + text : text;
+	GetStatusBar()->SetStatusText(line);
+	if (how != Say::Routine) std::cout << "omnirange-tuner: " << line.ToStdString() << std::endl;
 }

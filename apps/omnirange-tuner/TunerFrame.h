@@ -1,6 +1,8 @@
 #pragma once
 // omnirange-tuner's window: a thin view over tuner::TunerSession. Every
 // control change re-scans the frame and redraws (tuner/Overlays.h draws).
+// No handler lets an exception out: what fails is said in the status bar
+// (and on stdout), and the user's unsaved values stay.
 
 #include <omnirange_tuner/Overlays.h>
 #include <omnirange_tuner/TunerSession.h>
@@ -27,16 +29,26 @@ class TunerFrame : public wxFrame
 	TunerFrame(omnirange::tuner::TunerSession& session, std::string save_to, int first_frame);
 
    private:
+	/** Binds `handler` to `type` on `source` so that what it throws is shown, not fatal. */
+	template <class Event, class Handler>
+	void bindGuarded(wxEvtHandler* source, const wxEventTypeTag<Event>& type, Handler handler);
 	void buildControls(wxWindow* parent, wxSizer* sizer);
 	void controlsFromParams();
+	/** Takes the controls' values, typed text not yet committed included;
+	 * a refused value puts every control back to the value in force. */
+	bool applyControls();
 	void onParamsChanged();
 	void setFrame(int k);
 	void refresh();
+	void showUnreadable(const std::string& why);
+	void updateTitle();
 	void onKey(wxKeyEvent& e);
-	void save();
+	void onClose(wxCloseEvent& e);
+	bool save();
 	void scoreAll();
 	void train();
-	void status(const wxString& text, bool error = false);
+	enum class Say { Routine, Note, Error };  // Note and Error are also printed on stdout
+	void status(const wxString& text, Say how = Say::Note);
 
 	omnirange::tuner::TunerSession& s_;
 	std::string save_to_;

@@ -8,6 +8,7 @@
 
 #include <wx/app.h>
 
+#include <iostream>
 #include <memory>
 #include <stdexcept>
 
@@ -51,6 +52,24 @@ class TunerApp : public wxApp
 	{
 		auto* frame = new TunerFrame(*g_session, g_options.save_to, g_options.frame);
 		frame->Show();
+		return true;
+	}
+	// The handlers catch what they throw (TunerFrame::bindGuarded); anything
+	// else is said on stderr and the window stays, with the user's values.
+	bool OnExceptionInMainLoop() override
+	{
+		try
+		{
+			throw;
+		}
+		catch (const std::exception& e)
+		{
+			std::cerr << "omnirange-tuner: error: " << e.what() << std::endl;
+		}
+		catch (...)
+		{
+			std::cerr << "omnirange-tuner: error: an unknown exception" << std::endl;
+		}
 		return true;
 	}
 	// The command line was parsed before wx started: wx must not parse it again.

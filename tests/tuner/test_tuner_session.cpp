@@ -95,6 +95,76 @@ TEST(TunerSession, ParameterChangesRescanAndImpossibleOnesAreRefused)
 	EXPECT_EQ(s.scan(3).scan.count(RayStatus::Hit), hits);
 }
 
+TEST(TunerSession, ChangesAreUnsavedUntilSaved)
+{
+	const std::string dir = workDir("unsaved");
+	TunerSession s = trainedSession(dir);
+	EXPECT_FALSE(s.unsaved());
+	RangefinderParams p = s.params();
+	const double loaded = p.threshold;
+	p.threshold = loaded * 2;
+	s.setParams(p);
+	EXPECT_TRUE(s.unsaved());
+	p.threshold = loaded;  // back to what the ini holds
+	s.setParams(p);
+	EXPECT_FALSE(s.unsaved());
+	p.scanner.filter.K += 1;
+	s.setParams(p);
+	fs::copy_file(kIni, dir + "/user.ini");
+	s.saveIni(dir + "/user.ini");
+	EXPECT_FALSE(s.unsaved());
+}
+
+TEST(TunerSession, ImagesThatCannotWorkAreRefusedAtStartAndOneBadFrameIsLeftOut)
+{
+	const std::string dir = workDir("bad_images");
+	const std::string log = dir + "/factory-sample.rawlog", images = dir + "/factory-sample_Images";
+	fs::copy_file(kSample, log);
+	fs::copy(test::kSource + "/rawlogs/factory-sample_Images", images);
+	const std::string cut = images + "/factory-sample_OMNICAM_000003.jpg";
+	const std::string bytes = read(cut);
+	std::ofstream(cut, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() / 2);
+
+	trainedSession(dir);  // on the whole sample: training stops at a cut image
+	SessionOptions o;
+	o.rawlog = log;
+	o.ini = kIni;
+	o.histogram = dir + "/f.hist";
+	TunerSession s(o);
+	EXPECT_NO_THROW(s.scan(2));
+	try
+	{
+		s.scan(3);
+		ADD_FAILURE() << "a cut frame scanned";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("000003.jpg"), std::string::npos) << e.what();
+	}
+	const Agreement all = s.scoreAll();
+	EXPECT_EQ(all.unreadable, 1);
+	EXPECT_EQ(all.frames, 19);
+
+	// Every frame would fail: refused before any window opens, saying why.
+	const auto refused = [&](const SessionOptions& bad, const std::string& why) {
+		try
+		{
+			TunerSession{bad};
+			ADD_FAILURE() << "accepted; expected: " << why;
+		}
+		catch (const std::runtime_error& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+		}
+	};
+	std::ofstream(dir + "/wide.ini") << "base = " << kIni << "\n[rangefinder]\nimage_width = 800\n";
+	SessionOptions wide = o;
+	wide.ini = dir + "/wide.ini";
+	refused(wide, "is 1024x768 but the camera is 800x768");
+	fs::rename(images, dir + "/elsewhere");
+	refused(o, "the images folder '");
+}
+
 TEST(TunerSession, SavingKeepsTheUsersCommentsAndOtherSections)
 {
 	const std::string dir = workDir("save");
@@ -220,4 +290,14 @@ TEST(TunerOverlays, RaysTheBrightnessStepEndedAreRinged)
 	for (const Ray& r : on.scan.rays) by_step += r.by_step;
 	ASSERT_GT(by_step, 0);
 	EXPECT_GT(countColour(drawOmniOverlay(on, s.rangefinder(), rays), colour::kByStep), by_step);
+}
+
+TEST(TunerOverlays, APlaceholderShowsItsReasonOnNoPicture)
+{
+	const cv::Mat p = drawPlaceholder({640, 480}, "frame 3: image 'x.jpg' is truncated: no JPEG end-of-image marker");
+	ASSERT_EQ(p.size(), cv::Size(640, 480));
+	const int background = countColour(p, colour::kPlaceholder), text = countColour(p, cv::Scalar(255, 255, 255));
+	EXPECT_GT(background, 640 * 480 * 9 / 10);
+	EXPECT_GT(text, 200);  // the reason is written
+	EXPECT_EQ(countColour(p, colour::kHit), 0);  // nothing of a scan
 }

@@ -164,4 +164,23 @@ cv::Mat drawFloorColours(const ColourModel& colours, const FreeSpaceClassifier& 
 	return img;
 }
 
+cv::Mat drawPlaceholder(cv::Size size, const std::string& reason)
+{
+	cv::Mat out(size, CV_8UC3, colour::kPlaceholder);
+	const double scale = std::max(0.5, size.width / 1024.0);
+	const int line_height = static_cast<int>(32 * scale), margin = size.width / 20;
+	const std::size_t per_line = 60;  // characters: the reason wraps at spaces near this
+	int y = size.height / 3;
+	for (std::size_t from = 0; from < reason.size(); y += line_height)
+	{
+		std::size_t to = std::min(reason.size(), from + per_line);
+		if (to < reason.size())
+			if (const auto space = reason.rfind(' ', to); space != std::string::npos && space > from) to = space;
+		cv::putText(out, reason.substr(from, to - from), {margin, y}, cv::FONT_HERSHEY_SIMPLEX, 0.8 * scale,
+					cv::Scalar(255, 255, 255), std::max(1, static_cast<int>(2 * scale)), cv::LINE_8);
+		from = to + (to < reason.size() && reason[to] == ' ');
+	}
+	return out;
+}
+
 }  // namespace omnirange::tuner

@@ -8,11 +8,17 @@
 
 
 #include <chrono>
+#include <filesystem>
 #include <map>
 #include <stdexcept>
 
 namespace omnirange::tuner
 {
+namespace
+{
+constexpr int kFramesTriedAtStart = 20;  // none of the first 20 decodes: the log, not a frame, is bad
+}
+
 Agreement agreementOf(const std::vector<RangePair>& pairs)
 {
 	Agreement a;
@@ -48,11 +54,52 @@ TunerSession::TunerSession(SessionOptions options) : o_(std::move(options))
 	loop.run();
 	if (frames_.empty())
 		throw std::runtime_error("no " + o_.omni_label + " image in '" + o_.rawlog + "' (" + loop.describeLabels() + ")");
+	saved_ = params_;
+	checkImages();
 	if (!o_.histogram.empty())
 	{
 		colours_ = ColourModel::load(o_.histogram);
 		rf_ = std::make_unique<Rangefinder>(params_, colours_);
 	}
+}
+
+// What would make every frame fail is found here, once: a single bad frame
+// later is shown as such and the others still work.
+void TunerSession::checkImages()
+{
+	const auto& first = *frames_.front().image;
+	if (first.image.isExternallyStored())
+	{
+		const auto folder = std::filesystem::path(first.image.getExternalStorageFileAbsolutePath()).parent_path();
+		if (!std::filesystem::is_directory(folder))
+			throw std::runtime_error("the images folder '" + folder.string() + "' of '" + o_.rawlog + "' is missing");
+	}
+	std::string first_error;
+	for (int k = 0; k < std::min(frames(), kFramesTriedAtStart); ++k)
+	{
+		cv::Mat img;
+		try
+		{
+			img = decodeImage(*frames_[k].image);
+		}
+		catch (const std::runtime_error& e)
+		{
+			if (first_error.empty()) first_error = e.what();
+			continue;
+		}
+		// A wrong size is the camera's or the ini's, not one frame's: every frame would fail.
+		requireCameraSize(img, *frames_[k].image, params_.camera);
+		cached_bgr_ = img, cached_ = k;
+		return;
+	}
+	throw std::runtime_error(first_error + (frames() > 1 ? " (nor does any of the first frames decode)" : ""));
+}
+
+bool TunerSession::unsaved() const
+{
+	for (const auto& f : RangefinderParams::table().fields())
+		if (f.print(params_) != f.print(saved_)) return true;
+	return false;
 }
 
 const Rangefinder& TunerSession::rangefinder() const
@@ -106,7 +153,17 @@ Agreement TunerSession::scoreAll(const std::function<void(int, int)>& progress)
 	{
 		if (progress) progress(k, frames());
 		if (!frames_[k].laser) continue;
-		const Agreement a = agreementOf(scan(k).laser_pairs);
+		FrameScan one;
+		try
+		{
+			one = scan(k);
+		}
+		catch (const std::runtime_error&)  // an unreadable image; the rest of the log still counts
+		{
+			++all.unreadable;
+			continue;
+		}
+		const Agreement a = agreementOf(one.laser_pairs);
 		sum += a.mean_abs * static_cast<double>(a.compared);
 		all.compared += a.compared;
 		++all.frames;
@@ -136,11 +193,12 @@ RawlogTrainingResult TunerSession::train(const std::string& histogram, TrainingP
 	return r;
 }
 
-void TunerSession::saveIni(const std::string& ini) const
+void TunerSession::saveIni(const std::string& ini)
 {
 	std::vector<std::pair<std::string, std::string>> values;
 	for (const auto& f : RangefinderParams::table().fields()) values.emplace_back(f.info.key, f.print(params_));
 	writeIniSection(ini.empty() ? o_.ini : ini, o_.section, values, RangefinderParams::table().comments());
+	saved_ = params_;
 }
 
 }  // namespace omnirange::tuner

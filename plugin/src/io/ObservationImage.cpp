@@ -102,12 +102,19 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
 cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& cam)
 {
 	cv::Mat img = decodeImage(obs);
+	requireCameraSize(img, obs, cam);
+	return img;
+}
+
+void requireCameraSize(const cv::Mat& img, const mrpt::obs::CObservationImage& obs, const CameraParams& cam)
+{
 	if (img.cols != cam.image_width || img.rows != cam.image_height)
 		throw std::runtime_error(
-			"image '" + obs.image.getExternalStorageFile() + "' is " + std::to_string(img.cols) + "x" +
+			(obs.image.isExternallyStored() ? "image '" + obs.image.getExternalStorageFile() + "'"
+											: "an embedded " + obs.sensorLabel + " image") +
+			" is " + std::to_string(img.cols) + "x" +
 			std::to_string(img.rows) + " but the camera is " + std::to_string(cam.image_width) + "x" +
 			std::to_string(cam.image_height));
-	return img;
 }
 
 }  // namespace omnirange

@@ -26,8 +26,12 @@ namespace colour
 {
 inline const cv::Scalar kHit{0, 255, 0}, kNoHit{0, 255, 255}, kTooClose{0, 0, 255}, kOutlier{255, 0, 255},
 	kRejectedCandidate{0, 165, 255}, kLaser{255, 255, 0}, kTruth{255, 255, 255}, kFree{255, 0, 0},
-	kForward{0, 0, 255}, kCircle{200, 200, 200}, kByStep{0, 90, 0};
+	kForward{0, 0, 255}, kCircle{200, 200, 200}, kByStep{0, 90, 0}, kPlaceholder{40, 40, 90};
 }
+
+/** What is shown instead of a frame that cannot be: `size`, filled with
+ * kPlaceholder, with `reason` written on it (wrapped), and no other frame's picture. */
+cv::Mat drawPlaceholder(cv::Size size, const std::string& reason);
 
 /** The frame's image with the overlays `o` asks for. */
 cv::Mat drawOmniOverlay(const FrameScan& scan, const Rangefinder& rangefinder, const OverlayOptions& o);

@@ -57,14 +57,17 @@ struct Agreement
 	std::size_t compared{0};
 	double mean_abs{0};
 	int frames{0};
+	int unreadable{0};  ///< frames left out because their image could not be read
 };
 Agreement agreementOf(const std::vector<RangePair>& pairs);
 
 class TunerSession
 {
    public:
-	/** Reads the rawlog's frames (not their images), the ini and the
-	 * histogram; throws std::runtime_error naming what is wrong. */
+	/** Reads the rawlog's frames, the ini and the histogram, and decodes the
+	 * first frame that decodes to check it has the camera's size; throws
+	 * std::runtime_error naming what is wrong (a missing images folder, a
+	 * wrong size, no frame that decodes) before any window opens. */
 	explicit TunerSession(SessionOptions options);
 
 	int frames() const { return static_cast<int>(frames_.size()); }
@@ -75,6 +78,8 @@ class TunerSession
 	/** Validates and takes new parameters; throws std::invalid_argument
 	 * (the old ones stay) if they are impossible. */
 	void setParams(const RangefinderParams& params);
+	/** Whether the parameters differ from what the ini held or saveIni() last wrote. */
+	bool unsaved() const;
 	bool hasColours() const { return rf_ != nullptr; }
 	const ColourModel& colours() const { return colours_; }
 	const Rangefinder& rangefinder() const;
@@ -83,7 +88,8 @@ class TunerSession
 	const cv::Mat& image(int k);
 	/** Scans frame k (0-based) with the current parameters. */
 	FrameScan scan(int k);
-	/** Every frame scanned and compared with its laser; `progress(done, total)`. */
+	/** Every frame scanned and compared with its laser; `progress(done, total)`.
+	 * A frame whose image cannot be read is counted and left out. */
 	Agreement scoreAll(const std::function<void(int, int)>& progress = {});
 	/** Trains the colour model on the open rawlog (its laser-labelled pairs)
 	 * with the current camera, saves it to `histogram` and uses it. */
@@ -91,12 +97,15 @@ class TunerSession
 							   const std::function<void(std::size_t objects_read)>& progress = {});
 	/** Writes every [section] key with its current value into `ini` (the
 	 * session's own by default), keeping the file's comments and other sections. */
-	void saveIni(const std::string& ini = "") const;
+	void saveIni(const std::string& ini = "");
 
    private:
+	void checkImages();
+
 	SessionOptions o_;
 	std::vector<Frame> frames_;
 	RangefinderParams params_;
+	RangefinderParams saved_;  ///< what the ini holds
 	ColourModel colours_;
 	std::unique_ptr<Rangefinder> rf_;
 	int cached_{-1};

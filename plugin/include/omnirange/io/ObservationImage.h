@@ -30,4 +30,7 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs);
  * the camera's size. */
 cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& camera);
 
+/** Throws std::runtime_error naming the image `obs` unless `img` has the camera's size. */
+void requireCameraSize(const cv::Mat& img, const mrpt::obs::CObservationImage& obs, const CameraParams& camera);
+
 }  // namespace omnirange
