@@ -8,6 +8,8 @@
 #include <omnirange/train/CheckerboardCalibration.h>
 #include <omnirange/train/MirrorRim.h>
 
+#include "../common/FactorySample.h"
+
 #include <gtest/gtest.h>
 
 #include <opencv2/ccalib/omnidir.hpp>
@@ -16,12 +18,46 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 using namespace omnirange;
 
 namespace
 {
 const std::string kRealDir = std::string(OMNIRANGE_SOURCE_DIR) + "/../shared/data/real/mei-paraboloid";
+
+/** The real images with these numbers (1..10). */
+std::vector<std::string> realImages(const std::vector<int>& numbers)
+{
+	std::vector<std::string> files;
+	for (const int i : numbers)
+	{
+		char name[32];
+		std::snprintf(name, sizeof name, "/img_para_%03d.pgm", i);
+		files.push_back(kRealDir + name);
+	}
+	return files;
+}
+
+/** omnirange-calibrate with these arguments after the program's name; its exception's text, or "". */
+std::string calibrateFails(std::vector<std::string> args)
+{
+	using omnirange::app::CalibrateApp;
+	args.insert(args.begin(), "omnirange-calibrate");
+	std::vector<const char*> argv;
+	for (const auto& a : args) argv.push_back(a.c_str());
+	try
+	{
+		CalibrateApp app(CalibrateApp::parse(static_cast<int>(argv.size()), argv.data()));
+		if (!app.options().rim_images.empty()) app.runRim();
+		else app.runIntrinsics();
+	}
+	catch (const std::runtime_error& e)
+	{
+		return e.what();
+	}
+	return "";
+}
 
 /** The ten real images calibrated once for every test here. */
 class RealParaboloid : public ::testing::Test
@@ -30,15 +66,9 @@ class RealParaboloid : public ::testing::Test
 	static void SetUpTestSuite()
 	{
 		if (!std::filesystem::exists(kRealDir)) return;
-		std::vector<std::string> files;
-		for (int i = 1; i <= 10; ++i)
-		{
-			char name[32];
-			std::snprintf(name, sizeof name, "/img_para_%03d.pgm", i);
-			files.push_back(kRealDir + name);
-		}
 		// 8 x 6 inner corners, 0.042 m squares (the data's README)
-		calibration_ = new CheckerboardCalibration(calibrateFromCheckerboards(files, CheckerboardOptions{}));
+		calibration_ = new CheckerboardCalibration(
+			calibrateFromCheckerboards(realImages({1, 2, 3, 4, 5, 6, 7, 8, 9, 10}), CheckerboardOptions{}));
 	}
 	static void TearDownTestSuite() { delete calibration_, calibration_ = nullptr; }
 	void SetUp() override
@@ -123,6 +153,59 @@ TEST(MirrorRim, TheDiscsCentreIsThePrincipalPointWithin3Px)
 	EXPECT_THROW(detectMirrorRim({"/nonexistent.png"}), std::runtime_error);
 }
 
+TEST_F(RealParaboloid, TheCentreMovesLittleWhenAGroupOfBoardsIsLeftOut)
+{
+	const CheckerboardCalibration& c = *calibration_;
+	EXPECT_EQ(c.centre_subsets, std::min(c.used(), kCentreSubsets));  // each left-out group converged
+	EXPECT_GT(c.centre_spread, 0.0);
+	EXPECT_LT(c.centre_spread, 3.0);  // the README's reference agrees within 3 px too
+}
+
+TEST(RealParaboloidFewBoards, BoardsThatDoNotPinTheCentreAreDoubtedAndNothingIsSaved)
+{
+	if (!std::filesystem::exists(kRealDir)) GTEST_SKIP() << "no " << kRealDir;
+	const std::string dir = std::filesystem::temp_directory_path() / "omnirange_calib_spread";
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	const std::string ini = dir + "/cam.ini";
+	std::ofstream(ini) << "[rangefinder]\nthreshold = 0.05\n";
+	// The five odd-numbered images: 4 used boards, RMS 0.34 px, and yet the
+	// centre moves 3.1 px without one of them.
+	std::vector<std::string> args{"--save-to", ini};
+	for (const auto& f : realImages({1, 3, 5, 7, 9})) args.insert(args.end(), {"--checkerboard", f});
+	const std::string why = calibrateFails(args);
+	EXPECT_NE(why.find("may be wrong"), std::string::npos) << why;
+	EXPECT_EQ(test::readText(ini), "[rangefinder]\nthreshold = 0.05\n");  // nothing saved
+	// Three used boards: the spread cannot be measured, which is itself a
+	// doubt; --accept saves all the same.
+	args = {"--save-to", ini, "--accept"};
+	for (const auto& f : realImages({1, 2, 3, 4})) args.insert(args.end(), {"--checkerboard", f});
+	testing::internal::CaptureStderr();
+	EXPECT_EQ(calibrateFails(args), "");
+	const std::string warnings = testing::internal::GetCapturedStderr();
+	EXPECT_NE(warnings.find("only 3 boards were used"), std::string::npos) << warnings;
+	EXPECT_NE(test::readText(ini).find("mirror_model = mei"), std::string::npos);
+}
+
+TEST(MirrorRim, ADiscFarFromTheCalibratedCentreIsDoubted)
+{
+	if (!std::filesystem::exists(kRealDir)) GTEST_SKIP() << "no " << kRealDir;
+	const std::string dir = std::filesystem::temp_directory_path() / "omnirange_rim_offset";
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	const auto rimWith = [&](double cx, double cy) {
+		const std::string ini = dir + "/cam.ini";
+		std::ofstream(ini, std::ios::trunc) << "[rangefinder]\nimage_width = 1280\nimage_height = 1024\nmirror_model = mei\n"
+											   "xi = 1.44\ngamma = 365\ncx = " << cx << "\ncy = " << cy << "\n";
+		std::vector<std::string> args{"-c", ini};
+		for (const auto& f : realImages({1, 4, 8})) args.insert(args.end(), {"--rim", f});
+		return calibrateFails(args);
+	};
+	EXPECT_EQ(rimWith(643.5, 521.1), "");  // the checkerboards' centre: the disc agrees
+	const std::string why = rimWith(600.0, 521.1);
+	EXPECT_NE(why.find("may be wrong"), std::string::npos) << why;
+}
+
 TEST(CheckerboardCalibration, TooFewBoardsOrAnUnreadableImageIsAnError)
 {
 	EXPECT_THROW(calibrateFromCheckerboards({"/nonexistent.pgm"}), std::runtime_error);
@@ -174,13 +257,7 @@ TEST(RealParaboloidMiscount, ABoardGivenOneCornerShortIsFoundAsPartOfTheLargerOn
 	// user coming from them gives one less... or one more; the smaller is
 	// found inside the real board, and the calibration must say so.
 	if (!std::filesystem::exists(kRealDir)) GTEST_SKIP() << "no " << kRealDir;
-	std::vector<std::string> files;
-	for (int i = 1; i <= 4; ++i)
-	{
-		char name[32];
-		std::snprintf(name, sizeof name, "/img_para_%03d.pgm", i);
-		files.push_back(kRealDir + name);
-	}
+	const std::vector<std::string> files = realImages({1, 2, 3, 4});
 	CheckerboardOptions o;
 	o.columns = 7, o.rows = 5;
 	const CheckerboardCalibration c = calibrateFromCheckerboards(files, o);

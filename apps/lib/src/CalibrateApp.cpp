@@ -19,6 +19,14 @@ namespace omnirange::app
 {
 namespace
 {
+// Past these, a calibration is doubted: a warning, and nothing saved without --accept.
+constexpr double kMaxRms = 1.0;  // [px] reprojection error over the boards
+constexpr double kMaxCentreSpread = 3.0;  // [px] the principal point's move without a group of boards
+constexpr double kMaxEllipticity = 0.1;  // of --rim's disc
+// [px] --rim's centre from a calibrated one (mei, ocamcalib) in the ini: the real paraboloid's
+// disc and its checkerboard centre agree within 3 px; the rest is room for a rim partly hidden.
+constexpr double kMaxRimOffset = 10.0;
+
 /** A calibrated camera's keys, each printed by the ini's own table, into
  * [section] of `ini` (the rest of the file kept). */
 void saveCameraKeys(const std::string& ini, const std::string& section, const CameraParams& cam,
@@ -187,17 +195,28 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 				c.images.size(), c.used(), c.rms);
 	std::printf("fx %.2f  fy %.2f  skew %.3f  cx %.2f  cy %.2f px;  xi %.4f;  k1 %.4f  k2 %.4f  p1 %.5f  p2 %.5f\n",
 				c.K(0, 0), c.K(1, 1), c.K(0, 1), c.K(0, 2), c.K(1, 2), c.xi, c.D[0], c.D[1], c.D[2], c.D[3]);
+	if (c.centre_subsets > 0)
+		std::printf("the centre moves up to %.2f px when a group of boards is left out (%d calibrations)\n",
+					c.centre_spread, c.centre_subsets);
+
 	std::vector<std::string> doubts;
 	for (const auto& i : c.images)
 		if (i.part_of_larger)
 			doubts.push_back(i.file + ": a board one corner wider or taller is found there too: is --board " +
 							 std::to_string(o_.board.columns) + "x" + std::to_string(o_.board.rows) +
 							 " the count of inner corners? (OCamCalib and MATLAB count squares, one more each way)");
-	if (c.rms > 1.0)
+	if (c.rms > kMaxRms)
 		doubts.push_back("the RMS reprojection error, " + formatDouble(std::round(c.rms * 100) / 100) +
-						 " px, is over 1 px: is --board right? It counts inner corners (" +
+						 " px, is over " + formatDouble(kMaxRms) + " px: is --board right? It counts inner corners (" +
 						 std::to_string(o_.board.columns) + "x" + std::to_string(o_.board.rows) +
 						 " here); OCamCalib and MATLAB count squares, one more each way");
+	if (c.centre_subsets == 0)
+		doubts.push_back("only " + std::to_string(c.used()) +
+						 " boards were used: too few to tell whether they pin the centre down; add boards");
+	if (c.centre_spread > kMaxCentreSpread)
+		doubts.push_back("the centre moves " + formatDouble(std::round(c.centre_spread * 10) / 10) +
+						 " px when a group of boards is left out (over " + formatDouble(kMaxCentreSpread) +
+						 " px): the boards do not pin it down; add boards spread around the mirror");
 	requireSure(doubts);
 	if (!o_.intrinsics_output.empty()) writeFileAtomically(o_.intrinsics_output, c.yaml());
 	if (!o_.save_to.empty())
@@ -229,9 +248,18 @@ MirrorRim CalibrateApp::runRim()
 		rim.cy + rim.radius > rim.image_height)
 		doubts.push_back("the disc found (radius " + formatDouble(std::round(rim.radius)) +
 						 " px) reaches past the image: the rim is not all in view, or what was found is not the mirror");
-	if (rim.ellipticity > 0.1)
+	if (rim.ellipticity > kMaxEllipticity)
 		doubts.push_back("the disc found is not round (ellipticity " + formatDouble(std::round(rim.ellipticity * 100) / 100) +
-						 " > 0.1): its centre is not the mirror's");
+						 " > " + formatDouble(kMaxEllipticity) + "): its centre is not the mirror's");
+	// A centre the checkerboards (or OCamCalib) calibrated is the better one: say if the disc disagrees.
+	const std::string ini = !o_.ini.empty() ? o_.ini : std::filesystem::exists(o_.save_to) ? o_.save_to : "";
+	if (!ini.empty())
+		if (const CameraParams cam = loadRangefinderIni(ini, o_.section, *this).camera;
+			cam.mirror_model == MirrorModel::Mei || cam.mirror_model == MirrorModel::OCamCalib)
+			if (const double off = std::hypot(rim.cx - cam.cx, rim.cy - cam.cy); off > kMaxRimOffset)
+				doubts.push_back("the disc's centre is " + formatDouble(std::round(off)) + " px from the calibrated centre (" +
+								 formatDouble(cam.cx) + ", " + formatDouble(cam.cy) + ") of " + ini +
+								 ": the rim is not the mirror's, or the camera moved since it was calibrated");
 	requireSure(doubts);
 	if (!o_.save_to.empty())
 	{

@@ -75,6 +75,44 @@ std::string CheckerboardCalibration::yaml() const
 	return fs.releaseAndGetString();
 }
 
+namespace
+{
+using Boards3d = std::vector<std::vector<cv::Vec3d>>;
+using Boards2d = std::vector<std::vector<cv::Vec2d>>;
+
+/** The principal point's spread over calibrations that each leave out one
+ * group of the `used` boards (the groups: every k-th, so each run keeps
+ * boards from all over the sequence). Sets c.centre_spread and c.centre_subsets. */
+void measureCentreSpread(const Boards3d& object, const Boards2d& image, const std::vector<int>& used,
+						 const cv::TermCriteria& stop, CheckerboardCalibration& c)
+{
+	const int n = static_cast<int>(used.size());
+	if (n < 4) return;  // leaving one out must leave the 3 a calibration needs
+	const int groups = std::min(n, kCentreSubsets);
+	for (int g = 0; g < groups; ++g)
+	{
+		temporaries::setActivity("calibrating without board group " + std::to_string(g + 1));
+		Boards3d o;
+		Boards2d i;
+		for (int k = 0; k < n; ++k)
+			if (k % groups != g) o.push_back(object[used[k]]), i.push_back(image[used[k]]);
+		cv::Mat K, D, xi, idx;
+		std::vector<cv::Mat> rvecs, tvecs;
+		try
+		{
+			cv::omnidir::calibrate(o, i, c.image_size, K, xi, D, rvecs, tvecs, 0, stop, idx);
+		}
+		catch (const cv::Exception&)
+		{
+			continue;  // a subset it cannot start from: no centre to compare
+		}
+		const double dx = K.at<double>(0, 2) - c.K(0, 2), dy = K.at<double>(1, 2) - c.K(1, 2);
+		c.centre_spread = std::max(c.centre_spread, std::hypot(dx, dy));
+		++c.centre_subsets;
+	}
+}
+}  // namespace
+
 CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string>& files, const CheckerboardOptions& o)
 {
 	if (o.columns < 2 || o.rows < 2 || !(o.square > 0)) throw std::invalid_argument("the board needs >= 2x2 inner corners and a square > 0 m");
@@ -125,9 +163,8 @@ CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string
 
 	cv::Mat K, D, xi, idx;
 	std::vector<cv::Mat> rvecs, tvecs;
-	out.rms = cv::omnidir::calibrate(object, image, out.image_size, K, xi, D, rvecs, tvecs, 0,
-									 cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, o.max_iterations, 1e-8),
-									 idx);
+	const cv::TermCriteria stop(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, o.max_iterations, 1e-8);
+	out.rms = cv::omnidir::calibrate(object, image, out.image_size, K, xi, D, rvecs, tvecs, 0, stop, idx);
 	out.K = cv::Matx33d(K);
 	out.xi = xi.at<double>(0);
 	out.D = cv::Vec4d(D);
@@ -147,6 +184,7 @@ CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string
 		info.used = true;
 		info.rms = std::sqrt(sum / static_cast<double>(projected.size()));
 	}
+	measureCentreSpread(object, image, std::vector<int>(idx.begin<int>(), idx.end<int>()), stop, out);
 	return out;
 }
 

@@ -41,6 +41,9 @@ struct CheckerboardImage
 	bool part_of_larger{false};
 };
 
+/** At most this many calibrations again, each without one group of boards, for the centre's spread. */
+inline constexpr int kCentreSubsets = 8;
+
 struct CheckerboardCalibration
 {
 	std::vector<CheckerboardImage> images;
@@ -49,6 +52,12 @@ struct CheckerboardCalibration
 	double xi{0};
 	cv::Vec4d D;  ///< k1, k2, p1, p2
 	double rms{0};  ///< [px] over the used images
+	/** [px] How far the principal point moves when the calibration is run
+	 * again without one used board (or one group of them, at most
+	 * kCentreSubsets runs): the farthest such centre from the whole set's.
+	 * A small RMS with a large spread is a centre the boards do not pin down. */
+	double centre_spread{0};
+	int centre_subsets{0};  ///< how many such runs converged (0: fewer than 4 boards used, not measured)
 	int found() const;
 	int used() const;
 	/** The result as OpenCV's YAML (the keys cv::omnidir users expect: camera_matrix, xi, distortion). */
