@@ -7,6 +7,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <omnirange_apps/CommandLine.h>
+
 #include <omnirange/io/OptionsTable.h>
 #include <omnirange/io/OutputRule.h>
 
@@ -72,7 +74,7 @@ void TunerFrame::bindGuarded(wxEvtHandler* source, const wxEventTypeTag<Event>& 
 		}
 		catch (const std::exception& ex)
 		{
-			status(wxString::FromUTF8(ex.what()), Say::Error);
+			status(wxString::FromUTF8(omnirange::app::errorText(ex)), Say::Error);
 		}
 	});
 }
@@ -266,7 +268,7 @@ bool TunerFrame::applyControls()
 	catch (const std::exception& e)
 	{
 		controlsFromParams();  // back to the values in force, visibly
-		status(wxString::FromUTF8(std::string("refused: ") + e.what() + "; the values in force are shown again"),
+		status(wxString::FromUTF8(std::string("refused: ") + omnirange::app::errorText(e) + "; the values in force are shown again"),
 			   Say::Error);
 		return false;
 	}
@@ -323,7 +325,7 @@ void TunerFrame::refresh()
 	}
 	catch (const std::exception& e)
 	{
-		return showUnreadable(e.what());
+		return showUnreadable(omnirange::app::errorText(e));
 	}
 	const Rangefinder& rf = s_.rangefinder();
 	image_->SetBitmap(toBitmap(tuner::drawOmniOverlay(scan, rf, overlay_), kImageWidth));
@@ -386,7 +388,7 @@ bool TunerFrame::save()
 	}
 	catch (const std::exception& e)
 	{
-		status(wxString::FromUTF8(e.what()), Say::Error);
+		status(wxString::FromUTF8(omnirange::app::errorText(e)), Say::Error);
 		return false;
 	}
 	status("saved [" + s_.options().section + "] to " + save_to_);
@@ -443,7 +445,7 @@ void TunerFrame::train()
 	}
 	catch (const std::exception& e)
 	{
-		return status(wxString::FromUTF8(e.what()), Say::Error);
+		return status(wxString::FromUTF8(omnirange::app::errorText(e)), Say::Error);
 	}
 	rangefinder_changed_ = true;
 	refresh();

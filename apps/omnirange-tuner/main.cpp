@@ -64,7 +64,7 @@ class TunerApp : public wxApp
 		}
 		catch (const std::exception& e)
 		{
-			std::cerr << "omnirange-tuner: error: " << e.what() << std::endl;
+			std::cerr << "omnirange-tuner: error: " << omnirange::app::errorText(e) << std::endl;
 		}
 		catch (...)
 		{

@@ -24,6 +24,8 @@
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <mrpt/core/exceptions.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -595,6 +597,36 @@ TEST(AppClasses, OutOfMemoryIsOneLineNamingWhatWasBeingRead)
 	const std::string err = testing::internal::GetCapturedStderr();
 	EXPECT_EQ(code, 1);
 	EXPECT_EQ(err, "omnirange-test: error: out of memory while reading rawlog 'big.rawlog'\n");
+}
+
+TEST(AppClasses, OpenCVsAndMRPTsErrorsAreOneLineWithoutPathsOrCallStacks)
+{
+	// OpenCV's own text: version, source path and line, code, message, function.
+	try
+	{
+		cv::Mat a(2, 2, CV_8U), b(3, 3, CV_8U);
+		cv::Mat c = a + b;
+		ADD_FAILURE() << "OpenCV added matrices of two sizes";
+	}
+	catch (const cv::Exception& e)
+	{
+		const std::string text = errorText(e);
+		EXPECT_EQ(text.rfind("OpenCV: ", 0), 0u) << text;
+		EXPECT_NE(text.find("(in arithm_op)"), std::string::npos) << text;
+		EXPECT_EQ(text.find(".cpp"), std::string::npos) << text;
+		EXPECT_EQ(text.find('\n'), std::string::npos) << text;
+	}
+	// MRPT's: a header, the message, its location and a call stack of many lines.
+	try
+	{
+		THROW_EXCEPTION("the sensor 'X' is unknown");
+	}
+	catch (const std::exception& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("Call stack"), std::string::npos);  // what MRPT gives
+		EXPECT_EQ(errorText(e), "MRPT: the sensor 'X' is unknown");
+	}
+	EXPECT_EQ(errorText(std::runtime_error("two\nlines")), "two lines");
 }
 
 TEST(AppClasses, ARimDiscPastTheImageOrFarFromRoundIsRefusedUnlessAccepted)

@@ -5,7 +5,10 @@
 #include <omnirange/io/Temporaries.h>
 
 
+#include <opencv2/core.hpp>
+
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace omnirange::app
@@ -17,6 +20,21 @@ std::string oneLine(std::string s)
 	for (auto& c : s)
 		if (c == '\n' || c == '\r') c = ' ';
 	return s;
+}
+
+/** MRPT's exception text ("==== MRPT exception ====", "Message: ...",
+ * "Location: ...", a call stack) as its messages, innermost last. */
+std::string mrptMessages(const std::string& text)
+{
+	std::istringstream in(text);
+	std::string messages;
+	for (std::string line; std::getline(in, line);)
+		if (line.rfind("Message:", 0) == 0)
+		{
+			const auto from = line.find_first_not_of(' ', 8);
+			if (from != std::string::npos) messages += (messages.empty() ? "" : "; ") + line.substr(from);
+		}
+	return messages;
 }
 
 /** TCLAP output whose failure message is one line instead of the usage. */
@@ -61,6 +79,16 @@ void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv)
 	if (!ok) throw ExitRequest{out.failed ? 2 : 0};
 }
 
+std::string errorText(const std::exception& e)
+{
+	if (const auto* cv_error = dynamic_cast<const cv::Exception*>(&e))
+		return oneLine("OpenCV: " + cv_error->err + (cv_error->func.empty() ? "" : " (in " + cv_error->func + ")"));
+	const std::string text = e.what();
+	if (text.find("==== MRPT exception ====") != std::string::npos)
+		if (const std::string m = mrptMessages(text); !m.empty()) return oneLine("MRPT: " + m);
+	return oneLine(text);
+}
+
 int runApp(const std::string& name, const std::function<void()>& body)
 {
 	temporaries::removeOnInterrupt();
@@ -83,7 +111,7 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	}
 	catch (const std::exception& e)
 	{
-		std::cerr << name << ": error: " << oneLine(e.what()) << "\n";
+		std::cerr << name << ": error: " << errorText(e) << "\n";
 		return 1;
 	}
 }

@@ -49,6 +49,11 @@ struct ForceArg
  * one line of stderr), throws ExitRequest with code 0 or 2. */
 void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv);
 
+/** An exception's text as one line: OpenCV's as its message and function
+ * (no source path or version), MRPT's as its messages without the call
+ * stack, any other with its line breaks made spaces. */
+std::string errorText(const std::exception& e);
+
 /** Runs `body`; returns 0, ExitRequest's code, or 1 after printing
  * "NAME: error: MESSAGE" on one line for any exception. */
 int runApp(const std::string& name, const std::function<void()>& body);
