@@ -71,7 +71,7 @@ problems=0
 n=0
 echo "| # | bad input | app | exit | stderr (first line) | lines | output left | inputs kept | verdict |"
 echo "|---|---|---|---|---|---|---|---|---|"
-# case DESCRIPTION EXPECT(error|warn:TEXT|ok) OUTPUT -- COMMAND...
+# case DESCRIPTION EXPECT(error|error:TEXT|libexit:TEXT|warn:TEXT) OUTPUT -- COMMAND...
 run_case() {
   local what="$1" expect="$2" out="$3"; shift 4
   n=$((n + 1))
@@ -90,6 +90,8 @@ run_case() {
   kept="yes"; [ "$before" == "$after" ] || kept="NO"
   case "$expect" in
     error) { [ $code -eq 1 ] || [ $code -eq 2 ]; } && [ "$lines" -eq 1 ] && [ "$left" == "no" ] || verdict="PROBLEM" ;;
+    # The same, and the line says this (the reason, not a later failure).
+    error:*) [ $code -eq 1 ] && [ "$lines" -eq 1 ] && [ "$left" == "no" ] && grep -q "${expect#error:}" stderr.txt || verdict="PROBLEM" ;;
     # A library that calls exit() (libjpeg inside MRPT): its own line, then ours naming the file.
     libexit:*) [ $code -eq 1 ] && [ "$lines" -le 2 ] && [ "$left" == "no" ] && tail -1 stderr.txt | grep -q "${expect#libexit:}" || verdict="PROBLEM" ;;
     warn:*) [ $code -eq 0 ] && cat stdout.txt stderr.txt | grep -q "${expect#warn:}" || verdict="PROBLEM" ;;
@@ -221,6 +223,15 @@ sed 's/^maxIterations *=.*/maxIterations = abc/' "$src/ini/icp-slam-omniscan.ini
 run_case "slam: [ICP] maxIterations = abc" error slam_out -- "$apps/omnirange-slam" -q -i s.rawlog -c icp_abc.ini -o slam_out
 sed 's/^thresholdDist *=.*/thresholdDist = 0.2m/' "$src/ini/icp-slam-omniscan.ini" > icp_unit.ini
 run_case "slam: [ICP] thresholdDist = 0.2m" error slam_out -- "$apps/omnirange-slam" -q -i s.rawlog -c icp_unit.ini -o slam_out
+# The tuner: what would make every frame fail is one line before any window (no display needed).
+run_case "tuner: the rawlog's images folder is missing" "error:images folder" none.out -- "$apps/omnirange-tuner" -i noimages.rawlog -c f.ini -H floor.hist
+run_case "tuner: images of another size than the ini's camera" "error:but the camera is 640x768" none.out -- "$apps/omnirange-tuner" -i s.rawlog -c width_small.ini -H floor.hist
+# Calibration that is not sure says so and saves nothing (real images, made by others).
+real="$src/../shared/data/real/mei-paraboloid"
+if [ -d "$real" ]; then
+  run_case "calibrate: 5 boards that leave the centre 3.1 px loose" "error:may be wrong" cal.ini -- "$apps/omnirange-calibrate" -q \
+    --save-to cal.ini $(for i in 1 3 5 7 9; do echo --checkerboard "$real/img_para_00$i.pgm"; done)
+fi
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
 

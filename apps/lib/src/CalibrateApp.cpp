@@ -230,11 +230,15 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 
 void CalibrateApp::requireSure(const std::vector<std::string>& doubts) const
 {
-	for (const auto& d : doubts) std::fprintf(stderr, "omnirange-calibrate: warning: %s\n", d.c_str());
-	if (doubts.empty() || o_.accept) return;
-	throw std::runtime_error("the calibration may be wrong (" + std::to_string(doubts.size()) +
-							 (doubts.size() == 1 ? " warning" : " warnings") +
-							 " above): nothing saved; --accept to save it all the same");
+	if (doubts.empty()) return;
+	if (o_.accept)
+	{
+		for (const auto& d : doubts) std::fprintf(stderr, "omnirange-calibrate: warning: %s\n", d.c_str());
+		return;
+	}
+	std::string all;
+	for (const auto& d : doubts) all += (all.empty() ? "" : "; ") + d;
+	throw std::runtime_error("the calibration may be wrong: " + all + ". Nothing saved; --accept saves it all the same");
 }
 
 MirrorRim CalibrateApp::runRim()

@@ -50,8 +50,9 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	const OrientationFit& orientation() const { return orientation_; }
 
    private:
-	/** Each doubt as a warning on stderr; then, unless --accept, an error:
-	 * nothing is saved from a calibration that says it may be wrong. */
+	/** Unless --accept, an error naming every doubt (one line): nothing is
+	 * saved from a calibration that says it may be wrong. With --accept,
+	 * each doubt is a warning on stderr. */
 	void requireSure(const std::vector<std::string>& doubts) const;
 	Options o_;
 	OrientationFit orientation_;
