@@ -292,6 +292,33 @@ TEST(ParameterLearning, TheIniNamesTheBestInTheOtherColourSpace)
 	EXPECT_EQ(learnedIni(r).find("another colour space"), std::string::npos);
 }
 
+TEST(ParameterLearning, TheIniNamesTheNearestRivalsAndHowFarBehindThey)
+{
+	LearningResult r;
+	const auto candidate = [](double threshold, double score) {
+		LearnedCandidate c;
+		c.bins = 13, c.threshold = threshold, c.score = score;
+		return c;
+	};
+	r.tried = {candidate(0.005, 0.2580), candidate(0.04, 0.2610), candidate(0.01, 0.2585),
+			   candidate(0.08, 0.3000), candidate(0.02, 0.2599)};
+	r.best = r.tried[0];
+	const auto rivals = nearestRivals(r);
+	ASSERT_EQ(rivals.size(), 3u);  // the winner is not its own rival; the worst is left out
+	EXPECT_EQ(rivals[0].threshold, 0.01);
+	EXPECT_EQ(rivals[1].threshold, 0.02);
+	EXPECT_EQ(rivals[2].threshold, 0.04);
+	const std::string ini = learnedIni(r);
+	const auto line = ini.find(";   +0.5 mm: colour space RGB, 13 bins, light change 0, threshold 0.01,");
+	ASSERT_NE(line, std::string::npos) << ini;
+	EXPECT_LT(ini.find("; The nearest rivals"), line);
+	EXPECT_NE(ini.find(";   +3.0 mm: "), std::string::npos) << ini;
+	EXPECT_EQ(ini.find(";   +42.0 mm: "), std::string::npos) << ini;
+	EXPECT_LT(line, ini.find("[rangefinder]"));
+	r.tried = {r.best};
+	EXPECT_EQ(learnedIni(r).find("nearest rivals"), std::string::npos);
+}
+
 TEST(ParameterLearning, AFilterWindowTheImageCannotHoldIsNoCandidate)
 {
 	// A camera whose centre sits high in the frame leaves room above the

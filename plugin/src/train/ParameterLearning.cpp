@@ -492,6 +492,31 @@ std::optional<LearnedCandidate> bestInOtherSpace(const LearningResult& r)
 	return bestWhere(r.tried, [&](ColourSpace s) { return s != r.best.space; });
 }
 
+std::vector<LearnedCandidate> nearestRivals(const LearningResult& r, std::size_t n)
+{
+	std::vector<LearnedCandidate> rivals;
+	for (const auto& c : r.tried)
+		if (describe(c) != describe(r.best)) rivals.push_back(c);
+	const std::size_t k = std::min(n, rivals.size());
+	std::partial_sort(rivals.begin(), rivals.begin() + k, rivals.end(),
+					  [](const LearnedCandidate& a, const LearnedCandidate& b) { return a.score < b.score; });
+	rivals.resize(k);
+	return rivals;
+}
+
+/** The learned ini's lines on the nearest rivals. */
+std::string rivalsComment(const LearningResult& r)
+{
+	std::string out;
+	for (const auto& c : nearestRivals(r))
+	{
+		char line[400];
+		std::snprintf(line, sizeof line, ";   %+.1f mm: %s\n", 1000 * (c.score - r.best.score), describe(c).c_str());
+		out += line;
+	}
+	return out.empty() ? out : "; The nearest rivals, by how much more (or less) their mean error was:\n" + out;
+}
+
 std::string poorLearningWarning(const LearningResult& r)
 {
 	if (!(r.best.score > kPoorLearningScore)) return {};
@@ -544,6 +569,7 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 					  r.edge_bias_score, kept ? "kept (edge_bias below)" : "not kept, it did not lower the winner's");
 		other_space += line;
 	}
+	other_space += rivalsComment(r);
 	const std::string warning = poorLearningWarning(r);
 	return head + other_space + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" +
 		   r.params.asIni();

@@ -200,6 +200,10 @@ std::string poorLearningWarning(const LearningResult& r);
  * toss for the held-aside frames (the meeting room: 14 points,
  * docs/results.md); learnedIni names it so a user can check both. */
 std::optional<LearnedCandidate> bestInOtherSpace(const LearningResult& r);
+/** The `n` lowest-scoring candidates after the winner, in order: how near
+ * its rivals came (a winner a few millimetres ahead of a rival with another
+ * threshold is a choice the held-aside frames barely made). */
+std::vector<LearnedCandidate> nearestRivals(const LearningResult& r, std::size_t n = 3);
 
 /** Whether `a` scores no worse than `b` beyond the held-aside frames'
  * noise: over the frames both were scored on, the mean of a's error minus
