@@ -232,6 +232,28 @@ if [ -d "$real" ]; then
   run_case "calibrate: 5 boards that leave the centre 3.1 px loose" "error:may be wrong" cal.ini -- "$apps/omnirange-calibrate" -q \
     --save-to cal.ini $(for i in 1 3 5 7 9; do echo --checkerboard "$real/img_para_00$i.pgm"; done)
 fi
+# What an independent hostile run found: each class once.
+run_case "tuner: --save-to the histogram it reads" "error:is the input" none.out -- "$apps/omnirange-tuner" -i s.rawlog -c f.ini -H floor.hist --save-to floor.hist
+run_case "train: --learn into the base of the -c ini" "error:is the input" none.out -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o other.hist --learn experiment-base.ini
+run_case "slam: -o the input's images folder" "error:is the input" none.out -- "$apps/omnirange-slam" -q -i s.rawlog -c "$src/ini/icp-slam-omniscan.ini" -o s_Images
+cp s.rawlog ro.rawlog && chmod 444 ro.rawlog
+run_case "scan: -o a read-only rawlog" "error:read-only" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o ro.rawlog
+ln -f s.rawlog hard.rawlog
+run_case "scan: -o a hard link to its input" "error:is the input" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o hard.rawlog
+run_case "train: --learn and --learn-candidates the same file" "error:same place" same.ini -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o other.hist --learn same.ini --learn-candidates same.ini
+variant no_equals 'threshold 0.05'
+run_case "scan: an ini line without '='" "error:is not 'key = value'" out.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c no_equals.ini -H floor.hist -o out.rawlog
+variant case_twice 'threshold = 0.05' 'Threshold = 0.2'
+run_case "scan: a key repeated in another case" "error:repeats" out.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c case_twice.ini -H floor.hist -o out.rawlog
+: > empty_robot.ini
+run_case "sim: an empty robot ini" "error:holds no key" o.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -c empty_robot.ini -n 2 -o o.rawlog
+{ printf 'P5\n12000 10000\n255\n'; head -c 1000 /dev/zero; } > big.pgm
+run_case "calibrate: a PGM of 12000 x 10000 px" "error:more than 100 megapixels" none.out -- "$apps/omnirange-calibrate" -q --rim big.pgm
+run_case "accuracy: -o . (a folder, not a prefix)" "error:is a folder" none.out -- "$apps/omnirange-accuracy" -q -i s.rawlog -o .
+printf '100.0, 1e300, 0, 0\n100.4, 1, 0, 0\n' > imp_odo_far.csv
+run_case "import: odometry at x = 1e300" "error:odometry at time" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry imp_odo_far.csv -o imp.rawlog
+printf '100.0, 0x10, 2, 3\n100.4, 1, 2, 3\n' > imp_hexrange.csv
+run_case "import: a laser range written 0x10" "error:hexadecimal" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_hexrange.csv -o imp.rawlog
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
 

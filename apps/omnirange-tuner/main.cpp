@@ -6,6 +6,8 @@
 
 #include <omnirange_apps/CommandLine.h>
 
+#include <omnirange/io/OutputRule.h>
+
 #include <wx/app.h>
 
 #include <iostream>
@@ -85,6 +87,10 @@ int main(int argc, char** argv)
 	return omnirange::app::runApp("omnirange-tuner", [&] {
 		g_options = parse(argc, argv);
 		if (g_options.frame < 0) throw std::invalid_argument("frame must be >= 0");
+		// Save writes into the ini (the -c one by default), never into what is read.
+		const auto& in = g_options.session;
+		omnirange::requireOutputAllowed(g_options.save_to, omnirange::OutputKind::Ini, "omnirange-tuner",
+										{in.rawlog, in.histogram});
 		g_session = std::make_unique<omnirange::tuner::TunerSession>(g_options.session);
 		if (g_options.frame >= g_session->frames())
 			throw std::invalid_argument("frame " + std::to_string(g_options.frame) + " is past the rawlog's " +

@@ -199,7 +199,10 @@ TEST(AppClasses, CalibrateSavesTheCheckerboardsMeiModelIntoTheIni)
 	o.save_to = dir + "/my.ini";
 	std::ofstream(o.save_to) << "[rangefinder]\n; [-] kept\nthreshold = 0.075\nR = 192\n";
 	o.verbosity = mrpt::system::LVL_ERROR;
+	o.accept = true;  // two of the four boards are used: too few to measure the centre's spread
+	testing::internal::CaptureStderr();
 	const CheckerboardCalibration c = CalibrateApp(o).runIntrinsics();
+	EXPECT_NE(testing::internal::GetCapturedStderr().find("only 2 boards were used"), std::string::npos);
 	mrpt::system::COutputLogger quiet("test");
 	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
 	const RangefinderParams saved = loadRangefinderIni(o.save_to, "rangefinder", quiet);

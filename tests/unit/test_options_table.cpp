@@ -97,7 +97,7 @@ TEST(OptionsTable, ARepeatedKeyIsAnErrorNamingTheLine)
 	}
 	catch (const std::runtime_error& e)
 	{
-		EXPECT_NE(std::string(e.what()).find("repeated.ini:9: key 'N' repeats in [rangefinder] (first at line 3)"),
+		EXPECT_NE(std::string(e.what()).find("repeated.ini:9: key 'N' repeats in [rangefinder] (first at line 3"),
 				  std::string::npos)
 			<< e.what();
 	}

@@ -105,6 +105,53 @@ TEST(OutputRule, NoOutputIsHoldsOrSitsInAnInputEvenWithForce)
 	EXPECT_EQ(refusal(d + "/elsewhere.rawlog", OutputKind::Rawlog, {d + "/data/log.csv", d + "/data/images"}), "");
 }
 
+TEST(OutputRule, WhatAnInputBringsIsAnInputToo)
+{
+	const std::string d = fresh("brought");
+	// An ini's base, down the chain.
+	write(d + "/b2.ini", "[rangefinder]\nthreshold = 0.1\n");
+	write(d + "/b.ini", "base = b2.ini\n[rangefinder]\nN = 10\n");
+	write(d + "/cam.ini", "; mine\nbase = b.ini\n[rangefinder]\nK = 4\n");
+	EXPECT_NE(refusal(d + "/b.ini", OutputKind::Ini, {d + "/cam.ini"}, true).find("is the input"), std::string::npos);
+	EXPECT_NE(refusal(d + "/b2.ini", OutputKind::Ini, {d + "/cam.ini"}, true).find("is the input"), std::string::npos);
+	// A rawlog's images folder, even as a link named like it.
+	write(d + "/s.rawlog", std::string("\x1f\x8b", 2));
+	fs::create_directory(d + "/elsewhere");
+	write(d + "/elsewhere/1.jpg", "jpg");
+	fs::create_directory_symlink(d + "/elsewhere", d + "/s_Images");
+	EXPECT_NE(refusal(d + "/s_Images", OutputKind::Folder, {d + "/s.rawlog"}, true), "");
+	EXPECT_NE(refusal(d + "/s_Images/acc_pairs.csv", OutputKind::Text, {d + "/s.rawlog"}, true), "");
+	// A hard link to an input is the input.
+	fs::create_hard_link(d + "/s.rawlog", d + "/hard.rawlog");
+	EXPECT_NE(refusal(d + "/hard.rawlog", OutputKind::Rawlog, {d + "/s.rawlog"}, true).find("is the input"),
+			  std::string::npos);
+	EXPECT_EQ(refusal(d + "/other.ini", OutputKind::Ini, {d + "/cam.ini", d + "/s.rawlog"}), "");
+}
+
+TEST(OutputRule, ALinkedFolderAReadOnlyFileAndTwoOutputsInOnePlaceAreRefused)
+{
+	const std::string d = fresh("refused");
+	fs::create_directory(d + "/mine");
+	write(d + "/mine/notes.txt", "mine");
+	fs::create_directory_symlink(d + "/mine", d + "/report");
+	EXPECT_NE(refusal(d + "/report", OutputKind::Folder, {}).find("symbolic link"), std::string::npos);
+	EXPECT_EQ(refusal(d + "/report", OutputKind::Folder, {}, true), "");  // --force replaces the link only
+	write(d + "/locked.rawlog", std::string("\x1f\x8b", 2));
+	fs::permissions(d + "/locked.rawlog", fs::perms::owner_read);
+	EXPECT_NE(refusal(d + "/locked.rawlog", OutputKind::Rawlog, {}, true).find("read-only"), std::string::npos);
+	try
+	{
+		requireOutputsAllowed({{d + "/same.ini", OutputKind::Ini}, {d + "/./same.ini", OutputKind::Text}}, "omnirange-test", {});
+		ADD_FAILURE() << "two outputs in one place";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("in the same place"), std::string::npos) << e.what();
+	}
+	EXPECT_NO_THROW(requireOutputsAllowed({{d + "/a.ini", OutputKind::Ini}, {d + "/b.csv", OutputKind::Text}, {"", OutputKind::Text}},
+										  "omnirange-test", {}));
+}
+
 TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 {
 	const std::string d = fresh("replace");
@@ -121,17 +168,31 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	EXPECT_EQ(read(d + "/report/new.md"), "new");
 
 	// A run killed between its two renames: the old copy aside, no output. Process 999999 is not running.
+	markOutputFolder(d + "/report", "omnirange-test");
 	fs::rename(d + "/report", d + "/report.old-999999");
 	fs::create_directory(d + "/report.staging-999998");
 	markOutputFolder(d + "/report.staging-999998", "omnirange-test");
-	write(d + "/report.tmp-999997", "half");
-	fs::create_directory(d + "/report.staging-999996");  // no marker: not ours, kept
+	// Names a killed run could have left, but not ours (no marker; a file beside a folder output): kept.
+	write(d + "/report.tmp-999997", "a user's notes");
+	fs::create_directory(d + "/report.staging-999996");
+	fs::create_directory(d + "/report.old-999995");
 	recoverLeftoversOf(d + "/report");
 	EXPECT_EQ(read(d + "/report/new.md"), "new");  // put back
 	EXPECT_FALSE(fs::exists(d + "/report.old-999999"));
 	EXPECT_FALSE(fs::exists(d + "/report.staging-999998"));
-	EXPECT_FALSE(fs::exists(d + "/report.tmp-999997"));
+	EXPECT_EQ(read(d + "/report.tmp-999997"), "a user's notes");
 	EXPECT_TRUE(fs::exists(d + "/report.staging-999996"));
+	EXPECT_TRUE(fs::exists(d + "/report.old-999995"));
+
+	// A file output's temporaries: an empty one (killed before it wrote) and
+	// one of its kind are removed; another kind is a user's and stays.
+	write(d + "/x.rawlog.tmp-999994", "");
+	write(d + "/x.rawlog.tmp-999993", std::string("\x1f\x8b", 2) + "gzip");
+	write(d + "/x.rawlog.tmp-999992", "a user's text");
+	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
+	EXPECT_FALSE(fs::exists(d + "/x.rawlog.tmp-999994"));
+	EXPECT_FALSE(fs::exists(d + "/x.rawlog.tmp-999993"));
+	EXPECT_TRUE(fs::exists(d + "/x.rawlog.tmp-999992"));
 }
 
 TEST(OutputRule, AFileIsWrittenThroughItsLinkKeepsItsModeAndAReadOnlyOneIsKept)

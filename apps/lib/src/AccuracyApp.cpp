@@ -7,6 +7,8 @@
 #include <omnirange/io/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
 
+#include <filesystem>
+
 namespace omnirange::app
 {
 AccuracyApp::Options AccuracyApp::parse(int argc, const char* const* argv)
@@ -25,6 +27,11 @@ AccuracyApp::Options AccuracyApp::parse(int argc, const char* const* argv)
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	o.input = in.getValue(), o.output = out.getValue(), o.title = title.getValue();
+	// A prefix: "out/acc" writes out/acc_pairs.csv and so on; a folder would get hidden "._pairs.csv".
+	if (const std::string prefix = outputPath(o.output);
+		!prefix.empty() && (o.output.back() == '/' || prefix == "." || prefix == ".." || std::filesystem::is_directory(prefix)))
+		throw std::invalid_argument("-o '" + o.output + "' is a folder; give a prefix for the files, e.g. '" +
+									(std::filesystem::path(prefix) / "accuracy").string() + "'");
 	a.laser_label = laser.getValue(), a.omni_label = omni.getValue();
 	a.max_difference = max_diff.getValue(), a.max_dt = max_dt.getValue(), a.first = first.getValue();
 	o.verbosity = verbosity.level();

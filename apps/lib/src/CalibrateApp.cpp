@@ -115,7 +115,8 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 	inputs.insert(inputs.end(), o_.checkerboards.begin(), o_.checkerboards.end());
 	inputs.insert(inputs.end(), o_.rim_images.begin(), o_.rim_images.end());
 	if (!o_.calibration.input.empty()) inputs.push_back(imagesDirFor(o_.calibration.input));
-	requireOutputAllowed(o_.save_to, OutputKind::Ini, "omnirange-calibrate", inputs);
+	requireOutputsAllowed({{o_.save_to, OutputKind::Ini}, {o_.intrinsics_output, OutputKind::Text}},
+						  "omnirange-calibrate", inputs);
 }
 
 MirrorCalibration CalibrateApp::run()
@@ -181,7 +182,6 @@ MirrorCalibration CalibrateApp::run()
 
 CheckerboardCalibration CalibrateApp::runIntrinsics()
 {
-	requireOutputAllowed(o_.intrinsics_output, OutputKind::Text, "omnirange-calibrate", o_.checkerboards);
 	const CheckerboardCalibration c = calibrateFromCheckerboards(o_.checkerboards, o_.board);
 	for (const auto& i : c.images)
 		std::printf("%s: %s%s\n", i.file.c_str(),
@@ -241,6 +241,19 @@ void CalibrateApp::requireSure(const std::vector<std::string>& doubts) const
 	throw std::runtime_error("the calibration may be wrong: " + all + ". Nothing saved; --accept saves it all the same");
 }
 
+std::optional<CameraParams> CalibrateApp::calibratedCamera()
+{
+	if (!o_.ini.empty()) return loadRangefinderIni(o_.ini, o_.section, *this).camera;
+	try  // the --save-to ini may be a bare section waiting for keys: then there is nothing to compare
+	{
+		if (std::filesystem::exists(o_.save_to)) return RangefinderParams::loadFromFile(o_.save_to, o_.section).camera;
+	}
+	catch (const std::exception&)
+	{
+	}
+	return std::nullopt;
+}
+
 MirrorRim CalibrateApp::runRim()
 {
 	const MirrorRim rim = detectMirrorRim(o_.rim_images);
@@ -256,13 +269,11 @@ MirrorRim CalibrateApp::runRim()
 		doubts.push_back("the disc found is not round (ellipticity " + formatDouble(std::round(rim.ellipticity * 100) / 100) +
 						 " > " + formatDouble(kMaxEllipticity) + "): its centre is not the mirror's");
 	// A centre the checkerboards (or OCamCalib) calibrated is the better one: say if the disc disagrees.
-	const std::string ini = !o_.ini.empty() ? o_.ini : std::filesystem::exists(o_.save_to) ? o_.save_to : "";
-	if (!ini.empty())
-		if (const CameraParams cam = loadRangefinderIni(ini, o_.section, *this).camera;
-			cam.mirror_model == MirrorModel::Mei || cam.mirror_model == MirrorModel::OCamCalib)
-			if (const double off = std::hypot(rim.cx - cam.cx, rim.cy - cam.cy); off > kMaxRimOffset)
+	if (const auto cam = calibratedCamera(); cam)
+		if (cam->mirror_model == MirrorModel::Mei || cam->mirror_model == MirrorModel::OCamCalib)
+			if (const double off = std::hypot(rim.cx - cam->cx, rim.cy - cam->cy); off > kMaxRimOffset)
 				doubts.push_back("the disc's centre is " + formatDouble(std::round(off)) + " px from the calibrated centre (" +
-								 formatDouble(cam.cx) + ", " + formatDouble(cam.cy) + ") of " + ini +
+								 formatDouble(cam->cx) + ", " + formatDouble(cam->cy) + ") of the ini" +
 								 ": the rim is not the mirror's, or the camera moved since it was calibrated");
 	requireSure(doubts);
 	if (!o_.save_to.empty())

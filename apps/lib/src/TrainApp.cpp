@@ -61,6 +61,8 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	o.learning.light_changes = {0.0};
 	if (learn_light.getValue() > 0) o.learning.light_changes.push_back(learn_light.getValue());
 	t.figures_prefix = figures.getValue(), t.figures_frame = figures_frame.getValue();
+	if (!t.figures_prefix.empty() && !o.learn_ini.empty())
+		throw std::invalid_argument("--figures is drawn by a plain training run, not with --learn: run them apart");
 	o.verbosity = verbosity.level();
 	return o;
 }

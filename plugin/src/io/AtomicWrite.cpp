@@ -17,27 +17,39 @@
 
 namespace omnirange
 {
+std::string replacedFileOf(const std::string& given)
+{
+	namespace fs = std::filesystem;
+	std::error_code ec;
+	const std::string path = fs::is_symlink(given, ec) ? fs::weakly_canonical(given, ec).string() : given;
+	if (fs::is_regular_file(path, ec))
+	{
+		const auto mode = fs::status(path, ec).permissions();
+		if (::access(path.c_str(), W_OK) != 0 || (mode & fs::perms::owner_write) == fs::perms::none)
+			throw std::runtime_error("'" + given + "' is read-only: refusing to replace it");
+	}
+	return path;
+}
+
+void keepModeOf(const std::string& target, const std::string& tmp)
+{
+	namespace fs = std::filesystem;
+	std::error_code ec;
+	if (fs::is_regular_file(target, ec)) fs::permissions(tmp, fs::status(target, ec).permissions());
+}
+
 void writeAtomically(
 	const std::string& given, const std::function<void(const std::string&)>& write)
 {
 	namespace fs = std::filesystem;
-	// A link is written through (the file it names is replaced, the link
-	// stays), and a file keeps its mode; a read-only one is not replaced.
-	std::error_code ec;
-	const std::string path = fs::is_symlink(given, ec) ? fs::weakly_canonical(given, ec).string() : given;
-	const bool existed = fs::is_regular_file(path, ec);
-	const auto mode = existed ? fs::status(path, ec).permissions() : fs::perms::unknown;
-	// By its mode bits, not access(): root may write anything, but a user
-	// who made a file read-only meant it to stay.
-	if (existed && (::access(path.c_str(), W_OK) != 0 || (mode & fs::perms::owner_write) == fs::perms::none))
-		throw std::runtime_error("'" + given + "' is read-only: refusing to replace it");
+	const std::string path = replacedFileOf(given);
 	const std::string tmp =
 		path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
 	temporaries::add(tmp);
 	try
 	{
 		write(tmp);
-		if (existed) fs::permissions(tmp, mode);
+		keepModeOf(path, tmp);
 		syncToDisk(tmp, path);
 	}
 	catch (...)

@@ -185,6 +185,14 @@ LogImportSummary importLogs(const LogImportOptions& o)
 		// by where the log's field of view is centred.
 		laser_pose = laser_pose + mrpt::poses::CPose3D(0, 0, 0, log.start_angle + 0.5 * log.fov, 0, 0);
 	}
+	for (const OdometryRow& p : odometry)
+		if (!(std::abs(p.x) <= kMaxOdometryCoordinate && std::abs(p.y) <= kMaxOdometryCoordinate &&
+			  std::abs(p.phi) <= 1e3))
+			throw std::runtime_error("odometry at time " + formatDouble(p.time) + " of '" +
+									 (o.carmen_log.empty() ? o.odometry_csv : o.carmen_log) + "' is (" +
+									 formatDouble(p.x) + ", " + formatDouble(p.y) + ", " + formatDouble(p.phi) +
+									 "): farther than " + formatDouble(kMaxOdometryCoordinate) +
+									 " m from its origin, or a heading past 1000 rad");
 	LogImportSummary s;
 	for (const TimedImage& im : images)
 	{

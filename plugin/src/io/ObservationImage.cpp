@@ -3,6 +3,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string_view>
@@ -41,6 +43,32 @@ std::string jpegProblem(Bytes b, unsigned long& width, unsigned long& height)
 	return "truncated: no JPEG end-of-image marker";
 }
 
+unsigned long le32(Bytes b, std::size_t at)
+{
+	unsigned long v = 0;
+	for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(b[at + i]);
+	return v;
+}
+
+/** A PGM's, PPM's or PBM's size from its header ("P5 # comment\n W H ..."); false if it is not one. */
+bool pnmSize(Bytes b, unsigned long& width, unsigned long& height)
+{
+	if (b.size() < 3 || b[0] != 'P' || b[1] < '1' || b[1] > '6') return false;
+	std::size_t at = 2;
+	unsigned long values[2] = {0, 0};
+	for (unsigned long& v : values)
+	{
+		while (at < b.size() && (std::isspace(static_cast<unsigned char>(b[at])) || b[at] == '#'))
+			if (b[at] == '#') at = b.find('\n', at) == std::string::npos ? b.size() : b.find('\n', at);
+			else ++at;
+		if (at >= b.size() || !std::isdigit(static_cast<unsigned char>(b[at]))) return false;
+		for (; at < b.size() && std::isdigit(static_cast<unsigned char>(b[at])) && v < 1000000000UL; ++at)
+			v = v * 10 + static_cast<unsigned long>(b[at] - '0');
+	}
+	width = values[0], height = values[1];
+	return true;
+}
+
 /** Why the bytes of an image file cannot be decoded whole (cut, or too many
  * pixels to decode), or "". A cut file would otherwise decode with grey rows
  * and only a libjpeg warning; a huge one would take minutes and gigabytes. */
@@ -56,6 +84,14 @@ std::string imageProblem(Bytes b)
 		const std::size_t from = b.size() > 16 ? b.size() - 16 : 0;
 		if (b.find("IEND", from) == std::string::npos) why = "truncated: no PNG end chunk";
 	}
+	else if (b.size() >= 26 && b.substr(0, 2) == "BM")
+	{
+		width = le32(b, 18);
+		const long h = static_cast<std::int32_t>(le32(b, 22));  // negative: stored top-down
+		height = static_cast<unsigned long>(h < 0 ? -h : h);
+	}
+	else
+		pnmSize(b, width, height);
 	if (why.empty() && width * height > kMaxImagePixels)
 		why = std::to_string(width) + "x" + std::to_string(height) + ": more than " +
 			  std::to_string(kMaxImagePixels / 1000000) + " megapixels";

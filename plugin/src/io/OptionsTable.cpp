@@ -3,6 +3,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cmath>
@@ -29,6 +30,8 @@ double parseDouble(const std::string& text)
 	errno = 0;
 	const double v = std::strtod(t.c_str(), &end);
 	if (t.empty() || end != t.c_str() + t.size()) throw std::invalid_argument("not a number (no unit, '.' for decimals)");
+	// strtod also reads hexadecimal ("0x10", "0x1p-4"): no log or ini of ours writes numbers so.
+	if (t.find_first_of("xX") != std::string::npos) throw std::invalid_argument("not a decimal number (no hexadecimal)");
 	if (!std::isfinite(v) || errno == ERANGE) throw std::invalid_argument("not a finite number");
 	return v;
 }
@@ -160,7 +163,7 @@ IniLine parseIniLine(const std::string& line)
 	if (t[0] == '[')
 		return {IniLine::Kind::Section, trimmed(t.substr(1, t.find(']') == std::string::npos ? std::string::npos : t.find(']') - 1))};
 	const auto eq = t.find('=');
-	if (eq == std::string::npos) return {};
+	if (eq == std::string::npos || eq == 0 || t.find('\0') != std::string::npos) return {IniLine::Kind::Malformed, t};
 	return {IniLine::Kind::Key, trimmed(t.substr(0, eq))};
 }
 
@@ -182,20 +185,30 @@ void forEachIniLine(const std::string& path,
 		const IniLine l = parseIniLine(line);
 		if (l.kind == IniLine::Kind::Section) section = l.name, visit(section, "", n);
 		else if (l.kind == IniLine::Kind::Key) visit(section, l.name, n);
+		else if (l.kind == IniLine::Kind::Malformed)
+			throw std::runtime_error(path + ":" + std::to_string(n) + ": '" + l.name.substr(0, 40) +
+									 "' is not 'key = value', a [section] or a comment");
 	}
+}
+
+std::string lowercase(std::string s)
+{
+	for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+	return s;
 }
 }  // namespace
 
 void requireNoRepeatedKeys(const std::string& path)
 {
-	std::map<std::string, int> seen;  // "section/key" -> line
+	std::map<std::string, int> seen;  // "section/key", lower case (as MRPT matches them) -> line
 	forEachIniLine(path, [&](const std::string& section, const std::string& key, int n) {
 		if (key.empty()) return;
-		const auto [it, fresh] = seen.emplace(section + "/" + key, n);
+		const auto [it, fresh] = seen.emplace(lowercase(section + "/" + key), n);
 		if (!fresh)
 			throw std::runtime_error(path + ":" + std::to_string(n) + ": key '" + key + "' repeats in [" + section +
-									 "] (first at line " + std::to_string(it->second) + ")");
+									 "] (first at line " + std::to_string(it->second) + "; case does not tell keys apart)");
 	});
+	if (seen.empty()) throw std::runtime_error("ini file '" + path + "' holds no key: is it the ini meant?");
 }
 
 void requireOnlySections(const std::string& path, const std::vector<std::string>& known)

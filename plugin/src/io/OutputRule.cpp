@@ -1,6 +1,9 @@
 #include "omnirange/io/OutputRule.h"
 
+#include "omnirange/io/AtomicWrite.h"
+#include "omnirange/io/LayeredIni.h"
 #include "omnirange/io/OptionsTable.h"
+#include "omnirange/io/RawlogWriter.h"
 #include "omnirange/io/Temporaries.h"
 
 #include <signal.h>
@@ -88,8 +91,43 @@ bool within(const fs::path& inner, const fs::path& outer)
 	return true;
 }
 
-void requireApartFromInputs(const std::string& output, OutputKind kind, const std::vector<std::string>& inputs)
+/** The inputs and what each brings with it: an ini's bases (`base = FILE`,
+ * followed down the chain) and a rawlog's images folder (NAME_Images), which
+ * are read as surely as the file named. */
+std::vector<std::string> withWhatInputsBring(const std::vector<std::string>& inputs)
 {
+	std::vector<std::string> all;
+	std::error_code ec;
+	for (const auto& in : inputs)
+	{
+		if (in.empty()) continue;
+		all.push_back(in);
+		if (!fs::is_regular_file(in, ec)) continue;
+		if (ofKind(in, OutputKind::Rawlog) || fs::path(in).extension() == ".rawlog")
+			all.push_back(imagesDirFor(in));
+		else if (isIni(in))
+			try
+			{
+				std::string base = in;
+				for (int depth = 0; depth < 16 && !(base = iniBaseOf(base)).empty(); ++depth) all.push_back(base);
+			}
+			catch (const std::exception&)  // an unreadable base: the program's own reading says so
+			{
+			}
+	}
+	return all;
+}
+
+/** The same file or folder: by path through links, or by device and inode (a hard link). */
+bool same(const fs::path& a, const fs::path& b)
+{
+	std::error_code ec;
+	return a == b || (fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec));
+}
+
+void requireApartFromInputs(const std::string& output, OutputKind kind, const std::vector<std::string>& given)
+{
+	const std::vector<std::string> inputs = withWhatInputsBring(given);
 	std::error_code ec;
 	// A linked folder is replaced as a link (nothing it points to is lost); a
 	// linked file is written through, so the file it names is the output.
@@ -101,7 +139,8 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 	{
 		if (in.empty()) continue;
 		const fs::path input = fs::weakly_canonical(fs::absolute(outputPath(in)), ec);
-		if (out == input) throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
+		const fs::path input_as_written = fs::absolute(outputPath(in)).lexically_normal();
+		if (same(out, input) || input_as_written == abs.lexically_normal()) throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
 		// Also as written: a folder that reaches an input through a link holds it too.
 		const bool holds_as_written = within(fs::absolute(outputPath(in)).lexically_normal(), abs.lexically_normal());
 		if (within(input, out) || holds_as_written)
@@ -120,7 +159,13 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	requireApartFromInputs(output, kind, inputs);
 	const fs::path p(output);
 	std::error_code ec;
-	if (kind == OutputKind::Folder && fs::is_symlink(p, ec)) return;  // a link is replaced, not what it names
+	// A link is the user's: replaced (not what it names) only when they say so.
+	if (kind == OutputKind::Folder && fs::is_symlink(p, ec))
+	{
+		if (force) return;
+		throw std::runtime_error("the output folder '" + output +
+								 "' is a symbolic link (give another output, or --force to replace the link)");
+	}
 	const auto status = fs::status(p, ec);  // through symlinks
 	if (!fs::exists(status)) return;
 	const std::string hint = force ? "" : " (give another output, or --force to replace it)";
@@ -134,6 +179,7 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	}
 	if (!fs::is_regular_file(status))
 		throw std::runtime_error("the output '" + output + "' exists and is not a file");
+	replacedFileOf(output);  // a read-only file is refused before any work, --force or not
 	if (force || ofKind(output, kind)) return;
 	throw std::runtime_error("'" + output + "' exists and is not " + kindName(kind) + hint);
 }
@@ -141,6 +187,18 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force)
 {
+	// Two outputs in one place: the second would replace the first.
+	for (std::size_t i = 0; i < outputs.size(); ++i)
+		for (std::size_t j = i + 1; j < outputs.size(); ++j)
+		{
+			const std::string a = outputPath(outputs[i].path), b = outputPath(outputs[j].path);
+			if (a.empty() || b.empty()) continue;
+			std::error_code ec;
+			const fs::path pa = fs::weakly_canonical(fs::absolute(a), ec), pb = fs::weakly_canonical(fs::absolute(b), ec);
+			if (same(pa, pb) || within(pa, pb) || within(pb, pa))
+				throw std::runtime_error("the outputs '" + outputs[i].path + "' and '" + outputs[j].path +
+										 "' are in the same place: one would replace the other");
+		}
 	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force);
 }
 
@@ -163,25 +221,33 @@ void replaceFolder(const std::string& target, const std::string& fresh)
 	if (had_old) fs::remove_all(old, ec);
 }
 
-void recoverLeftoversOf(const std::string& target)
+void recoverLeftoversOf(const std::string& target, OutputKind kind)
 {
 	const fs::path t(target);
 	const fs::path dir = t.parent_path().empty() ? fs::path(".") : t.parent_path();
 	std::error_code ec;
 	if (!fs::is_directory(dir, ec)) return;
 	const std::string name = t.filename().string();
+	// Only what our runs leave: a folder holding the marker; a file of the
+	// output's kind, or empty (killed before it wrote). A user's file that
+	// merely has such a name is left alone.
+	const auto ours = [&](const fs::path& p) {
+		if (fs::is_directory(fs::symlink_status(p, ec))) return fs::exists(p / kOutputMarker, ec);
+		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
+			   (fs::file_size(p, ec) == 0 || ofKind(p.string(), kind));
+	};
 	for (const auto& e : fs::directory_iterator(dir, ec))
 	{
 		const std::string other = e.path().filename().string();
-		for (const std::string kind : {".staging-", ".tmp-", ".old-"})
+		for (const std::string suffix : {".staging-", ".tmp-", ".old-"})
 		{
-			if (other.rfind(name + kind, 0) != 0) continue;
-			const std::string pid = other.substr(name.size() + kind.size());
-			if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+			if (other.rfind(name + suffix, 0) != 0) continue;
+			const std::string pid = other.substr(name.size() + suffix.size());
+			if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
 			const long id = std::stol(pid);
 			if (id == ::getpid() || ::kill(static_cast<pid_t>(id), 0) == 0 || errno != ESRCH) continue;  // alive
-			if (kind == ".staging-" && !fs::exists(e.path() / kOutputMarker, ec)) continue;  // not ours
-			if (kind == ".old-" && !fs::exists(fs::symlink_status(t, ec))) fs::rename(e.path(), t, ec);
+			if (!ours(e.path())) continue;
+			if (suffix == ".old-" && !fs::exists(fs::symlink_status(t, ec))) fs::rename(e.path(), t, ec);
 			else fs::remove_all(e.path(), ec);
 		}
 	}

@@ -35,23 +35,15 @@ void requireRawlogOutputAllowed(const std::string& rawlog, const std::vector<std
 	requireOutputAllowed(imagesDirFor(outputPath(rawlog)), OutputKind::Folder, kRawlogImagesOwner, inputs, force);
 }
 
-namespace
-{
-/** A link is written through: the file it names is replaced, the link stays. */
-std::string writtenThrough(const std::string& path)
-{
-	std::error_code ec;
-	return fs::is_symlink(path, ec) ? fs::weakly_canonical(path, ec).string() : path;
-}
-}  // namespace
-
 RawlogWriter::RawlogWriter(const std::string& path, int gz_level)
-	: path_(writtenThrough(path)),
+	: path_(replacedFileOf(path)),
 	  tmp_path_(path_ + ".tmp-" + std::to_string(::getpid())),
 	  images_(imagesDirFor(path)),
 	  tmp_images_(images_ + ".tmp-" + std::to_string(::getpid())),
 	  out_(std::make_unique<mrpt::io::CFileGZOutputStream>())
 {
+	recoverLeftoversOf(path_, OutputKind::Rawlog);  // what killed runs of this output left
+	recoverLeftoversOf(images_);
 	temporaries::add(tmp_path_);
 	temporaries::add(tmp_images_);
 	if (!out_->open(tmp_path_, gz_level))
@@ -123,6 +115,7 @@ void RawlogWriter::commit()
 	// CFileGZOutputStream::close() reports nothing: read the file back, so a
 	// flush that failed (a full disk) is found before the file is renamed.
 	requireWholeGzipFile(tmp_path_, path_);
+	keepModeOf(path_, tmp_path_);
 	syncToDisk(tmp_path_, path_);
 	const bool link = !has_images_ && !link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_);
 	if (!has_images_ && !link)

@@ -12,6 +12,8 @@
 
 #include <mrpt/system/COutputLogger.h>
 
+#include <optional>
+
 namespace omnirange::app
 {
 class CalibrateApp : public mrpt::system::COutputLogger
@@ -50,6 +52,8 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	const OrientationFit& orientation() const { return orientation_; }
 
    private:
+	/** The camera of the -c ini, or of the --save-to ini when it loads; none otherwise. */
+	std::optional<CameraParams> calibratedCamera();
 	/** Unless --accept, an error naming every doubt (one line): nothing is
 	 * saved from a calibration that says it may be wrong. With --accept,
 	 * each doubt is a warning on stderr. */

@@ -13,6 +13,16 @@ class Mat;
 
 namespace omnirange
 {
+/** The file an output named `given` replaces: a link is written through
+ * (the file it names is replaced, the link stays). Throws std::runtime_error
+ * naming `given` when that file exists and is read-only by its mode bits
+ * (root may write anything, but a user who made a file read-only meant it
+ * to stay). */
+std::string replacedFileOf(const std::string& given);
+/** Gives the finished temporary `tmp` the mode of the file `target` it is
+ * about to replace, if that exists. */
+void keepModeOf(const std::string& target, const std::string& tmp);
+
 /** Calls `write(tmp_path)`, syncs it to disk and renames it to `path`.
  * If `write` throws, the temporary file is removed and the error rethrown;
  * an existing `path` is left untouched. */

@@ -33,6 +33,10 @@ struct LaserRow
 	double time{0};  ///< [s]
 	std::vector<double> ranges;  ///< [m]
 };
+/** [m] Odometry farther than this from its origin is refused: a ground
+ * robot's log does not span 100 km, and MRPT's maps would be sized by it. */
+inline constexpr double kMaxOdometryCoordinate = 1e5;
+
 struct OdometryRow
 {
 	double time{0};  ///< [s]

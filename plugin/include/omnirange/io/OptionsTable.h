@@ -68,14 +68,16 @@ int forEachDataLine(const std::string& path, const std::string& what,
 					const std::function<void(int, const std::string&)>& row);
 
 /** What one line of an ini file is: a section header (`name` the section),
- * a "key = value" line (`name` the key), or neither (a comment, a blank). */
+ * a "key = value" line (`name` the key), a comment or blank (Other), or
+ * none of these (Malformed: "threshold 0.05", "threshold: 0.05", binary). */
 struct IniLine
 {
 	enum class Kind
 	{
 		Other,
 		Section,
-		Key
+		Key,
+		Malformed
 	} kind{Kind::Other};
 	std::string name;
 };
@@ -205,8 +207,10 @@ class OptionsTable
 };
 
 /** Throws std::runtime_error("FILE:LINE: ...") if a key appears twice in
- * one section of the ini file `path` (MRPT's reader keeps the last one
- * silently) or the file cannot be read. */
+ * one section of the ini file `path`, in any mix of upper and lower case
+ * (MRPT's reader keeps the last one silently), if a line is Malformed
+ * (MRPT's reader skips it silently), if the file holds no key at all, or if
+ * it cannot be read. */
 void requireNoRepeatedKeys(const std::string& path);
 /** Throws std::runtime_error("FILE:LINE: ...") at a section not in `known`:
  * for files read by this project alone, where a misspelt section would
