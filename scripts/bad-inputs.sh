@@ -254,6 +254,10 @@ printf '100.0, 1e300, 0, 0\n100.4, 1, 0, 0\n' > imp_odo_far.csv
 run_case "import: odometry at x = 1e300" "error:odometry at time" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry imp_odo_far.csv -o imp.rawlog
 printf '100.0, 0x10, 2, 3\n100.4, 1, 2, 3\n' > imp_hexrange.csv
 run_case "import: a laser range written 0x10" "error:hexadecimal" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_hexrange.csv -o imp.rawlog
+{ printf 'P5\n640 480\n255\n'; head -c 5000 /dev/zero; } > cut.pgm
+run_case "calibrate: a PGM cut short" "error:fewer pixels than its header says" none.out -- "$apps/omnirange-calibrate" -q --rim cut.pgm
+run_case "calibrate: --board 99999x99999" "error:inner corners each way" none.out -- "$apps/omnirange-calibrate" -q --checkerboard cut.pgm --board 99999x99999
+run_case "experiment: -n -1" "error:at least 1 frame" none.out -- "$apps/omnirange-experiment" -q "$src/ini/factory.ini" -n -1 -o exp_neg
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
 

@@ -115,7 +115,14 @@ GuardedIcpOptions GuardedIcpOptions::fromIniFile(const std::string& file)
 {
 	if (!std::filesystem::is_regular_file(file)) throw std::runtime_error("cannot read ini '" + file + "'");
 	requireStrictIcpSection(file);
-	return fromIni(mrpt::config::CConfigFile(file));
+	try
+	{
+		return fromIni(mrpt::config::CConfigFile(file));
+	}
+	catch (const std::invalid_argument& e)  // a key or value of ours: name the file it is in
+	{
+		throw std::runtime_error(file + ": " + e.what());
+	}
 }
 
 Eigen::Matrix2d translationInformation(const mrpt::obs::CObservation2DRangeScan& scan)

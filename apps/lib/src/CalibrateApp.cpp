@@ -99,7 +99,9 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	o.checkerboards = boards.getValue(), o.intrinsics_output = out.getValue(), o.board.square = square.getValue();
 	if (!board_dir.getValue().empty()) addImagesOf(board_dir.getValue(), o.checkerboards);
 	o.rim_images = rims.getValue(), o.save_to = save.getValue(), o.ocamcalib = ocam.getValue();
-	if (std::sscanf(board.getValue().c_str(), "%dx%d", &o.board.columns, &o.board.rows) != 2)
+	int used = 0;
+	if (std::sscanf(board.getValue().c_str(), "%dx%d%n", &o.board.columns, &o.board.rows, &used) != 2 ||
+		used != static_cast<int>(board.getValue().size()))
 		throw std::invalid_argument("--board must be COLUMNSxROWS, e.g. 8x6, not '" + board.getValue() + "'");
 	if (o.checkerboards.empty() && o.rim_images.empty() && o.ocamcalib.empty() &&
 		(o.ini.empty() || o.histogram.empty() || c.input.empty()))

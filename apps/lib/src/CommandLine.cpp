@@ -6,6 +6,7 @@
 
 
 #include <opencv2/core.hpp>
+#include <opencv2/core/utils/logger.hpp>
 
 #include <iostream>
 #include <sstream>
@@ -91,6 +92,9 @@ std::string errorText(const std::exception& e)
 
 int runApp(const std::string& name, const std::function<void()>& body)
 {
+	// OpenCV's own log lines (a cut image, a codec's complaint) would make an
+	// error several lines; what fails is reported once, naming the file.
+	cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
 	temporaries::removeOnInterrupt();
 	temporaries::removeAtExit(name);
 	capAddressSpaceAtHalfTheMemory();

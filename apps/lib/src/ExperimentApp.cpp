@@ -22,6 +22,7 @@ ExperimentApp::Options ExperimentApp::parse(int argc, const char* const* argv)
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	o.ini = ini.getValue(), o.output = output.getValue(), o.max_frames = frames.getValue(), o.robot = robot.getValue();
+	if (frames.isSet() && o.max_frames < 1) throw std::invalid_argument("-n must be at least 1 frame");
 	o.force = force.value();
 	o.study_candidates = study.getValue();
 	o.verbosity = verbosity.level();

@@ -50,22 +50,28 @@ unsigned long le32(Bytes b, std::size_t at)
 	return v;
 }
 
-/** A PGM's, PPM's or PBM's size from its header ("P5 # comment\n W H ..."); false if it is not one. */
-bool pnmSize(Bytes b, unsigned long& width, unsigned long& height)
+/** A PGM's, PPM's or PBM's size from its header ("P5 # comment\n W H MAX\n");
+ * false if it is not one. For the binary grey and colour kinds (P5, P6),
+ * `cut` says whether the pixels the header promises run past the file's end. */
+bool pnmSize(Bytes b, unsigned long& width, unsigned long& height, bool& cut)
 {
 	if (b.size() < 3 || b[0] != 'P' || b[1] < '1' || b[1] > '6') return false;
+	const bool binary = b[1] == '5' || b[1] == '6';
 	std::size_t at = 2;
-	unsigned long values[2] = {0, 0};
-	for (unsigned long& v : values)
+	unsigned long values[3] = {0, 0, 0};  // width, height, maximum (none for P1, P4)
+	const int count = (b[1] == '1' || b[1] == '4') ? 2 : 3;
+	for (int k = 0; k < count; ++k)
 	{
 		while (at < b.size() && (std::isspace(static_cast<unsigned char>(b[at])) || b[at] == '#'))
 			if (b[at] == '#') at = b.find('\n', at) == std::string::npos ? b.size() : b.find('\n', at);
 			else ++at;
 		if (at >= b.size() || !std::isdigit(static_cast<unsigned char>(b[at]))) return false;
-		for (; at < b.size() && std::isdigit(static_cast<unsigned char>(b[at])) && v < 1000000000UL; ++at)
-			v = v * 10 + static_cast<unsigned long>(b[at] - '0');
+		for (; at < b.size() && std::isdigit(static_cast<unsigned char>(b[at])) && values[k] < 1000000000UL; ++at)
+			values[k] = values[k] * 10 + static_cast<unsigned long>(b[at] - '0');
 	}
 	width = values[0], height = values[1];
+	const unsigned long per_pixel = (b[1] == '6' ? 3 : 1) * (values[2] > 255 ? 2 : 1);
+	cut = binary && b.size() < at + 1 + width * height * per_pixel;  // one blank after the maximum
 	return true;
 }
 
@@ -90,8 +96,8 @@ std::string imageProblem(Bytes b)
 		const long h = static_cast<std::int32_t>(le32(b, 22));  // negative: stored top-down
 		height = static_cast<unsigned long>(h < 0 ? -h : h);
 	}
-	else
-		pnmSize(b, width, height);
+	else if (bool cut = false; pnmSize(b, width, height, cut) && cut && width * height <= kMaxImagePixels)
+		why = "truncated: fewer pixels than its header says";
 	if (why.empty() && width * height > kMaxImagePixels)
 		why = std::to_string(width) + "x" + std::to_string(height) + ": more than " +
 			  std::to_string(kMaxImagePixels / 1000000) + " megapixels";

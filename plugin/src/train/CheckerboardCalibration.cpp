@@ -115,7 +115,9 @@ void measureCentreSpread(const Boards3d& object, const Boards2d& image, const st
 
 CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string>& files, const CheckerboardOptions& o)
 {
-	if (o.columns < 2 || o.rows < 2 || !(o.square > 0)) throw std::invalid_argument("the board needs >= 2x2 inner corners and a square > 0 m");
+	if (o.columns < 2 || o.rows < 2 || o.columns > kMaxBoardCorners || o.rows > kMaxBoardCorners || !(o.square > 0))
+		throw std::invalid_argument("the board needs 2 to " + std::to_string(kMaxBoardCorners) +
+									" inner corners each way and a square > 0 m");
 	const cv::Size pattern(o.columns, o.rows);
 	std::vector<cv::Vec3d> board;
 	for (int r = 0; r < o.rows; ++r)

@@ -16,6 +16,9 @@
 
 namespace omnirange
 {
+/** The most inner corners a board may have along each side. */
+inline constexpr int kMaxBoardCorners = 100;
+
 struct CheckerboardOptions
 {
 	int columns{8}, rows{6};  ///< inner corners
