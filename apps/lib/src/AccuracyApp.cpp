@@ -26,7 +26,7 @@ AccuracyApp::Options AccuracyApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> title("", "title", "title of the histogram", false, "", "TEXT", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.input = in.getValue(), o.output = out.getValue(), o.title = title.getValue();
+	o.input = in.getValue(), o.output = requiredPath(out), o.title = title.getValue();
 	// A prefix: "out/acc" writes out/acc_pairs.csv and so on; a folder would get hidden "._pairs.csv".
 	if (const std::string prefix = outputPath(o.output);
 		!prefix.empty() && (o.output.back() == '/' || prefix == "." || prefix == ".." || std::filesystem::is_directory(prefix)))

@@ -71,6 +71,12 @@ mrpt::system::VerbosityLevel VerbosityArgs::level()
 	return verbose.getValue() ? mrpt::system::LVL_DEBUG : mrpt::system::LVL_INFO;
 }
 
+std::string requiredPath(TCLAP::ValueArg<std::string>& arg)
+{
+	if (arg.getValue().empty()) throw std::invalid_argument("-" + arg.getFlag() + " names no file or folder");
+	return arg.getValue();
+}
+
 void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv)
 {
 	OneLineOutput out;

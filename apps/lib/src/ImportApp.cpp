@@ -42,7 +42,7 @@ ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
 	parseArgs(cmd, argc, argv);
 	i.force = force.value();
 	i.images_dir = images.getValue(), i.image_list = list.getValue(), i.laser_csv = laser.getValue();
-	i.odometry_csv = odometry.getValue(), i.carmen_log = carmen.getValue(), i.output = out.getValue();
+	i.odometry_csv = odometry.getValue(), i.carmen_log = carmen.getValue(), i.output = requiredPath(out);
 	i.omni_label = omni_label.getValue(), i.laser_label = laser_label.getValue();
 	i.laser_pose = poseFromText(laser_pose.getValue());
 	i.laser_fov = fov.getValue() * M_PI / 180, i.laser_max_range = max_range.getValue();

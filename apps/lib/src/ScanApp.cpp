@@ -39,7 +39,7 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	parseArgs(cmd, argc, argv);
 	s.force = force.value();
 	o.ini = ini.getValue(), o.section = section.getValue(), o.histogram = hist.getValue();
-	s.input = in.getValue(), s.output = out.getValue(), s.omni_label = omni.getValue();
+	s.input = in.getValue(), s.output = requiredPath(out), s.omni_label = omni.getValue();
 	s.threads = threads.getValue(), s.decode_only = decode_only.getValue();
 	s.skip_bad_images = skip_bad.getValue();
 	o.verbosity = verbosity.level();

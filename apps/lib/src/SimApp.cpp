@@ -23,7 +23,7 @@ SimApp::Options SimApp::parse(int argc, const char* const* argv)
 	parseArgs(cmd, argc, argv);
 	s.force = force.value();
 	s.world_file = world.getValue(), s.route_file = route.getValue(), s.robot_ini = robot.getValue();
-	s.output = out.getValue(), s.max_frames = frames.getValue(), s.threads = threads.getValue();
+	s.output = requiredPath(out), s.max_frames = frames.getValue(), s.threads = threads.getValue();
 	s.image_format = format.getValue();
 	o.verbosity = verbosity.level();
 	return o;

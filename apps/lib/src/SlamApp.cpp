@@ -28,7 +28,7 @@ SlamApp::Options SlamApp::parse(int argc, const char* const* argv)
 										  "LABEL", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.input = in.getValue(), o.ini = ini.getValue(), o.output = out.getValue();
+	o.input = in.getValue(), o.ini = ini.getValue(), o.output = requiredPath(out);
 	o.scan_label = label.getValue(), o.odometry_label = odometry.getValue();
 	o.verbosity = verbosity.level();
 	return o;

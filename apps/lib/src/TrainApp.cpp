@@ -43,7 +43,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.output = out.getValue(), o.ini = ini.getValue(), o.section = section.getValue(), o.learn_ini = learn.getValue();
+	o.output = requiredPath(out), o.ini = ini.getValue(), o.section = section.getValue(), o.learn_ini = learn.getValue();
 	o.learn_candidates = candidates.getValue();
 	if (!o.learn_candidates.empty() && o.learn_ini.empty())
 		throw std::invalid_argument("--learn-candidates needs --learn");

@@ -45,6 +45,10 @@ struct ForceArg
 	TCLAP::SwitchArg force;
 };
 
+/** The value of a required path option; throws std::invalid_argument when
+ * it is empty (`-o ''` would otherwise run every stage and then fail). */
+std::string requiredPath(TCLAP::ValueArg<std::string>& arg);
+
 /** Parses the command line; on --help/--version or an error (reported on
  * one line of stderr), throws ExitRequest with code 0 or 2. */
 void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv);
