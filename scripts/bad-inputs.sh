@@ -208,6 +208,8 @@ run_case "import: an output inside its images folder" error none.out -- "$apps/o
 # Readers: no FIFO, no time that is not decimal seconds, no image too large to decode.
 mkfifo odometry.fifo
 run_case "import: the odometry is a FIFO" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry odometry.fifo -o imp.rawlog
+mkdir -p imp_fifo && cp imp/100.0.jpg imp_fifo/ && mkfifo imp_fifo/100.4.jpg
+run_case "import: a FIFO named like an image" "error:not a regular file" imp.rawlog -- "$apps/omnirange-import" -q --images imp_fifo --laser imp_laser.csv -o imp.rawlog
 mkfifo world.fifo
 run_case "sim: the world file is a FIFO" error sim.rawlog -- "$apps/omnirange-sim" -q -w world.fifo -r w.route -o sim.rawlog
 printf '100.0, 1, 2, 3\n1e300, 1, 2, 3\n' > imp_far.csv
