@@ -260,6 +260,15 @@ run_case "import: a laser range written 0x10" "error:hexadecimal" imp.rawlog -- 
 run_case "calibrate: a PGM cut short" "error:fewer pixels than its header says" none.out -- "$apps/omnirange-calibrate" -q --rim cut.pgm
 run_case "calibrate: --board 99999x99999" "error:inner corners each way" none.out -- "$apps/omnirange-calibrate" -q --checkerboard cut.pgm --board 99999x99999
 run_case "experiment: -n -1" "error:at least 1 frame" none.out -- "$apps/omnirange-experiment" -q "$src/ini/factory.ini" -n -1 -o exp_neg
+# What a second hostile run found.
+run_case "calibrate: --save-to the base of its -c ini" "error:is the input" none.out -- "$apps/omnirange-calibrate" -q -i s.rawlog -c f.ini -H floor.hist --save-to experiment-base.ini
+run_case "import: -o the base of its -c ini, --force" "error:is the input" none.out -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv -c f.ini -o experiment-base.ini --force
+printf 'base = %s\n[experiment]\nname = ../../userlog\n' "$src/ini/factory.ini" > escape.ini
+run_case "experiment: a name that leads out of the report" "error:plain name" none.out -- "$apps/omnirange-experiment" -q escape.ini -n 5 -o exp_escape
+run_case "experiment: -o ''" "error:names no file" none.out -- "$apps/omnirange-experiment" -q "$src/ini/factory.ini" -n 5 -o ''
+variant pose_far 'pose_x = 50'
+"$apps/omnirange-scan" -q -i s.rawlog -c pose_far.ini -H floor.hist -o pose_far.rawlog
+run_case "accuracy: a scan no laser ray can be compared with" "error:could be compared" acc_far_pairs.csv -- "$apps/omnirange-accuracy" -q -i pose_far.rawlog -o acc_far
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
 

@@ -6,6 +6,7 @@
 
 #include <omnirange_apps/CommandLine.h>
 
+#include <omnirange/io/LayeredIni.h>
 #include <omnirange/io/OutputRule.h>
 
 #include <wx/app.h>
@@ -87,11 +88,12 @@ int main(int argc, char** argv)
 	return omnirange::app::runApp("omnirange-tuner", [&] {
 		g_options = parse(argc, argv);
 		if (g_options.frame < 0) throw std::invalid_argument("frame must be >= 0");
-		// Save writes into the ini (the -c one by default), never into what is read.
+		g_session = std::make_unique<omnirange::tuner::TunerSession>(g_options.session);  // reads and checks them
+		// Save writes into the ini (the -c one by default), never into what is read, nor the bases under it.
 		const auto& in = g_options.session;
-		omnirange::requireOutputAllowed(g_options.save_to, omnirange::OutputKind::Ini, "omnirange-tuner",
-										{in.rawlog, in.histogram});
-		g_session = std::make_unique<omnirange::tuner::TunerSession>(g_options.session);
+		std::vector<std::string> inputs{in.rawlog, in.histogram};
+		for (const auto& base : omnirange::iniBasesOf(in.ini)) inputs.push_back(base);
+		omnirange::requireOutputAllowed(g_options.save_to, omnirange::OutputKind::Ini, "omnirange-tuner", inputs);
 		if (g_options.frame >= g_session->frames())
 			throw std::invalid_argument("frame " + std::to_string(g_options.frame) + " is past the rawlog's " +
 										std::to_string(g_session->frames()) + " frames");

@@ -64,6 +64,11 @@ AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions
 	if (r.frames == 0)
 		throw std::runtime_error("all " + std::to_string(seen) + " scan pairs of '" + rawlog + "' come before first = " +
 								 std::to_string(o.first));
+	// A mean over no ray would read 0.0000 m, the best score there is.
+	if (r.stats.compared == 0)
+		throw std::runtime_error("no ray of '" + rawlog + "' could be compared with the laser (" +
+								 std::to_string(r.stats.total()) +
+								 " pairs, none within the max difference): are the sensors' poses right?");
 	return r;
 }
 

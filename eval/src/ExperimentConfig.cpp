@@ -72,6 +72,9 @@ void resolvePaths(ExperimentConfig& c, const LayeredIni& layers)
 
 void validate(ExperimentConfig& c)
 {
+	// The name becomes file names inside the report folder: it may not lead out of it.
+	require(!c.name.empty() && c.name != "." && c.name != ".." && c.name.find('/') == std::string::npos,
+			"[experiment] name must be a plain name (no '/'), not '" + c.name + "'");
 	require(c.max_frames >= 0, "[experiment] max_frames must be >= 0");
 	require(c.train_every >= 1, "[experiment] train_every must be >= 1");
 	require(c.train_fraction > 0 && c.train_fraction < 1, "[experiment] train_fraction must be within (0, 1)");

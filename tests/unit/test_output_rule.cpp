@@ -150,6 +150,18 @@ TEST(OutputRule, ALinkedFolderAReadOnlyFileAndTwoOutputsInOnePlaceAreRefused)
 	}
 	EXPECT_NO_THROW(requireOutputsAllowed({{d + "/a.ini", OutputKind::Ini}, {d + "/b.csv", OutputKind::Text}, {"", OutputKind::Text}},
 										  "omnirange-test", {}));
+
+	// A rawlog's images folder may be the link a scan made to its input's images: a second scan replaces it.
+	fs::create_directory(d + "/in_Images");
+	write(d + "/in.rawlog", std::string("\x1f\x8b", 2));
+	fs::create_directory_symlink(d + "/in_Images", d + "/out_Images");
+	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", {d + "/in.rawlog"}, false));
+	// A leftover marked by another program is not this one's to put back.
+	fs::create_directory(d + "/rep.old-999991");
+	markOutputFolder(d + "/rep.old-999991", "omnirange-other");
+	recoverLeftoversOf(d + "/rep", OutputKind::Folder, "omnirange-test");
+	EXPECT_FALSE(fs::exists(d + "/rep"));
+	EXPECT_TRUE(fs::exists(d + "/rep.old-999991"));
 }
 
 TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)

@@ -6,6 +6,7 @@
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/io/IniSectionWriter.h>
+#include <omnirange/io/LayeredIni.h>
 #include <omnirange/io/OptionsTable.h>
 #include <omnirange/io/Progress.h>
 
@@ -117,6 +118,9 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 	inputs.insert(inputs.end(), o_.checkerboards.begin(), o_.checkerboards.end());
 	inputs.insert(inputs.end(), o_.rim_images.begin(), o_.rim_images.end());
 	if (!o_.calibration.input.empty()) inputs.push_back(imagesDirFor(o_.calibration.input));
+	// Its -c ini is the usual --save-to, but not the bases under it: they are other inis' too.
+	if (!o_.ini.empty())
+		for (const auto& base : iniBasesOf(o_.ini)) inputs.push_back(base);
 	requireOutputsAllowed({{o_.save_to, OutputKind::Ini}, {o_.intrinsics_output, OutputKind::Text}},
 						  "omnirange-calibrate", inputs);
 }

@@ -23,6 +23,7 @@ ExperimentApp::Options ExperimentApp::parse(int argc, const char* const* argv)
 	parseArgs(cmd, argc, argv);
 	o.ini = ini.getValue(), o.output = output.getValue(), o.max_frames = frames.getValue(), o.robot = robot.getValue();
 	if (frames.isSet() && o.max_frames < 1) throw std::invalid_argument("-n must be at least 1 frame");
+	if (output.isSet()) o.output = requiredPath(output);
 	o.force = force.value();
 	o.study_candidates = study.getValue();
 	o.verbosity = verbosity.level();

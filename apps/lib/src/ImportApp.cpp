@@ -2,6 +2,8 @@
 
 #include "omnirange_apps/CommandLine.h"
 
+#include <omnirange/io/RawlogWriter.h>
+
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/io/OptionsTable.h>
 
@@ -65,6 +67,10 @@ ImportApp::ImportApp(Options o) : mrpt::system::COutputLogger("omnirange-import"
 
 LogImportSummary ImportApp::run()
 {
+	// The -c ini (and its bases) is read as surely as the logs: never an output.
+	const auto& i = o_.import;
+	requireRawlogOutputAllowed(i.output, {o_.ini, i.images_dir, i.image_list, i.laser_csv, i.odometry_csv, i.carmen_log},
+							   i.force);
 	if (!o_.ini.empty()) o_.import.omni_pose = loadRangefinderIni(o_.ini, o_.section, *this).sensor_pose;
 	const LogImportSummary s = importLogs(o_.import);
 	MRPT_LOG_INFO_FMT("%zu images (%dx%d), %zu laser scans (%d rays), %zu odometry readings over %.1f s -> %s",

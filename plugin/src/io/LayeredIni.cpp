@@ -30,6 +30,19 @@ std::string iniBaseOf(const std::string& path)
 	return {};
 }
 
+std::vector<std::string> iniBasesOf(const std::string& path)
+{
+	std::vector<std::string> bases;
+	try
+	{
+		for (std::string base = path; bases.size() < 16 && !(base = iniBaseOf(base)).empty();) bases.push_back(base);
+	}
+	catch (const std::exception&)
+	{
+	}
+	return bases;
+}
+
 LayeredIni readLayeredIni(const std::string& path)
 {
 	LayeredIni ini;

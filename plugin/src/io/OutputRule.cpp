@@ -106,14 +106,7 @@ std::vector<std::string> withWhatInputsBring(const std::vector<std::string>& inp
 		if (ofKind(in, OutputKind::Rawlog) || fs::path(in).extension() == ".rawlog")
 			all.push_back(imagesDirFor(in));
 		else if (isIni(in))
-			try
-			{
-				std::string base = in;
-				for (int depth = 0; depth < 16 && !(base = iniBaseOf(base)).empty(); ++depth) all.push_back(base);
-			}
-			catch (const std::exception&)  // an unreadable base: the program's own reading says so
-			{
-			}
+			for (const auto& base : iniBasesOf(in)) all.push_back(base);
 	}
 	return all;
 }
@@ -140,7 +133,8 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 		if (in.empty()) continue;
 		const fs::path input = fs::weakly_canonical(fs::absolute(outputPath(in)), ec);
 		const fs::path input_as_written = fs::absolute(outputPath(in)).lexically_normal();
-		if (same(out, input) || input_as_written == abs.lexically_normal()) throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
+		// A link replaced as a link is its own path, not the folder it names.
+		if ((link_itself ? out == input : same(out, input)) || input_as_written == abs.lexically_normal()) throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
 		// Also as written: a folder that reaches an input through a link holds it too.
 		const bool holds_as_written = within(fs::absolute(outputPath(in)).lexically_normal(), abs.lexically_normal());
 		if (within(input, out) || holds_as_written)
@@ -159,16 +153,16 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	requireApartFromInputs(output, kind, inputs);
 	const fs::path p(output);
 	std::error_code ec;
-	// A link is the user's: replaced (not what it names) only when they say so.
+	// A link is the user's: replaced (not what it names) only when they say so;
+	// but a rawlog's images folder may be the link a scan made to its input's images.
 	if (kind == OutputKind::Folder && fs::is_symlink(p, ec))
 	{
-		if (force) return;
-		throw std::runtime_error("the output folder '" + output +
-								 "' is a symbolic link (give another output, or --force to replace the link)");
+		if (force || program == kRawlogImagesOwner) return;
+		throw std::runtime_error("the output folder '" + output + "' is a symbolic link (remove it, or give another output)");
 	}
 	const auto status = fs::status(p, ec);  // through symlinks
 	if (!fs::exists(status)) return;
-	const std::string hint = force ? "" : " (give another output, or --force to replace it)";
+	const std::string hint = force ? "" : " (remove it, or give another output)";
 	if (kind == OutputKind::Folder)
 	{
 		if (!fs::is_directory(status))
@@ -221,7 +215,7 @@ void replaceFolder(const std::string& target, const std::string& fresh)
 	if (had_old) fs::remove_all(old, ec);
 }
 
-void recoverLeftoversOf(const std::string& target, OutputKind kind)
+void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::string& program)
 {
 	const fs::path t(target);
 	const fs::path dir = t.parent_path().empty() ? fs::path(".") : t.parent_path();
@@ -232,7 +226,8 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind)
 	// output's kind, or empty (killed before it wrote). A user's file that
 	// merely has such a name is left alone.
 	const auto ours = [&](const fs::path& p) {
-		if (fs::is_directory(fs::symlink_status(p, ec))) return fs::exists(p / kOutputMarker, ec);
+		if (fs::is_directory(fs::symlink_status(p, ec)))
+			return program.empty() ? fs::exists(p / kOutputMarker, ec) : isOutputFolderOf(p.string(), program);
 		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
 			   (fs::file_size(p, ec) == 0 || ofKind(p.string(), kind));
 	};
@@ -257,7 +252,7 @@ StagedFolder::StagedFolder(const std::string& target, const std::string& program
 						   const std::vector<std::string>& inputs, bool force)
 	: target_(target), staging_(target + ".staging-" + std::to_string(::getpid()))
 {
-	recoverLeftoversOf(target_);
+	recoverLeftoversOf(target_, OutputKind::Folder, program);
 	requireOutputAllowed(target_, OutputKind::Folder, program, inputs, force);
 	fs::remove_all(staging_);
 	temporaries::add(staging_);

@@ -32,18 +32,20 @@ std::string imagesDirFor(const std::string& rawlog_path)
 void requireRawlogOutputAllowed(const std::string& rawlog, const std::vector<std::string>& inputs, bool force)
 {
 	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
-	requireOutputAllowed(imagesDirFor(outputPath(rawlog)), OutputKind::Folder, kRawlogImagesOwner, inputs, force);
+	// The images go beside the file written (through a link, the file it names).
+	requireOutputAllowed(imagesDirFor(replacedFileOf(outputPath(rawlog))), OutputKind::Folder, kRawlogImagesOwner,
+						 inputs, force);
 }
 
 RawlogWriter::RawlogWriter(const std::string& path, int gz_level)
 	: path_(replacedFileOf(path)),
 	  tmp_path_(path_ + ".tmp-" + std::to_string(::getpid())),
-	  images_(imagesDirFor(path)),
+	  images_(imagesDirFor(path_)),  // beside the file written, where a reader of it looks
 	  tmp_images_(images_ + ".tmp-" + std::to_string(::getpid())),
 	  out_(std::make_unique<mrpt::io::CFileGZOutputStream>())
 {
 	recoverLeftoversOf(path_, OutputKind::Rawlog);  // what killed runs of this output left
-	recoverLeftoversOf(images_);
+	recoverLeftoversOf(images_, OutputKind::Folder, kRawlogImagesOwner);
 	temporaries::add(tmp_path_);
 	temporaries::add(tmp_images_);
 	if (!out_->open(tmp_path_, gz_level))

@@ -34,6 +34,9 @@ struct LayeredIni
 
 /** The `base = FILE` of the ini `path`, resolved against its folder; "" if it has none. */
 std::string iniBaseOf(const std::string& path);
+/** Every base below the ini `path`, nearest first (at most 16 deep); none
+ * if it has none or a base cannot be read (reading it says why). */
+std::vector<std::string> iniBasesOf(const std::string& path);
 
 /** Reads `path` and its bases. Each file must be a regular file with no key
  * repeated in a section; a missing base or a cycle of bases is an error.

@@ -85,8 +85,10 @@ void replaceFolder(const std::string& target, const std::string& fresh);
  * process id (TARGET.staging-PID, TARGET.tmp-PID, TARGET.old-PID) whose
  * process is gone: staging and temporary copies are removed; an old copy
  * is put back when `target` is missing (the run died between the two
- * renames), else removed. Only what is ours: a folder holding the marker,
- * or a file of `kind` (or empty); a user's file with such a name stays. */
-void recoverLeftoversOf(const std::string& target, OutputKind kind = OutputKind::Folder);
+ * renames), else removed. Only what is ours: a folder holding the marker
+ * (naming `program`, when given), or a file of `kind` (or empty); a user's
+ * file with such a name stays. */
+void recoverLeftoversOf(const std::string& target, OutputKind kind = OutputKind::Folder,
+						const std::string& program = "");
 
 }  // namespace omnirange
