@@ -269,6 +269,8 @@ run_case "experiment: -o ''" "error:names no file" none.out -- "$apps/omnirange-
 variant pose_far 'pose_x = 50'
 "$apps/omnirange-scan" -q -i s.rawlog -c pose_far.ini -H floor.hist -o pose_far.rawlog
 run_case "accuracy: a scan no laser ray can be compared with" "error:could be compared" acc_far_pairs.csv -- "$apps/omnirange-accuracy" -q -i pose_far.rawlog -o acc_far
+run_case "train: --learn ''" "error:names no file" none.out -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o other.hist --learn ''
+run_case "scan: a rawlog that already holds OMNISCAN scans" "error:already holds" out2.rawlog -- "$apps/omnirange-scan" -q -i pose_far.rawlog -c f.ini -H floor.hist -o out2.rawlog
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
 

@@ -97,9 +97,9 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	c.input = in.getValue(), c.omni_label = omni.getValue(), c.laser_label = laser.getValue();
 	c.max_dt = max_dt.getValue(), c.every = every.getValue();
 	o.verbosity = verbosity.level();
-	o.checkerboards = boards.getValue(), o.intrinsics_output = out.getValue(), o.board.square = square.getValue();
+	o.checkerboards = boards.getValue(), o.intrinsics_output = optionalPath(out), o.board.square = square.getValue();
 	if (!board_dir.getValue().empty()) addImagesOf(board_dir.getValue(), o.checkerboards);
-	o.rim_images = rims.getValue(), o.save_to = save.getValue(), o.ocamcalib = ocam.getValue();
+	o.rim_images = rims.getValue(), o.save_to = optionalPath(save), o.ocamcalib = ocam.getValue();
 	int used = 0;
 	if (std::sscanf(board.getValue().c_str(), "%dx%d%n", &o.board.columns, &o.board.rows, &used) != 2 ||
 		used != static_cast<int>(board.getValue().size()))

@@ -73,8 +73,15 @@ mrpt::system::VerbosityLevel VerbosityArgs::level()
 
 std::string requiredPath(TCLAP::ValueArg<std::string>& arg)
 {
-	if (arg.getValue().empty()) throw std::invalid_argument("-" + arg.getFlag() + " names no file or folder");
+	if (arg.getValue().empty())
+		throw std::invalid_argument((arg.getFlag().empty() ? "--" + arg.getName() : "-" + arg.getFlag()) +
+									" names no file or folder");
 	return arg.getValue();
+}
+
+std::string optionalPath(TCLAP::ValueArg<std::string>& arg)
+{
+	return arg.isSet() ? requiredPath(arg) : arg.getValue();
 }
 
 void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv)

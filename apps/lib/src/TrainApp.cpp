@@ -43,8 +43,8 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.output = requiredPath(out), o.ini = ini.getValue(), o.section = section.getValue(), o.learn_ini = learn.getValue();
-	o.learn_candidates = candidates.getValue();
+	o.output = requiredPath(out), o.ini = ini.getValue(), o.section = section.getValue(), o.learn_ini = optionalPath(learn);
+	o.learn_candidates = optionalPath(candidates);
 	if (!o.learn_candidates.empty() && o.learn_ini.empty())
 		throw std::invalid_argument("--learn-candidates needs --learn");
 	t.input = in.getValue(), t.omni_label = omni.getValue(), t.laser_label = laser.getValue();
@@ -60,7 +60,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	o.learning.validation_light_change = learn_light.getValue();
 	o.learning.light_changes = {0.0};
 	if (learn_light.getValue() > 0) o.learning.light_changes.push_back(learn_light.getValue());
-	t.figures_prefix = figures.getValue(), t.figures_frame = figures_frame.getValue();
+	t.figures_prefix = optionalPath(figures), t.figures_frame = figures_frame.getValue();
 	if (!t.figures_prefix.empty() && !o.learn_ini.empty())
 		throw std::invalid_argument("--figures is drawn by a plain training run, not with --learn: run them apart");
 	o.verbosity = verbosity.level();

@@ -1,5 +1,7 @@
 #include "omnirange/io/RawlogScan.h"
 
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
 #include "omnirange/core/FloorAdaptation.h"
 #include "omnirange/io/AtomicWrite.h"
 #include "omnirange/io/ObservationImage.h"
@@ -162,6 +164,11 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	loop.on<mrpt::obs::CObservationImage>(o.omni_label, [&](const mrpt::obs::CObservationImage::Ptr& image) {
 		b.after.push_back(b.objects.size() - 1);
 		b.images.push_back(image);
+	});
+	// Scans of this label already in the input would sit beside the new ones, two per frame.
+	loop.on<mrpt::obs::CObservation2DRangeScan>(rf.params().sensor_label, [&](const auto&) {
+		throw std::runtime_error("'" + o.input + "' already holds " + rf.params().sensor_label +
+								 " scans: scan the rawlog they were made from, or give the new ones another sensor_label");
 	});
 	loop.run(progress);
 	flush();

@@ -48,6 +48,9 @@ struct ForceArg
 /** The value of a required path option; throws std::invalid_argument when
  * it is empty (`-o ''` would otherwise run every stage and then fail). */
 std::string requiredPath(TCLAP::ValueArg<std::string>& arg);
+/** The value of an optional path option: "" when not given; throws
+ * std::invalid_argument when given empty (`--save-to ''` would be ignored). */
+std::string optionalPath(TCLAP::ValueArg<std::string>& arg);
 
 /** Parses the command line; on --help/--version or an error (reported on
  * one line of stderr), throws ExitRequest with code 0 or 2. */
