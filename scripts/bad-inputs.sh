@@ -271,6 +271,19 @@ variant pose_far 'pose_x = 50'
 run_case "accuracy: a scan no laser ray can be compared with" "error:could be compared" acc_far_pairs.csv -- "$apps/omnirange-accuracy" -q -i pose_far.rawlog -o acc_far
 run_case "train: --learn ''" "error:names no file" none.out -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o other.hist --learn ''
 run_case "scan: a rawlog that already holds OMNISCAN scans" "error:already holds" out2.rawlog -- "$apps/omnirange-scan" -q -i pose_far.rawlog -c f.ini -H floor.hist -o out2.rawlog
+# What a third hostile run found.
+mkdir -p deep/inner && ln -sfn deep/inner imgs && cp f.ini deep/f2.ini && cp experiment-base.ini deep/
+run_case "train: --learn onto its -c ini through a link and '..'" "error:is the input" none.out -- "$apps/omnirange-train" -q -i s.rawlog -c deep/f2.ini -o other.hist --learn imgs/../f2.ini
+mkdir -p photos && echo mine > photos/p.txt && ln -sfn photos usr_Images
+run_case "sim: a user's link named like the output's images" "error:symbolic link" none.out -- "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o usr.rawlog
+if [ -d "$real" ]; then
+  run_case "calibrate: one image given twice" "error:given twice" none.out -- "$apps/omnirange-calibrate" -q \
+    --checkerboard "$real/img_para_001.pgm" --checkerboard "$real/img_para_002.pgm" --checkerboard "$real/img_para_001.pgm"
+fi
+printf 'a\n<!-- table: truth -->\nold\n<!-- table: maps -->\nx\n<!-- end table -->\n' > nested.md
+run_case "summary: a table block left open before the next" "error:not closed before the next" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill nested.md
+run_case "import: --images and --image-list both" "error:not both" imp.rawlog -- "$apps/omnirange-import" -q --images imp --image-list imp_list.csv --laser imp_laser.csv -o imp.rawlog
+[ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
 

@@ -270,8 +270,12 @@ std::string fillTables(const std::string& text, const Summary& s)
 	{
 		const std::size_t name_end = text.find(" -->", start);
 		const std::size_t end = text.find(close, start);
-		if (name_end == std::string::npos || end == std::string::npos)
-			throw std::runtime_error("a table block opened at character " + std::to_string(start) + " is not closed");
+		const std::size_t next = text.find(open, start + open.size());
+		// A block that reaches the next block's opener would swallow it and the text between.
+		if (name_end == std::string::npos || end == std::string::npos || (next != std::string::npos && next < end))
+			throw std::runtime_error("a table block opened at line " +
+									 std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(start), '\n')) +
+									 " is not closed before the next one opens");
 		const std::string name = text.substr(start + open.size(), name_end - start - open.size());
 		out += text.substr(at, name_end + 4 - at) + "\n" + markdownTable(name, s) + close;
 		at = end + close.size();

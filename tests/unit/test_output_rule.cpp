@@ -155,7 +155,15 @@ TEST(OutputRule, ALinkedFolderAReadOnlyFileAndTwoOutputsInOnePlaceAreRefused)
 	fs::create_directory(d + "/in_Images");
 	write(d + "/in.rawlog", std::string("\x1f\x8b", 2));
 	fs::create_directory_symlink(d + "/in_Images", d + "/out_Images");
+	EXPECT_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", {d + "/in.rawlog"}, false), std::runtime_error);  // no rawlog of ours beside it: the user's link
+	write(d + "/out.rawlog", std::string("\x1f\x8b", 2));
 	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", {d + "/in.rawlog"}, false));
+	// An output reached through a link and '..' is where the system takes it, not where the text says.
+	fs::create_directories(d + "/data/images");
+	fs::create_directory_symlink(d + "/data/images", d + "/imgs");
+	write(d + "/data/cam.ini", "[rangefinder]\nN = 10\n");
+	EXPECT_NE(refusal(d + "/imgs/../cam.ini", OutputKind::Ini, {d + "/data/cam.ini"}, true).find("is the input"),
+			  std::string::npos);
 	// A leftover marked by another program is not this one's to put back.
 	fs::create_directory(d + "/rep.old-999991");
 	markOutputFolder(d + "/rep.old-999991", "omnirange-other");

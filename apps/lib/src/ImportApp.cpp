@@ -44,6 +44,7 @@ ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
 	parseArgs(cmd, argc, argv);
 	i.force = force.value();
 	i.images_dir = images.getValue(), i.image_list = list.getValue(), i.laser_csv = laser.getValue();
+	if (images.isSet() && list.isSet()) throw std::invalid_argument("give the images by --images or by --image-list, not both");
 	i.odometry_csv = odometry.getValue(), i.carmen_log = carmen.getValue(), i.output = requiredPath(out);
 	i.omni_label = omni_label.getValue(), i.laser_label = laser_label.getValue();
 	i.laser_pose = poseFromText(laser_pose.getValue());

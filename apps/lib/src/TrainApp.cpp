@@ -61,6 +61,10 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	o.learning.light_changes = {0.0};
 	if (learn_light.getValue() > 0) o.learning.light_changes.push_back(learn_light.getValue());
 	t.figures_prefix = optionalPath(figures), t.figures_frame = figures_frame.getValue();
+	// Options that only mean something beside another: given without it, say so rather than ignore them.
+	for (const TCLAP::Arg* a : std::initializer_list<const TCLAP::Arg*>{&no_chroma_tie, &validate_on, &hold_out, &learn_light})
+		if (a->isSet() && o.learn_ini.empty()) throw std::invalid_argument("--" + a->getName() + " needs --learn");
+	if (figures_frame.isSet() && t.figures_prefix.empty()) throw std::invalid_argument("--figures-frame needs --figures");
 	if (!t.figures_prefix.empty() && !o.learn_ini.empty())
 		throw std::invalid_argument("--figures is drawn by a plain training run, not with --learn: run them apart");
 	o.verbosity = verbosity.level();

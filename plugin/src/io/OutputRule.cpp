@@ -21,8 +21,15 @@ namespace omnirange
 std::string outputPath(const std::string& path)
 {
 	if (path.empty()) return path;
-	std::string p = fs::path(path).lexically_normal().string();
-	while (p.size() > 1 && p.back() == '/') p.pop_back();
+	// Only trailing slashes and '.' go: "a/link/.." is where the link leads, so
+	// '..' is left for the system to resolve, as it will when the file is opened.
+	std::string p = path;
+	for (bool changed = true; changed;)
+	{
+		changed = false;
+		while (p.size() > 1 && p.back() == '/') p.pop_back(), changed = true;
+		if (p.size() > 2 && p.compare(p.size() - 2, 2, "/.") == 0) p.resize(p.size() - 2), changed = true;
+	}
 	return p;
 }
 
@@ -82,6 +89,15 @@ const char* kindName(OutputKind kind)
 	return "";
 }
 
+/** `path` as written, made absolute, without its "." parts; ".." is kept (through a link it is not the parent as written). */
+fs::path asWritten(const std::string& path)
+{
+	fs::path out;
+	for (const auto& part : fs::absolute(path))
+		if (part != "." && !part.empty()) out /= part;
+	return out;
+}
+
 /** `inner` is `outer` or lies somewhere below it. */
 bool within(const fs::path& inner, const fs::path& outer)
 {
@@ -124,7 +140,7 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 	std::error_code ec;
 	// A linked folder is replaced as a link (nothing it points to is lost); a
 	// linked file is written through, so the file it names is the output.
-	const fs::path abs = fs::absolute(output);
+	const fs::path abs = asWritten(output);
 	const bool link_itself = kind == OutputKind::Folder && fs::is_symlink(abs, ec);
 	const fs::path out = link_itself ? fs::weakly_canonical(abs.parent_path(), ec) / abs.filename()
 									 : fs::weakly_canonical(abs, ec);
@@ -132,11 +148,12 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 	{
 		if (in.empty()) continue;
 		const fs::path input = fs::weakly_canonical(fs::absolute(outputPath(in)), ec);
-		const fs::path input_as_written = fs::absolute(outputPath(in)).lexically_normal();
+		const fs::path input_as_written = asWritten(outputPath(in));
 		// A link replaced as a link is its own path, not the folder it names.
-		if ((link_itself ? out == input : same(out, input)) || input_as_written == abs.lexically_normal()) throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
+		if ((link_itself ? out == input : same(out, input)) || input_as_written == abs)
+			throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
 		// Also as written: a folder that reaches an input through a link holds it too.
-		const bool holds_as_written = within(fs::absolute(outputPath(in)).lexically_normal(), abs.lexically_normal());
+		const bool holds_as_written = within(input_as_written, abs);
 		if (within(input, out) || holds_as_written)
 			throw std::runtime_error("the output '" + output + "' holds the input '" + in + "': refusing to replace it");
 		if (within(out, input))
@@ -153,11 +170,10 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	requireApartFromInputs(output, kind, inputs);
 	const fs::path p(output);
 	std::error_code ec;
-	// A link is the user's: replaced (not what it names) only when they say so;
-	// but a rawlog's images folder may be the link a scan made to its input's images.
+	// A link is the user's: replaced (not what it names) only when they say so.
 	if (kind == OutputKind::Folder && fs::is_symlink(p, ec))
 	{
-		if (force || program == kRawlogImagesOwner) return;
+		if (force) return;
 		throw std::runtime_error("the output folder '" + output + "' is a symbolic link (remove it, or give another output)");
 	}
 	const auto status = fs::status(p, ec);  // through symlinks

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -29,12 +30,26 @@ std::string imagesDirFor(const std::string& rawlog_path)
 	return (p.parent_path() / (stem + "_Images")).string();
 }
 
+namespace
+{
+/** `images` is the link a scan wrote beside `rawlog` to its input's images:
+ * a link, beside a rawlog of ours. Only then may a link be replaced unasked. */
+bool imagesLinkOf(const std::string& rawlog, const std::string& images)
+{
+	std::error_code ec;
+	if (!fs::is_symlink(images, ec) || !fs::is_regular_file(rawlog, ec)) return false;
+	char magic[2] = {};
+	std::ifstream(rawlog, std::ios::binary).read(magic, 2);
+	return magic[0] == '\x1f' && magic[1] == '\x8b';
+}
+}  // namespace
+
 void requireRawlogOutputAllowed(const std::string& rawlog, const std::vector<std::string>& inputs, bool force)
 {
 	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
 	// The images go beside the file written (through a link, the file it names).
-	requireOutputAllowed(imagesDirFor(replacedFileOf(outputPath(rawlog))), OutputKind::Folder, kRawlogImagesOwner,
-						 inputs, force);
+	const std::string file = replacedFileOf(outputPath(rawlog)), images = imagesDirFor(file);
+	requireOutputAllowed(images, OutputKind::Folder, kRawlogImagesOwner, inputs, force || imagesLinkOf(file, images));
 }
 
 RawlogWriter::RawlogWriter(const std::string& path, int gz_level)
@@ -130,7 +145,7 @@ void RawlogWriter::commit()
 	// all three moves succeeded is the old folder removed.
 	// The rule the programs check before they start, checked again here for
 	// every writer (a library user need not have called it).
-	requireOutputAllowed(images_, OutputKind::Folder, kRawlogImagesOwner, {}, replace_any_);
+	requireOutputAllowed(images_, OutputKind::Folder, kRawlogImagesOwner, {}, replace_any_ || imagesLinkOf(path_, images_));
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
 	const std::string old = images_ + ".old-" + std::to_string(::getpid());
 	if (had_old) fs::rename(images_, old);

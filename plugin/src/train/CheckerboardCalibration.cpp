@@ -11,7 +11,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 namespace omnirange
@@ -118,6 +120,11 @@ CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string
 	if (o.columns < 2 || o.rows < 2 || o.columns > kMaxBoardCorners || o.rows > kMaxBoardCorners || !(o.square > 0))
 		throw std::invalid_argument("the board needs 2 to " + std::to_string(kMaxBoardCorners) +
 									" inner corners each way and a square > 0 m");
+	// One photograph given twice would count as two boards and look like agreement.
+	for (std::size_t i = 0; i < files.size(); ++i)
+		for (std::size_t j = i + 1; j < files.size(); ++j)
+			if (std::error_code ec; files[i] == files[j] || std::filesystem::equivalent(files[i], files[j], ec))
+				throw std::invalid_argument("image '" + files[j] + "' is given twice (also as '" + files[i] + "')");
 	const cv::Size pattern(o.columns, o.rows);
 	std::vector<cv::Vec3d> board;
 	for (int r = 0; r < o.rows; ++r)
