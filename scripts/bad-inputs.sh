@@ -283,6 +283,9 @@ fi
 printf 'a\n<!-- table: truth -->\nold\n<!-- table: maps -->\nx\n<!-- end table -->\n' > nested.md
 run_case "summary: a table block left open before the next" "error:not closed before the next" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill nested.md
 run_case "import: --images and --image-list both" "error:not both" imp.rawlog -- "$apps/omnirange-import" -q --images imp --image-list imp_list.csv --laser imp_laser.csv -o imp.rawlog
+mkdir -p gmap && cp "$src/rawlogs/factory-sample_truemap.gridmap.gz" gmap/gm_truemap.gridmap.gz
+printf 'omnirange-world 1\nname g\ngridmap file=gm_truemap.gridmap.gz z1=2 material=brick\n' > gmap/g.world
+run_case "sim: the world's grid map as the output's true map" "error:is the input" none.out -- "$apps/omnirange-sim" -q -w gmap/g.world -r "$src/worlds/campus.route" -n 2 -o gmap/gm.rawlog
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

@@ -82,11 +82,11 @@ Metrics Experiment::run()
 	// replaced only when all of them succeeded, so a failed run never leaves
 	// new data beside an old report.
 	const std::string report = outputPath(fs::absolute(c_.output).string());
-	StagedFolder staged(
-		report, kProgram,
-		{c_.ini_file, c_.world, c_.route, c_.robot, c_.icp_laser_ini, c_.icp_omni_ini, c_.map_laser_ini, c_.map_omni_ini,
-		 c_.rbpf_laser_ini, c_.rbpf_omni_ini},
-		force_);
+	std::vector<std::string> inputs{c_.ini_file,      c_.world,         c_.route,          c_.robot,
+									c_.icp_laser_ini, c_.icp_omni_ini,  c_.map_laser_ini,  c_.map_omni_ini,
+									c_.rbpf_laser_ini, c_.rbpf_omni_ini};
+	inputs.insert(inputs.end(), c_.world_maps.begin(), c_.world_maps.end());
+	StagedFolder staged(report, kProgram, inputs, force_);
 	const std::string staging = staged.path();
 	setFolder(staging);
 	Metrics m;

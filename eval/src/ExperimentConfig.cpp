@@ -87,10 +87,11 @@ void validate(ExperimentConfig& c)
 }
 
 /** The inputs of later stages, checked now: the robot, the world, the route. */
-void checkSimulatorInputs(const ExperimentConfig& c)
+void checkSimulatorInputs(ExperimentConfig& c)
 {
 	const auto robot = sim::RobotParams::loadFile(c.robot);
 	const auto world = sim::loadWorld(c.world);
+	c.world_maps = world.maps;
 	sim::checkRouteClear(sim::loadRoute(c.route), world, robot.robot.clearance, robot.omnicam.camera.h);
 }
 }  // namespace

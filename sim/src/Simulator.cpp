@@ -61,6 +61,12 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		robot.validate();
 	}
 	const World world = loadWorld(o.world_file);
+	// The grid maps the world names are read as surely as the world: never an output.
+	std::vector<std::string> with_maps = inputs;
+	with_maps.insert(with_maps.end(), world.maps.begin(), world.maps.end());
+	requireRawlogOutputAllowed(o.output, with_maps, o.force);
+	requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::Rawlog}},
+						  "omnirange-sim", with_maps, o.force);
 	const Route route = loadRoute(o.route_file);
 	checkRouteClear(route, world, robot.robot.clearance, robot.omnicam.camera.h);
 	const double dt = 1.0 / robot.robot.frame_rate;

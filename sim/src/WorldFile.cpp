@@ -318,6 +318,7 @@ class Parser
 			const auto slash = path_.rfind('/');
 			if (slash != std::string::npos) file = path_.substr(0, slash + 1) + file;
 		}
+		w_.maps.push_back(file);
 		mrpt::maps::COccupancyGridMap2D grid;
 		try
 		{

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace omnirange::eval
 {
@@ -16,6 +17,7 @@ struct ExperimentConfig
 	std::string ini_file;  ///< the experiment's own ini (not a key)
 	std::string name{"experiment"};
 	std::string world, route, robot;  ///< files, relative to the ini's folder
+	std::vector<std::string> world_maps;  ///< the grid maps the world names (inputs too)
 	std::string output;  ///< the report folder
 	std::string icp_laser_ini, icp_omni_ini;  ///< icp-slam configurations
 	/** rbpf-slam configurations (a particle filter); empty: rbpf-slam is not run for that sensor. */

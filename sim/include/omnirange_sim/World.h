@@ -46,6 +46,7 @@ class World
    public:
 	std::string name;
 	std::string file;  ///< where it was read from
+	std::vector<std::string> maps;  ///< the grid-map files it names (`gridmap file=`), read with it: inputs too
 	Vec2 lo{-10, -10}, hi{10, 10};  ///< [m] the map's extent
 	int floor_material{0};
 	std::vector<Material> materials;
