@@ -33,6 +33,7 @@ Summary collectMetrics(const std::vector<SuiteEntry>& entries, const std::string
 	{
 		const std::string file = results_dir + "/" + e.name + "/metrics.ini";
 		if (!fs::is_regular_file(file)) throw std::runtime_error("no report of '" + e.name + "': '" + file + "' is missing");
+		requireNoRepeatedKeys(file);  // read as strictly as any ini: a garbled report is not an empty one
 		const mrpt::config::CConfigFile ini(file);
 		std::vector<std::string> keys;
 		ini.getAllKeys("metrics", keys);
