@@ -39,16 +39,8 @@ jpg=$work/factory-sample_Images/factory-sample_OMNICAM_000003.jpg
 head -c 4000 "$jpg" >"$jpg.cut" && mv "$jpg.cut" "$jpg"
 echo "precious" >"$work/user.hist"  # where Train writes (the ini's name, .hist)
 
-display=:$(( 80 + RANDOM % 9 ))
-Xvfb "$display" -screen 0 1600x1000x24 >/dev/null 2>&1 & xvfb=$!
-tuner=""
-trap 'kill $tuner $xvfb 2>/dev/null || true' EXIT
-export DISPLAY=$display
-sleep 2
-"$apps/omnirange-tuner" -i "$log" -c "$work/user.ini" -H "$work/f.hist" </dev/null >"$work/tuner.log" 2>&1 & tuner=$!
-win=$(timeout 30 xdotool search --sync --onlyvisible --name "omnirange-tuner" | head -1)
-sleep 2
-xdotool windowactivate --sync "$win" 2>/dev/null || xdotool windowfocus --sync "$win"
+. "$(dirname "$0")/tuner_window.sh"
+start_tuner "$work/tuner.log" -i "$log" -c "$work/user.ini" -H "$work/f.hist"
 press() {  # press WINDOW KEY...: without a window manager, a window takes keys once it has the focus
   xdotool windowfocus --sync "$1" 2>/dev/null || true
   xdotool key --window "$1" "${@:2}" 2>/dev/null || true  # a dialog may be gone before the key is released
@@ -56,15 +48,12 @@ press() {  # press WINDOW KEY...: without a window manager, a window takes keys 
 }
 key() { press "$win" "$@"; }
 title() { xdotool getwindowname "$win"; }
-count() {  # pixels of exactly this colour in the screenshot $work/shot.png
-  /usr/bin/convert "$work/shot.png" -fill black +opaque "$1" -fill white -opaque "$1" -format "%[fx:round(mean*w*h)]" info:
-}
 saved_threshold() { grep "^threshold = " "$work/user.ini" | cut -d' ' -f3; }
 dialog() { timeout 10 xdotool search --sync --onlyvisible --name "$1" | head -1 || true; }
 
 key Right; key Right; key Right
 xwd -root -silent | /usr/bin/convert xwd:- "$work/shot.png"
-placeholder=$(count "rgb(90,40,40)"); green=$(count "rgb(0,255,0)")
+placeholder=$(count_colour "$work/shot.png" "rgb(90,40,40)"); green=$(count_colour "$work/shot.png" "rgb(0,255,0)")
 echo "frame 3: $placeholder placeholder pixels, $green hit-green pixels"
 check "the corrupt frame 3 is named in the title" grep -q "frame 3 / 19" <(title)
 check "the corrupt frame shows a placeholder" [ "$placeholder" -gt 100000 ]

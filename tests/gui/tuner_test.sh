@@ -12,17 +12,8 @@ rm -rf "$work" && mkdir -p "$work"
 cp "$src/ini/factory.ini" "$work/user.ini"
 cp "$src/ini/experiment-base.ini" "$work/"  # user.ini's base
 
-display=:$(( 90 + RANDOM % 9 ))
-Xvfb "$display" -screen 0 1600x1000x24 >/dev/null 2>&1 & xvfb=$!
-tuner=""
-trap 'kill $tuner $xvfb 2>/dev/null || true' EXIT
-export DISPLAY=$display
-sleep 2
-"$apps/omnirange-tuner" -i "$src/rawlogs/factory-sample.rawlog" -c "$work/user.ini" -H "$work/f.hist" \
-  </dev/null >"$work/tuner.log" 2>&1 & tuner=$!
-win=$(timeout 30 xdotool search --sync --onlyvisible --name "omnirange-tuner" | head -1)
-sleep 2
-xdotool windowactivate --sync "$win" 2>/dev/null || xdotool windowfocus --sync "$win"
+. "$(dirname "$0")/tuner_window.sh"
+start_tuner "$work/tuner.log" -i "$src/rawlogs/factory-sample.rawlog" -c "$work/user.ini" -H "$work/f.hist"
 for i in 1 2 3 4 5; do xdotool key --window "$win" Right; sleep 0.3; done
 xdotool key --window "$win" bracketright
 sleep 1
@@ -37,10 +28,7 @@ echo "title: $title"
 grep -q "^threshold = 0.15$" "$work/user.ini" || { echo "FAIL: threshold not saved as 0.15"; grep threshold "$work/user.ini"; fail=1; }
 # Every comment of the original, in order (keys the ini lacked come with comments of their own).
 diff <(grep '^;' "$src/ini/factory.ini") <(grep '^;' "$work/user.ini" | grep -Fxf <(grep '^;' "$src/ini/factory.ini")) >/dev/null || { echo "FAIL: comments changed"; fail=1; }
-count() {  # pixels of exactly this colour in the screenshot
-  /usr/bin/convert "$work/shot.png" -fill black +opaque "$1" -fill white -opaque "$1" -format "%[fx:round(mean*w*h)]" info:
-}
-green=$(count "rgb(0,255,0)"); cyan=$(count "rgb(0,255,255)")
+green=$(count_colour "$work/shot.png" "rgb(0,255,0)"); cyan=$(count_colour "$work/shot.png" "rgb(0,255,255)")
 echo "screenshot: $green hit-green and $cyan laser-cyan pixels"
 [ "$green" -gt 200 ] || { echo "FAIL: no ray overlay"; fail=1; }
 [ "$cyan" -gt 100 ] || { echo "FAIL: no laser overlay"; fail=1; }

@@ -7,11 +7,11 @@
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/io/IniSectionWriter.h>
 #include <omnirange/io/LayeredIni.h>
+#include <omnirange/io/ObservationImage.h>
 #include <omnirange/io/OptionsTable.h>
 #include <omnirange/io/Progress.h>
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <cmath>
 #include <cstdio>
@@ -50,12 +50,7 @@ void addImagesOf(const std::string& dir, std::vector<std::string>& files)
 	if (!fs::is_directory(dir)) throw std::runtime_error("--checkerboard-dir: no folder '" + dir + "'");
 	std::vector<std::string> found;
 	for (const auto& e : fs::directory_iterator(dir))
-	{
-		std::string ext = e.path().extension().string();
-		std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-		for (const char* kind : {".jpg", ".jpeg", ".png", ".pgm", ".ppm", ".bmp", ".tif", ".tiff"})
-			if (ext == kind && e.is_regular_file()) found.push_back(e.path().string());
-	}
+		if (isImageFileName(e.path().string()) && e.is_regular_file()) found.push_back(e.path().string());
 	if (found.empty()) throw std::runtime_error("--checkerboard-dir: no image in '" + dir + "'");
 	std::sort(found.begin(), found.end());
 	files.insert(files.end(), found.begin(), found.end());
@@ -76,7 +71,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	TCLAP::MultiArg<std::string> boards("", "checkerboard", "an image of a checkerboard (repeat for each; >= 3 found needed)", false, "IMAGE", cmd);
 	TCLAP::ValueArg<std::string> save("", "save-to", "write what was found (orientation, then R or alpha and boundary_offset; cx, cy with --rim; the camera model with --checkerboard or --ocamcalib) into this ini's section, keeping the rest of the file", false, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> board_dir("", "checkerboard-dir",
-										   "every image (jpg, png, pgm, ppm, bmp, tif) in this folder, as --checkerboard each",
+										   "every image (jpg, png, pgm, ppm, bmp) in this folder, as --checkerboard each",
 										   false, "", "DIR", cmd);
 	TCLAP::MultiArg<std::string> rims("", "rim", "an ordinary image: find the mirror's centre and rim radius (repeat; a few images)", false, "IMAGE", cmd);
 	TCLAP::ValueArg<std::string> ocam("", "ocamcalib", "OCamCalib's calib_results.txt: the camera's polynomial model (with --save-to: into the ini)", false, "", "FILE", cmd);

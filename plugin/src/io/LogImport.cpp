@@ -14,7 +14,6 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
-#include <set>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -64,13 +63,6 @@ double number(const std::string& field, const std::string& name)
 	}
 }
 
-bool isImageFile(const fs::path& p)
-{
-	static const std::set<std::string> kinds{".jpg", ".jpeg", ".png", ".pgm", ".ppm", ".bmp"};
-	std::string ext = p.extension().string();
-	std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-	return kinds.count(ext) > 0;
-}
 }  // namespace
 
 void requireTimeAfter(double previous, double time, const std::string& what)
@@ -101,7 +93,7 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 	if (!fs::is_directory(dir)) throw std::runtime_error("no image folder '" + dir + "'");
 	for (const auto& entry : fs::directory_iterator(dir))
 	{
-		if (!isImageFile(entry.path()) || entry.is_directory()) continue;
+		if (!isImageFileName(entry.path().string()) || entry.is_directory()) continue;
 		// Named as an image but a FIFO or a device: it would block the read, and skipping it would lose a frame.
 		if (!entry.is_regular_file())
 			throw std::runtime_error("'" + entry.path().string() + "' is named as an image but is not a regular file");

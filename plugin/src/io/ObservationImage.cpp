@@ -105,6 +105,15 @@ std::string imageProblem(Bytes b)
 }
 }  // namespace
 
+bool isImageFileName(const std::string& file)
+{
+	std::string ext = std::filesystem::path(file).extension().string();
+	for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+	for (const char* kind : {".jpg", ".jpeg", ".png", ".pgm", ".ppm", ".bmp"})
+		if (ext == kind) return true;
+	return false;
+}
+
 cv::Mat decodeImageFile(const std::string& file, const std::string& label, int flags)
 {
 	const std::string what = "image '" + file + "'" + (label.empty() ? "" : " of " + label);

@@ -60,20 +60,6 @@ bool isIni(const std::string& path)
 	return true;  // blank: nothing to lose
 }
 
-bool ofKind(const std::string& path, OutputKind kind)
-{
-	const std::string head = firstBytes(path, 8);
-	switch (kind)
-	{
-		case OutputKind::Rawlog: return head.size() >= 2 && head[0] == '\x1f' && head[1] == '\x8b';
-		case OutputKind::Histogram: return head == "OMNIHIST";
-		case OutputKind::Ini: return isIni(path);
-		case OutputKind::Text: return isText(firstBytes(path, 4096));
-		case OutputKind::Image: return head.rfind("\x89PNG", 0) == 0 || head.rfind("\xff\xd8\xff", 0) == 0;
-		case OutputKind::Folder: return false;
-	}
-	return false;
-}
 
 const char* kindName(OutputKind kind)
 {
@@ -119,7 +105,7 @@ std::vector<std::string> withWhatInputsBring(const std::vector<std::string>& inp
 		if (in.empty()) continue;
 		all.push_back(in);
 		if (!fs::is_regular_file(in, ec)) continue;
-		if (ofKind(in, OutputKind::Rawlog) || fs::path(in).extension() == ".rawlog")
+		if (isOfKind(in, OutputKind::Rawlog) || fs::path(in).extension() == ".rawlog")
 			all.push_back(imagesDirFor(in));
 		else if (isIni(in))
 			for (const auto& base : iniBasesOf(in)) all.push_back(base);
@@ -190,7 +176,7 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	if (!fs::is_regular_file(status))
 		throw std::runtime_error("the output '" + output + "' exists and is not a file");
 	replacedFileOf(output);  // a read-only file is refused before any work, --force or not
-	if (force || ofKind(output, kind)) return;
+	if (force || isOfKind(output, kind)) return;
 	throw std::runtime_error("'" + output + "' exists and is not " + kindName(kind) + hint);
 }
 
@@ -245,7 +231,7 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 		if (fs::is_directory(fs::symlink_status(p, ec)))
 			return program.empty() ? fs::exists(p / kOutputMarker, ec) : isOutputFolderOf(p.string(), program);
 		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
-			   (fs::file_size(p, ec) == 0 || ofKind(p.string(), kind));
+			   (fs::file_size(p, ec) == 0 || isOfKind(p.string(), kind));
 	};
 	for (const auto& e : fs::directory_iterator(dir, ec))
 	{
@@ -309,6 +295,21 @@ bool isOutputFolderOf(const std::string& dir, const std::string& program)
 	std::ifstream f(fs::path(dir) / kOutputMarker);
 	std::string name;
 	return f && std::getline(f, name) && trimmed(name) == program;
+}
+
+bool isOfKind(const std::string& path, OutputKind kind)
+{
+	const std::string head = firstBytes(path, 8);
+	switch (kind)
+	{
+		case OutputKind::Rawlog: return head.size() >= 2 && head[0] == '\x1f' && head[1] == '\x8b';
+		case OutputKind::Histogram: return head == "OMNIHIST";
+		case OutputKind::Ini: return isIni(path);
+		case OutputKind::Text: return isText(firstBytes(path, 4096));
+		case OutputKind::Image: return head.rfind("\x89PNG", 0) == 0 || head.rfind("\xff\xd8\xff", 0) == 0;
+		case OutputKind::Folder: return false;
+	}
+	return false;
 }
 
 }  // namespace omnirange

@@ -10,7 +10,6 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -37,10 +36,7 @@ namespace
 bool imagesLinkOf(const std::string& rawlog, const std::string& images)
 {
 	std::error_code ec;
-	if (!fs::is_symlink(images, ec) || !fs::is_regular_file(rawlog, ec)) return false;
-	char magic[2] = {};
-	std::ifstream(rawlog, std::ios::binary).read(magic, 2);
-	return magic[0] == '\x1f' && magic[1] == '\x8b';
+	return fs::is_symlink(images, ec) && fs::is_regular_file(rawlog, ec) && isOfKind(rawlog, OutputKind::Rawlog);
 }
 }  // namespace
 

@@ -10,6 +10,10 @@
 
 namespace omnirange
 {
+/** Whether `file` is named as an image the programs read from a folder
+ * (.jpg, .jpeg, .png, .pgm, .ppm, .bmp, in any case). */
+bool isImageFileName(const std::string& file);
+
 /** Images past this many pixels are refused from their header, before decoding. */
 inline constexpr unsigned long kMaxImagePixels = 100000000;
 

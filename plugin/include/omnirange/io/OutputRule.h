@@ -26,6 +26,10 @@ enum class OutputKind
 	Folder  ///< a folder holding kOutputMarker
 };
 
+/** Whether the existing file `path` is of `kind`, told by its first bytes
+ * (Folder: never; use isOutputFolderOf()). */
+bool isOfKind(const std::string& path, OutputKind kind);
+
 /** `path` as a user means it: no trailing '/', "." resolved; "" stays "". */
 std::string outputPath(const std::string& path);
 

@@ -1,0 +1,23 @@
+# Sourced by the tuner's Xvfb tests: a virtual display, the tuner on it, and
+# a pixel count of a screenshot.
+#   start_tuner LOG ARGS...  starts Xvfb and omnirange-tuner ARGS (from $apps),
+#                            its output into LOG; sets $win (its window), $tuner, $xvfb
+#   count_colour SHOT COLOUR pixels of exactly COLOUR in the image SHOT
+
+start_tuner() {
+  local log=$1; shift
+  local display=:$(( 80 + RANDOM % 19 ))
+  Xvfb "$display" -screen 0 1600x1000x24 >/dev/null 2>&1 & xvfb=$!
+  tuner=""
+  trap 'kill $tuner $xvfb 2>/dev/null || true' EXIT
+  export DISPLAY=$display
+  sleep 2
+  "$apps/omnirange-tuner" "$@" </dev/null >"$log" 2>&1 & tuner=$!
+  win=$(timeout 30 xdotool search --sync --onlyvisible --name "omnirange-tuner" | head -1)
+  sleep 2
+  xdotool windowactivate --sync "$win" 2>/dev/null || xdotool windowfocus --sync "$win"
+}
+
+count_colour() {
+  /usr/bin/convert "$1" -fill black +opaque "$2" -fill white -opaque "$2" -format "%[fx:round(mean*w*h)]" info:
+}
