@@ -126,17 +126,20 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		if (progress) progress(static_cast<int>(k + 1), static_cast<int>(poses.size()));
 	}
 
-	// 3. The true map, as an MRPT grid map and a PNG.
+	// 3. The true map, as an MRPT grid map and a PNG: staged, then committed
+	//    with the rawlog and its images, so a failure leaves the old three whole.
 	const auto grid = trueMap(world, o.map_resolution, robot.omnicam.camera.h);
-	writeAtomically(base + "_truemap.gridmap.gz", [&](const std::string& tmp) {
+	StagedFile map(base + "_truemap.gridmap.gz", [&](const std::string& tmp) {
 		mrpt::io::CFileGZOutputStream f;
 		if (!f.open(tmp)) throw std::runtime_error("cannot write '" + base + "_truemap.gridmap.gz'");
 		mrpt::serialization::archiveFrom(f) << grid;
 	});
 	mrpt::img::CImage png;
 	grid.getAsImage(png, true);  // north up, as saveAsBitmapFile() draws it
-	writeImageAtomically(base + "_truemap.png", png.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY));
+	StagedFile picture = stageImage(base + "_truemap.png", png.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY));
 	out.commit();
+	map.commit();
+	picture.commit();
 
 	SimSummary s;
 	s.frames = static_cast<int>(poses.size());

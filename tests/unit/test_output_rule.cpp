@@ -254,3 +254,33 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 	EXPECT_TRUE(fs::exists(d + "/log.rawlog"));
 	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 2);  // no .old or .tmp left
 }
+
+TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)
+{
+	// omnirange-sim's order: the true map and its picture staged, the rawlog
+	// committed, then the two renamed; a rawlog that fails keeps the old three.
+	const std::string d = fresh("staged");
+	write(d + "/log_truemap.gridmap.gz", "old map");
+	write(d + "/log_truemap.png", "old picture");
+	fs::create_directory(d + "/log_Images");
+	write(d + "/log_Images/photo.jpg", "the user's");
+	const auto simulate = [&] {
+		StagedFile map(d + "/log_truemap.gridmap.gz", [](const std::string& tmp) { write(tmp, "new map"); });
+		StagedFile picture = stageImage(d + "/log_truemap.png", cv::Mat(4, 4, CV_8UC3, cv::Scalar(9, 9, 9)));
+		RawlogWriter w(d + "/log.rawlog");
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 2, 3)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit();
+		map.commit();
+		picture.commit();
+	};
+	EXPECT_THROW(simulate(), std::runtime_error);  // the images folder is the user's
+	EXPECT_EQ(read(d + "/log_truemap.gridmap.gz"), "old map");
+	EXPECT_EQ(read(d + "/log_truemap.png"), "old picture");
+	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 3);  // no temporary left
+	fs::remove_all(d + "/log_Images");
+	simulate();
+	EXPECT_EQ(read(d + "/log_truemap.gridmap.gz"), "new map");
+	EXPECT_EQ(read(d + "/log_truemap.png").substr(1, 3), "PNG");
+	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 4);
+}

@@ -38,32 +38,47 @@ void keepModeOf(const std::string& target, const std::string& tmp)
 	if (fs::is_regular_file(target, ec)) fs::permissions(tmp, fs::status(target, ec).permissions());
 }
 
-void writeAtomically(
-	const std::string& given, const std::function<void(const std::string&)>& write)
+StagedFile::StagedFile(const std::string& given, const std::function<void(const std::string&)>& write)
+	: path_(replacedFileOf(given)), tmp_(path_ + ".tmp-" + std::to_string(static_cast<long>(::getpid())))
 {
-	namespace fs = std::filesystem;
-	const std::string path = replacedFileOf(given);
-	const std::string tmp =
-		path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
-	temporaries::add(tmp);
+	temporaries::add(tmp_);
 	try
 	{
-		write(tmp);
-		keepModeOf(path, tmp);
-		syncToDisk(tmp, path);
+		write(tmp_);
+		keepModeOf(path_, tmp_);
+		syncToDisk(tmp_, path_);
 	}
 	catch (...)
 	{
-		std::remove(tmp.c_str());
-		temporaries::forget(tmp);
+		std::remove(tmp_.c_str());
+		temporaries::forget(tmp_);
 		throw;
 	}
-	temporaries::forget(tmp);
-	if (std::rename(tmp.c_str(), path.c_str()) != 0)
+}
+
+StagedFile::~StagedFile()
+{
+	if (committed_) return;
+	std::remove(tmp_.c_str());
+	temporaries::forget(tmp_);
+}
+
+void StagedFile::commit()
+{
+	if (committed_) return;
+	committed_ = true;
+	temporaries::forget(tmp_);
+	if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
 	{
-		std::remove(tmp.c_str());
-		throw std::runtime_error("cannot rename temporary file to '" + path + "'");
+		std::remove(tmp_.c_str());
+		throw std::runtime_error("cannot rename temporary file to '" + path_ + "'");
 	}
+}
+
+void writeAtomically(
+	const std::string& given, const std::function<void(const std::string&)>& write)
+{
+	StagedFile(given, write).commit();
 }
 
 void syncToDisk(const std::string& path, const std::string& what)
@@ -90,24 +105,42 @@ void requireWholeGzipFile(const std::string& path, const std::string& what)
 	if (!whole) throw std::runtime_error("'" + what + "' did not reach the disk whole (is the disk full?)");
 }
 
-void writeFileAtomically(const std::string& path, const std::string& bytes)
+namespace
 {
-	writeAtomically(path, [&](const std::string& tmp) {
+std::function<void(const std::string&)> writerOf(const std::string& path, const std::string& bytes)
+{
+	return [&path, &bytes](const std::string& tmp) {
 		std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
 		if (!f) throw std::runtime_error("cannot write '" + path + "'");
 		f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 		f.close();
 		if (!f) throw std::runtime_error("error while writing '" + path + "'");
-	});
+	};
 }
 
-void writeImageAtomically(const std::string& path, const cv::Mat& image)
+std::string encoded(const std::string& path, const cv::Mat& image)
 {
 	const auto dot = path.rfind('.');
 	std::vector<uchar> buf;
 	if (dot == std::string::npos || !cv::imencode(path.substr(dot), image, buf))
 		throw std::runtime_error("cannot encode image '" + path + "'");
-	writeFileAtomically(path, std::string(buf.begin(), buf.end()));
+	return std::string(buf.begin(), buf.end());
+}
+}  // namespace
+
+void writeFileAtomically(const std::string& path, const std::string& bytes)
+{
+	writeAtomically(path, writerOf(path, bytes));
 }
 
+void writeImageAtomically(const std::string& path, const cv::Mat& image)
+{
+	writeFileAtomically(path, encoded(path, image));
+}
+
+StagedFile stageImage(const std::string& path, const cv::Mat& image)
+{
+	const std::string bytes = encoded(path, image);
+	return StagedFile(path, writerOf(path, bytes));
+}
 }  // namespace omnirange

@@ -23,6 +23,28 @@ std::string replacedFileOf(const std::string& given);
  * about to replace, if that exists. */
 void keepModeOf(const std::string& target, const std::string& tmp);
 
+/** One file of a multi-file output, written in full to a temporary beside
+ * `path` and synced, but renamed into place only by commit(): an output of
+ * several files stages each, then commits them together, so a failure while
+ * any is written leaves every old file whole. Destroyed uncommitted (an
+ * error, an exception), it removes its temporary. */
+class StagedFile
+{
+   public:
+	/** Calls `write(tmp_path)` and syncs it; if `write` throws, the temporary
+	 * is removed and the error rethrown. */
+	StagedFile(const std::string& path, const std::function<void(const std::string&)>& write);
+	StagedFile(const StagedFile&) = delete;
+	StagedFile& operator=(const StagedFile&) = delete;
+	~StagedFile();
+	/** Renames the temporary to the path. */
+	void commit();
+
+   private:
+	std::string path_, tmp_;
+	bool committed_{false};
+};
+
 /** Calls `write(tmp_path)`, syncs it to disk and renames it to `path`.
  * If `write` throws, the temporary file is removed and the error rethrown;
  * an existing `path` is left untouched. */
@@ -43,5 +65,7 @@ void writeFileAtomically(const std::string& path, const std::string& bytes);
 /** Encodes `image` in the format its path's extension names (.png, .jpg)
  * and writes it atomically. */
 void writeImageAtomically(const std::string& path, const cv::Mat& image);
+/** `image` encoded as its path's extension names, staged (StagedFile). */
+StagedFile stageImage(const std::string& path, const cv::Mat& image);
 
 }  // namespace omnirange
