@@ -281,7 +281,8 @@ if [ -d "$real" ]; then
     --checkerboard "$real/img_para_001.pgm" --checkerboard "$real/img_para_002.pgm" --checkerboard "$real/img_para_001.pgm"
 fi
 printf 'a\n<!-- table: truth -->\nold\n<!-- table: maps -->\nx\n<!-- end table -->\n' > nested.md
-run_case "summary: a table block left open before the next" "error:not closed before the next" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill nested.md
+run_case "summary: a table block left open before the next" "error:nested.md: a table block" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill nested.md
+run_case "summary: -o with --fill (it would be ignored)" "error:-o with --fill" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill nested.md -o sumout
 run_case "import: --images and --image-list both" "error:not both" imp.rawlog -- "$apps/omnirange-import" -q --images imp --image-list imp_list.csv --laser imp_laser.csv -o imp.rawlog
 mkdir -p gmap && cp "$src/rawlogs/factory-sample_truemap.gridmap.gz" gmap/gm_truemap.gridmap.gz
 printf 'omnirange-world 1\nname g\ngridmap file=gm_truemap.gridmap.gz z1=2 material=brick\n' > gmap/g.world

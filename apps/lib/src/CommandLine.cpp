@@ -128,6 +128,11 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	}
 	catch (const std::exception& e)
 	{
+		if (temporaries::interrupted())  // the interrupt's own doing: it ends the run
+		{
+			std::cerr << name << ": interrupted\n";
+			temporaries::waitForInterrupt();
+		}
 		std::cerr << name << ": error: " << errorText(e) << "\n";
 		return 1;
 	}

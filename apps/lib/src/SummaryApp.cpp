@@ -36,6 +36,8 @@ SummaryApp::Options SummaryApp::parse(int argc, const char* const* argv)
 	if (!o.fill.empty() && o.csv.empty()) throw std::runtime_error("--fill needs --csv");
 	if (o.check && o.fill.empty()) throw std::runtime_error("--check needs --fill");
 	if (o.fill.empty() && o.output.empty()) throw std::runtime_error("give -o PREFIX, or --csv with --fill");
+	if (!o.fill.empty() && !o.output.empty())
+		throw std::runtime_error("-o with --fill: --fill makes the named files' tables again in place, and writes nothing else");
 	return o;
 }
 
@@ -50,7 +52,16 @@ void SummaryApp::fillOrCheck(const std::string& file, const std::string& csv)
 	if (!in) throw std::runtime_error("cannot read '" + file + "'");
 	std::ostringstream text;
 	text << in.rdbuf();
-	const std::string filled = eval::fillTables(text.str(), eval::readCsv(csv));
+	const eval::Summary table = eval::readCsv(csv);
+	std::string filled;
+	try
+	{
+		filled = eval::fillTables(text.str(), table);
+	}
+	catch (const std::runtime_error& e)
+	{
+		throw std::runtime_error(file + ": " + e.what());
+	}
 	if (filled == text.str())
 	{
 		MRPT_LOG_INFO_STREAM(file << ": its tables are " << csv << "'s");

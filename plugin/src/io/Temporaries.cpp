@@ -31,6 +31,7 @@ std::set<std::string>& paths()
 	return *p;
 }
 std::atomic<pid_t> child{0};
+std::atomic<bool> interrupting{false};
 std::string& program()
 {
 	static auto* p = new std::string;
@@ -122,6 +123,7 @@ void removeOnInterrupt()
 	std::thread([set] {
 		int sig = 0;
 		if (sigwait(&set, &sig) != 0) return;
+		interrupting.store(true);
 		// A program still writing into a temporary folder ends first.
 		if (const pid_t c = child.load(); c > 0)
 		{
@@ -137,6 +139,13 @@ void removeOnInterrupt()
 		pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
 		std::raise(sig);
 	}).detach();
+}
+
+bool interrupted() { return interrupting.load(); }
+
+void waitForInterrupt()
+{
+	for (;;) ::pause();
 }
 
 }  // namespace omnirange::temporaries

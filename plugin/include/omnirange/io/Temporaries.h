@@ -17,6 +17,12 @@ void setChild(int pid);
 void removeAll();
 /** On SIGINT or SIGTERM: removeAll(), then end by that signal as before. */
 void removeOnInterrupt();
+/** Whether an interrupt is being handled: what fails meanwhile (a program
+ * ended for it, a folder removed under the run) is its consequence, not an
+ * error to report; waitForInterrupt() lets it end the run. */
+bool interrupted();
+/** Blocks until the interrupt being handled ends the run. */
+[[noreturn]] void waitForInterrupt();
 /** At exit() too: a library that ends the program from inside (libjpeg,
  * through MRPT, on a corrupt JPEG stored in a rawlog) leaves no temporaries,
  * and "PROGRAM: error: ..." names what the run was doing (setActivity()). */
