@@ -28,7 +28,7 @@ import statistics
 import sys
 
 KEY = ["colour_space", "bins", "light_change", "threshold", "obstacle_ratio", "histogram_smoothing", "N", "K",
-       "boundary_model", "step_threshold"]
+       "boundary_model", "step_threshold", "step_sign"]
 
 
 def load(path):

@@ -49,7 +49,7 @@ bool sameCandidate(const LearnedCandidate& a, const LearnedCandidate& b)
 {
 	return a.space == b.space && a.bins == b.bins && a.light_change == b.light_change && a.threshold == b.threshold &&
 		   a.obstacle_ratio == b.obstacle_ratio && a.smoothing == b.smoothing && a.N == b.N && a.K == b.K &&
-		   a.boundary == b.boundary && a.step_threshold == b.step_threshold;
+		   a.boundary == b.boundary && a.step_threshold == b.step_threshold && a.step_sign == b.step_sign;
 }
 
 std::string rowOf(const LearnedCandidate& c, bool chosen, const TruthStats& s)

@@ -337,7 +337,7 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 			const std::string frames = line.substr(line.rfind(',') + 1);
 			ASSERT_EQ(std::count(frames.begin(), frames.end(), ' '), 2) << line;
 		}
-		EXPECT_EQ(rows, 1152);
+		EXPECT_EQ(rows, 1408);
 	}
 	// The written ini is a [rangefinder] section a user (and omnirange-scan) can load.
 	mrpt::system::COutputLogger quiet("test");
@@ -354,8 +354,8 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	std::ifstream comment(t.learn_ini);
 	std::string head((std::istreambuf_iterator<char>(comment)), {});
 	EXPECT_NE(head.find(", " + std::to_string(bins) + " bins,"), std::string::npos) << head.substr(0, 400);
-	// The grid of 1024, then its 32 best with each of 4 brightness-step thresholds.
-	EXPECT_NE(head.find("1152 candidates"), std::string::npos) << head.substr(0, 400);
+	// The grid of 1024, then its 32 best with each of 4 brightness-step thresholds and 3 signs.
+	EXPECT_NE(head.find("1408 candidates"), std::string::npos) << head.substr(0, 400);
 	// Scored only on the 8 frames learning never saw.
 	const eval::AccuracyResult acc = test::scanAndScore(t.learn_ini, t.output, kSample, dir, 12);
 	EXPECT_EQ(acc.frames, 8);

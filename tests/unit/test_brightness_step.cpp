@@ -25,12 +25,13 @@ cv::Mat row(int n, const std::function<double(int)>& level)
 	return r;
 }
 
-int step(const cv::Mat& r, double threshold, int from = 0, int to = 1000, int window = 4)
+int step(const cv::Mat& r, double threshold, int from = 0, int to = 1000, int window = 4,
+		 StepSign sign = StepSign::Either)
 {
 	std::vector<std::int32_t> pix(r.cols);
 	std::iota(pix.begin(), pix.end(), 0);
 	return findBrightnessStep(r.ptr<std::uint8_t>(), pix.data(), r.cols, from, std::min(to, r.cols - 1), threshold,
-							  window);
+							  window, sign);
 }
 }  // namespace
 
@@ -58,6 +59,22 @@ TEST(BrightnessStep, ExposureDoesNotMoveItButADarkerFaceIsAStepToo)
 		EXPECT_EQ(step(brighter, 0.25), 60) << gain;
 		EXPECT_EQ(step(darker, 0.25), 60) << gain;
 	}
+}
+
+TEST(BrightnessStep, ASignedStepCountsOnlyItsWay)
+{
+	// Floor 160, a shadow 40 % darker over pixels 30 to 49, the floor again,
+	// then a face 30 % brighter from pixel 80.
+	const cv::Mat r = row(120, [](int k) { return k >= 80 ? 208.0 : (k >= 30 && k < 50) ? 96.0 : 160.0; });
+	EXPECT_EQ(step(r, 0.2), 30);  // either way: the shadow's edge
+	EXPECT_EQ(step(r, 0.2, 0, 1000, 4, StepSign::Darker), 30);
+	// Brighter only passes into the shadow, but leaving it is a step up too
+	// (its limit: docs/method.md); past it, the face.
+	EXPECT_EQ(step(r, 0.2, 0, 1000, 4, StepSign::Brighter), 50);
+	EXPECT_EQ(step(r, 0.2, 55, 1000, 4, StepSign::Brighter), 80);
+	EXPECT_EQ(step(r, 0.2, 55, 1000, 4, StepSign::Darker), -1);
+	EXPECT_EQ(toString(stepSignFromString("brighter")), "brighter");
+	EXPECT_THROW(stepSignFromString("up"), std::invalid_argument);
 }
 
 TEST(BrightnessStep, NoiseGradualLightAndThinJointsAreNotSteps)

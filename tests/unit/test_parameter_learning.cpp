@@ -169,7 +169,7 @@ TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsSc
 	RawlogTrainingOptions o = samplePairs(12);
 	LearningOptions lo = oneCandidate();
 	lo.thresholds = {0.01, 0.075};
-	lo.step_thresholds = {0.25, 0.5}, lo.step_candidates = 1;
+	lo.step_thresholds = {0.25, 0.5}, lo.step_candidates = 1, lo.step_signs = {StepSign::Either};
 	const LearningResult r = learnParameters(rp, o, lo);
 	ASSERT_EQ(r.tried.size(), 4u);  // the grid of two, then the step twice on its better one
 	const double grid_best = std::min(r.tried[0].score, r.tried[1].score);
@@ -198,7 +198,7 @@ TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsSc
 	EXPECT_EQ(csv.rfind("colour_space,bins,", 0), 0u);
 	const std::string last_row = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
 	char step_and_score[64];
-	std::snprintf(step_and_score, sizeof step_and_score, ",0.5,%.6f,", r.tried[3].score);
+	std::snprintf(step_and_score, sizeof step_and_score, ",0.5,either,%.6f,", r.tried[3].score);
 	EXPECT_NE(last_row.find(step_and_score), std::string::npos) << last_row;
 	const std::string frames = last_row.substr(last_row.rfind(',') + 1);
 	EXPECT_EQ(static_cast<std::size_t>(std::count(frames.begin(), frames.end(), ' ')) + 1,
@@ -222,6 +222,25 @@ TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsSc
 
 	lo.step_thresholds.clear();  // not tried
 	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 2u);
+}
+
+TEST(ParameterLearning, EachStepThresholdIsTriedWithEachSignAndTheWinnersSignIsLearned)
+{
+	const RangefinderParams rp;
+	RawlogTrainingOptions o = samplePairs(12);
+	LearningOptions lo = oneCandidate();
+	lo.step_thresholds = {0.25}, lo.step_candidates = 1;
+	lo.step_signs = {StepSign::Darker, StepSign::Brighter, StepSign::Darker};
+	const LearningResult r = learnParameters(rp, o, lo);
+	ASSERT_EQ(r.tried.size(), 3u);  // the grid's one, then the step once per sign
+	EXPECT_EQ(r.tried[1].step_sign, StepSign::Brighter);
+	EXPECT_EQ(r.tried[2].step_sign, StepSign::Darker);
+	EXPECT_EQ(r.params.scanner.step_sign, r.best.step_sign);
+	EXPECT_NE(candidatesCsv(r).find(",0.25,darker,"), std::string::npos);
+	EXPECT_NE(describe(r.tried[1]).find("step 0.25 brighter"), std::string::npos);
+	EXPECT_NE(describe(r.tried[0]).find("step 0"), std::string::npos);
+	lo.step_signs.clear();  // no sign: the step is not tried
+	EXPECT_EQ(learnParameters(rp, o, lo).tried.size(), 1u);
 }
 
 TEST(ParameterLearning, TheEdgeBiasIsLearnedForTheWinnerAndKeptOnlyWhenItLowersItsScore)

@@ -2,11 +2,31 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace omnirange
 {
+std::string toString(StepSign s)
+{
+	switch (s)
+	{
+		case StepSign::Either: return "either";
+		case StepSign::Brighter: return "brighter";
+		case StepSign::Darker: return "darker";
+	}
+	throw std::logic_error("unknown StepSign");
+}
+
+StepSign stepSignFromString(const std::string& name)
+{
+	if (name == "either") return StepSign::Either;
+	if (name == "brighter") return StepSign::Brighter;
+	if (name == "darker") return StepSign::Darker;
+	throw std::invalid_argument("step_sign must be 'either', 'brighter' or 'darker', not '" + name + "'");
+}
+
 int findBrightnessStep(const std::uint8_t* bgr, const std::int32_t* pixels, int count, int from, int to,
-					   double threshold, int window)
+					   double threshold, int window, StepSign sign)
 {
 	if (threshold <= 0 || window < 1) return -1;
 	from = std::max(from, window);
@@ -22,6 +42,7 @@ int findBrightnessStep(const std::uint8_t* bgr, const std::int32_t* pixels, int 
 	// Running sums of the windows [k - window, k) and [k, k + window).
 	int before = 0, after = 0;
 	for (int j = 0; j < window; ++j) before += at(from - window + j), after += at(from + j);
+	const bool up = sign != StepSign::Darker, down = sign != StepSign::Brighter;
 	int found = -1, first = -1;  // the peak so far; where the ratio first reached the threshold
 	double best = 0;
 	for (int k = from; k <= to; ++k)
@@ -35,7 +56,7 @@ int findBrightnessStep(const std::uint8_t* bgr, const std::int32_t* pixels, int 
 		const double b = before + offset, a = after + offset;
 		if (found < 0)
 		{
-			if (a >= ratio * b || b >= ratio * a) found = first = k, best = std::max(a / b, b / a);
+			if ((up && a >= ratio * b) || (down && b >= ratio * a)) found = first = k, best = std::max(a / b, b / a);
 			continue;
 		}
 		// The windows straddle the step from `window` pixels before its foot;

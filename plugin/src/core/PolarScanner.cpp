@@ -97,6 +97,10 @@ const OptionsTable<PolarScannerParams>& PolarScannerParams::table()
 			 [](P& p) -> auto& { return p.step_threshold; })
 		.add("step_window", "px", "pixels averaged on each side of a brightness step (>= 1)",
 			 [](P& p) -> auto& { return p.step_window; })
+		.addEnum("step_sign",
+				 "which brightness steps end a ray: either; brighter (what lies beyond is brighter: shadows on the "
+				 "floor never count); darker (omnirange-train --learn tries all three)",
+				 [](P& p) -> auto& { return p.step_sign; }, stepSignFromString)
 		.add("base_shadow", "m",
 			 "a non-free run from a scanline's first pixel that ends within this distance of it, with N free "
 			 "pixels behind it (runs of at most K non-free negated), is the robot's own shadow or body and is "
@@ -250,7 +254,7 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 			// at the base has an edge too: the search starts past it.
 			const int to = colour_hit ? hit : line.last_candidate;
 			const int step = findBrightnessStep(data, pix, line.count, std::max(line.first_in_range, ray.past_base), to,
-												p_.step_threshold, p_.step_window);
+												p_.step_threshold, p_.step_window, p_.step_sign);
 			if (step >= 0 && (!colour_hit || step < hit)) hit = step, ray.by_step = true;
 		}
 		if (hit < 0)

@@ -160,6 +160,10 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	std::vector<double> steps = lo.step_thresholds;  // each scored once
 	std::sort(steps.begin(), steps.end());
 	steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+	std::vector<StepSign> signs = lo.step_signs;
+	std::sort(signs.begin(), signs.end());
+	signs.erase(std::unique(signs.begin(), signs.end()), signs.end());
+	if (signs.empty()) steps.clear();  // no sign: no step
 	const OmniCameraModel camera(start.camera);
 	const double base_range = floorBeyondBase(camera, start.scanner);
 	std::vector<int> bins = lo.bins;
@@ -259,7 +263,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 				for (const double smoothing : lo.smoothings)
 					for (const auto& [N, K] : windows)
 						for (const BoundaryModel boundary : lo.boundary_models)
-							consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0, 0.0, {}, {}});
+							consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0, StepSign::Either, 0.0, {}, {}});
 	}
 	// The brightness step on the grid's best: it is for what colour cannot
 	// see, and scoring it on every candidate would multiply the cost.
@@ -269,11 +273,12 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 					  [](const LearnedCandidate& a, const LearnedCandidate& b) { return a.score < b.score; });
 	for (std::size_t i = 0; i < top; ++i)
 		for (const double step : steps)
-		{
-			LearnedCandidate c = best[i];
-			c.step_threshold = step;
-			consider(c);
-		}
+			for (const StepSign sign : signs)
+			{
+				LearnedCandidate c = best[i];
+				c.step_threshold = step, c.step_sign = sign;
+				consider(c);
+			}
 	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
 	if (const auto chroma = lo.chroma_on_tie ? chromaOnTie(r.tried, r.best) : std::nullopt)
 	{
@@ -338,6 +343,7 @@ RangefinderParams withCandidate(const RangefinderParams& start, const LearnedCan
 	p.threshold = c.threshold, p.obstacle_ratio = c.obstacle_ratio, p.histogram_smoothing = c.smoothing;
 	p.scanner.filter.N = c.N, p.scanner.filter.K = c.K, p.scanner.boundary_model = c.boundary;
 	p.scanner.step_threshold = c.step_threshold;
+	p.scanner.step_sign = c.step_sign;
 	p.scanner.edge_bias.clear();  // learned for the winner only, after it is chosen
 	return p;
 }
@@ -391,9 +397,10 @@ std::string describe(const LearnedCandidate& c)
 	char s[300];
 	std::snprintf(s, sizeof s,
 				  "colour space %s, %d bins, light change %g, threshold %g, obstacle_ratio %g, smoothing %g, N %d, K %d, "
-				  "%s boundary, step %g",
+				  "%s boundary, step %g%s",
 				  toString(c.space).c_str(), c.bins, c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K,
-				  toString(c.boundary).c_str(), c.step_threshold);
+				  toString(c.boundary).c_str(), c.step_threshold,
+				  c.step_threshold > 0 && c.step_sign != StepSign::Either ? (" " + toString(c.step_sign)).c_str() : "");
 	return s;
 }
 
@@ -452,14 +459,15 @@ std::optional<LearnedCandidate> chromaOnTie(const std::vector<LearnedCandidate>&
 
 std::string candidateColumns()
 {
-	return "colour_space,bins,light_change,threshold,obstacle_ratio,histogram_smoothing,N,K,boundary_model,step_threshold";
+	return "colour_space,bins,light_change,threshold,obstacle_ratio,histogram_smoothing,N,K,boundary_model,step_threshold,step_sign";
 }
 
 std::string candidateColumns(const LearnedCandidate& c)
 {
 	char row[300];
-	std::snprintf(row, sizeof row, "%s,%d,%g,%g,%g,%g,%d,%d,%s,%g", toString(c.space).c_str(), c.bins, c.light_change,
-				  c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K, toString(c.boundary).c_str(), c.step_threshold);
+	std::snprintf(row, sizeof row, "%s,%d,%g,%g,%g,%g,%d,%d,%s,%g,%s", toString(c.space).c_str(), c.bins,
+				  c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K, toString(c.boundary).c_str(),
+				  c.step_threshold, toString(c.step_sign).c_str());
 	return row;
 }
 
@@ -537,12 +545,12 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 	const std::string trained = by_block ? std::to_string(r.training_pairs) + " pairs in all"
 										 : "histograms trained on " + std::to_string(r.training_pairs) + " others";
 	std::snprintf(head, sizeof head,
-				  "; Learned by omnirange-train --learn: %zu candidates scored against the laser on %d %s\n"
+				  "%s%zu candidates scored against the laser on %d %s\n"
 				  "; image/laser pairs (%s; %s). The winner:\n"
 				  "; %s;\n"
 				  "; mean error %.4f m. The histogram file written with this ini was made that way (%s);\n"
 				  "; to train one by hand, use the same colour space, bins and light change.\n",
-				  r.tried.size(), r.validation_pairs, by_block ? "scored" : "held-aside", r.validation.c_str(),
+				  kLearnedIniBegins, r.tried.size(), r.validation_pairs, by_block ? "scored" : "held-aside", r.validation.c_str(),
 				  trained.c_str(), describe(r.best).c_str(), r.best.score, refit.c_str());
 	std::string other_space;
 	if (const auto other = bestInOtherSpace(r))

@@ -4,6 +4,7 @@
 // hit pixel turned into metres with the camera model (eq. (6)).
 
 #include <omnirange/core/BoundaryRefinement.h>
+#include <omnirange/core/BrightnessStep.h>
 #include <omnirange/core/CameraModel.h>
 #include <omnirange/core/EdgeBias.h>
 #include <omnirange/core/HitFilter.h>
@@ -81,6 +82,7 @@ struct PolarScannerParams
 	 * window means) before the colour's hit ends the ray there; 0: off. */
 	double step_threshold{0.0};
 	int step_window{4};  ///< [px] pixels averaged on each side of a step
+	StepSign step_sign{StepSign::Either};  ///< which steps end a ray (BrightnessStep.h)
 	/** [m] a non-free run from the scanline's first pixel that ends within this
 	 * distance of it, with N free pixels behind it (runs of at most K non-free
 	 * negated), is taken for the robot's own

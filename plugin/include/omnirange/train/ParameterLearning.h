@@ -55,6 +55,9 @@ struct LearningOptions
 	 * step is for what colour cannot see, so it is tried with the colour
 	 * models that do best without it. Empty: not tried. */
 	std::vector<double> step_thresholds{0.15, 0.25, 0.35, 0.5};
+	/** PolarScannerParams::step_sign, each tried with each threshold: which
+	 * way a face differs from the floor is the deployment's (docs/method.md). */
+	std::vector<StepSign> step_signs{StepSign::Either, StepSign::Brighter, StepSign::Darker};
 	int step_candidates{32};
 	/** TrainingParams::light_change of the candidate histograms ({0, 0.15}
 	 * was measured and did not help: docs/results.md). */
@@ -106,6 +109,7 @@ struct LearnedCandidate
 	int N{0}, K{0};
 	BoundaryModel boundary{BoundaryModel::Subpixel};
 	double step_threshold{0};  ///< PolarScannerParams::step_threshold; 0: off
+	StepSign step_sign{StepSign::Either};  ///< PolarScannerParams::step_sign
 	/** [m] mean over the laser's rays of the error: |laser - omni| where
 	 * both see the boundary (at most 1.25), the false obstacle's shortfall
 	 * where the laser sees nothing within max range, 1.25 for a rejected ray
@@ -227,6 +231,10 @@ std::string candidateColumns();
 std::string candidateColumns(const LearnedCandidate& c);
 /** "0.012345 0.020000 ...": per-frame figures [m] in one CSV cell. */
 std::string spaceSeparated(const std::vector<double>& values);
+
+/** How learnedIni() begins: an ini that does not was written by hand, and
+ * --learn does not replace it (OutputRule.h's begins_with). */
+inline constexpr char kLearnedIniBegins[] = "; Learned by omnirange-train --learn: ";
 
 /** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, smoothing 0, N 20, K 4, subpixel boundary, step 0.25". */
 std::string describe(const LearnedCandidate& c);
