@@ -282,11 +282,50 @@ if [ -d "$real" ]; then
 fi
 printf 'a\n<!-- table: truth -->\nold\n<!-- table: maps -->\nx\n<!-- end table -->\n' > nested.md
 run_case "summary: a table block left open before the next" "error:nested.md: a table block" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill nested.md
-run_case "summary: -o with --fill (it would be ignored)" "error:-o with --fill" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill nested.md -o sumout
+run_case "summary: -o with --fill (it would be ignored)" "error:with --fill: --fill makes" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill nested.md -o sumout
 run_case "import: --images and --image-list both" "error:not both" imp.rawlog -- "$apps/omnirange-import" -q --images imp --image-list imp_list.csv --laser imp_laser.csv -o imp.rawlog
 mkdir -p gmap && cp "$src/rawlogs/factory-sample_truemap.gridmap.gz" gmap/gm_truemap.gridmap.gz
 printf 'omnirange-world 1\nname g\ngridmap file=gm_truemap.gridmap.gz z1=2 material=brick\n' > gmap/g.world
 run_case "sim: the world's grid map as the output's true map" "error:is the input" none.out -- "$apps/omnirange-sim" -q -w gmap/g.world -r "$src/worlds/campus.route" -n 2 -o gmap/gm.rawlog
+# After a fourth independent hostile run.
+run_case "accuracy: --max-difference 1e20" "error:max_difference must be within" acc4_pairs.csv -- "$apps/omnirange-accuracy" -q -i s.rawlog -o acc4 --max-difference 1e20
+variant pose_far 'pose_x = 1e308'
+run_case "scan: [rangefinder] pose_x = 1e308" "error:not within" far.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c pose_far.ini -H floor.hist -o far.rawlog
+sed 's/^sigma_dist *=.*/sigma_dist = 1e308/' "$src/ini/robot-omnip2dx.ini" > robot_sigma.ini
+run_case "sim: robot [odometry] sigma_dist = 1e308" "error:sigma_dist" r4.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -c robot_sigma.ini -n 2 -o r4.rawlog
+sed 's/^speed *=.*/speed = 1e-300/' "$src/ini/robot-omnip2dx.ini" > robot_slow.ini
+run_case "sim: robot [robot] speed = 1e-300" "error:speed must be within" r4.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -c robot_slow.ini -n 2 -o r4.rawlog
+sed -e 's/^image_width *=.*/image_width = 11000/' -e 's/^image_height *=.*/image_height = 10000/' "$src/ini/robot-omnip2dx.ini" > robot_big.ini
+run_case "sim: a camera of 110 megapixels" "error:100 megapixels" r4.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -c robot_big.ini -n 2 -o r4.rawlog
+{ printf '0 0\n# '; head -c 2000000 /dev/zero | tr '\0' x; printf '\n1 0\n'; } > long.route
+run_case "sim: a route line of 2 MB" "error:a line of more than 1 MB" r4.rawlog -- "$apps/omnirange-sim" -q -w w.world -r long.route -n 2 -o r4.rawlog
+sed 's/^thresholdDist *=.*/thresholdDist = 1e200/' "$src/ini/icp-slam-omniscan.ini" > icp_huge.ini
+run_case "slam: [ICP] thresholdDist = 1e200" "error:icp_huge.ini" slam_out -- "$apps/omnirange-slam" -q -i s.rawlog -c icp_huge.ini -o slam_out
+sed 's/^maxIterations *=.*/maxIterations = 1.9/' "$src/ini/icp-slam-omniscan.ini" > icp_frac.ini
+run_case "slam: [ICP] maxIterations = 1.9" "error:not a whole number" slam_out -- "$apps/omnirange-slam" -q -i s.rawlog -c icp_frac.ini -o slam_out
+{ printf 'threshold = 0.01\n'; cat f.ini; } > above.ini
+run_case "scan: a key above every section" "error:above every" above.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c above.ini -H floor.hist -o above.rawlog
+run_case "scan: a rawlog given as the ini" "error:is it an ini file" bin.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c s.rawlog -H floor.hist -o bin.rawlog
+run_case "train: -n with --learn (learning would read every pair)" "error:is not read by --learn" t4.hist -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o t4.hist -n 8 --learn t4.ini
+printf 'not a CARMEN log\n' > notcarmen.log
+run_case "import: --carmen with no CARMEN message" "error:no CARMEN" imp4.rawlog -- "$apps/omnirange-import" -q --images imp --carmen notcarmen.log -o imp4.rawlog
+mkfifo fill.fifo
+run_case "summary: --fill a FIFO" "error:not a regular file" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill fill.fifo
+printf '# my notes\n' > notable.md
+run_case "summary: --fill a file with no table block" "error:no table block" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill notable.md
+mkdir -p figs
+run_case "summary: -o a folder (hidden files)" "error:is a folder" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" -s "$src/ini/suite.txt" -o figs/
+run_case "train: --figures a folder (hidden files)" "error:is a folder" t4.hist -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o t4.hist --figures figs/
+run_case "calibrate: -o with --rim (it would be ignored)" "error:checkerboard calibration only" rim.yaml -- "$apps/omnirange-calibrate" -q --rim "s_Images/$(ls s_Images | head -1)" -o rim.yaml
+echo mine > users_pairs.csv && echo mine > notes.md && printf '; mine\n[rangefinder]\nN = 10\n' > hand.ini && cp hand.ini hand.ini.orig
+run_case "accuracy: -o onto a user's CSV of that name" "error:not what omnirange-accuracy writes" none.out -- "$apps/omnirange-accuracy" -q -i s.rawlog -o users
+run_case "summary: -o onto a user's notes.md" "error:not what omnirange-summary writes" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" -s "$src/ini/suite.txt" -o notes
+run_case "train: --learn onto a hand-written ini" "error:not what omnirange-train writes" t4.hist -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o t4.hist --learn hand.ini
+kept users_pairs.csv notes.md
+cmp -s hand.ini hand.ini.orig || { echo "| | PROBLEM: the user's hand.ini was changed |"; problems=$((problems + 1)); }
+ln -sfn nodir/x.rawlog dangling.rawlog
+run_case "scan: -o a link to nothing" "error:which does not exist" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o dangling.rawlog
+[ -L dangling.rawlog ] || { echo "| | PROBLEM: the user's link dangling.rawlog was replaced |"; problems=$((problems + 1)); }
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

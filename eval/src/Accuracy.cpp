@@ -34,12 +34,14 @@ double AccuracyStats::excludedFraction() const
 AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions& o, Progress* progress)
 {
 	using mrpt::obs::CObservation2DRangeScan;
-	if (!(o.max_difference > 0) || !(o.max_dt >= 0) || o.first < 0)
-		throw std::invalid_argument("accuracy: max_difference must be > 0, max_dt and first >= 0");
+	// A bound past any omnicam's reach pairs nothing more, and makes the
+	// histogram's bins without end.
+	if (!(o.max_difference > 0 && o.max_difference <= kMaxRangeDifference) || !(o.max_dt >= 0) || o.first < 0)
+		throw std::invalid_argument("accuracy: max_difference must be within (0, 100] m, max_dt and first >= 0");
 	RawlogProcessor loop(rawlog);
 	AccuracyResult r;
 	int seen = 0, truth_seen = 0;  // pairs so far, scored from `first` on
-	r.csv = "frame,laser_ray,omni_ray,bearing_rad,laser_m,omni_m,difference_m,status\n";
+	r.csv = std::string(kPairsCsvBegins) + "bearing_rad,laser_m,omni_m,difference_m,status\n";
 	loop.onPair<CObservation2DRangeScan, CObservation2DRangeScan>(
 		o.laser_label, o.omni_label, o.max_dt,
 		[&](const CObservation2DRangeScan::Ptr& laser, const CObservation2DRangeScan::Ptr& omni) {
@@ -78,14 +80,14 @@ std::string AccuracyResult::table(double max_difference) const
 	const double n = static_cast<double>(std::max<std::size_t>(1, s.total()));
 	char row[512];
 	std::snprintf(row, sizeof row,
-				  "| frames | pairs | compared | excluded: laser beyond omni max range | excluded: difference > %.2f m "
+				  " compared | excluded: laser beyond omni max range | excluded: difference > %.2f m "
 				  "| omni ray rejected | mean absolute difference | mean percentage difference | signed mean |\n"
 				  "|---|---|---|---|---|---|---|---|---|\n"
 				  "| %d | %zu | %zu | %zu (%.1f %%) | %zu (%.1f %%) | %zu | %.4f m | %.3f %% | %+.4f m |\n",
 				  max_difference, frames, s.total(), s.compared, s.laser_beyond, 100.0 * s.laser_beyond / n,
 				  s.too_different, 100.0 * s.too_different / n, s.omni_rejected, s.meanAbs(), s.meanPercent(),
 				  s.meanSigned());
-	return row;
+	return kAccuracyTableBegins + std::string(row);
 }
 
 }  // namespace omnirange::eval

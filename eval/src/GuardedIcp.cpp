@@ -119,9 +119,10 @@ GuardedIcpOptions GuardedIcpOptions::fromIniFile(const std::string& file)
 	{
 		return fromIni(mrpt::config::CConfigFile(file));
 	}
-	catch (const std::invalid_argument& e)  // a key or value of ours: name the file it is in
+	catch (const std::exception& e)  // ours or MRPT's: name the file the key is in
 	{
-		throw std::runtime_error(file + ": " + e.what());
+		const std::string what = e.what();
+		throw std::runtime_error(what.rfind(file, 0) == 0 ? what : file + ": " + what);
 	}
 }
 

@@ -7,6 +7,7 @@
 #include <omnirange/io/OptionsTable.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <map>
 #include <filesystem>
@@ -41,6 +42,23 @@ std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::
 	return ignored;
 }
 
+namespace
+{
+/** [-] The largest ICP value taken: past it MRPT's squared distances
+ * overflow and matching runs without end (thresholdDist = 1e200). */
+constexpr double kMaxIcpValue = 1e4;
+
+/** A number of the kind of MRPT's default `model`: a count is a whole
+ * number, a value that defaults to >= 0 stays so, and neither is huge. */
+void requireLikeMrptsDefault(const std::string& model, double v)
+{
+	const bool count = model.find_first_of(".eE") == std::string::npos;
+	if (count && v != std::floor(v)) throw std::invalid_argument("not a whole number");
+	if (model[0] != '-' && v < 0) throw std::invalid_argument("must be >= 0");
+	if (std::abs(v) > kMaxIcpValue) throw std::invalid_argument("must be within [-1e4, 1e4]");
+}
+}  // namespace
+
 void requireStrictIcpSection(const std::string& file, const std::string& section)
 {
 	try
@@ -69,7 +87,7 @@ void requireStrictIcpSection(const std::string& file, const std::string& section
 			{
 				if (model == "true" || model == "false") parseBool(value);
 				else if (!model.empty() && (std::isdigit(static_cast<unsigned char>(model[0])) || model[0] == '-' || model[0] == '.'))
-					parseDouble(value);
+					requireLikeMrptsDefault(model, parseDouble(value));
 				else if (value.empty() || value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789") != std::string::npos)
 					throw std::invalid_argument("not a name like '" + model + "'");
 			}

@@ -32,7 +32,8 @@ Summary collectMetrics(const std::vector<SuiteEntry>& entries, const std::string
 	for (const auto& e : entries)
 	{
 		const std::string file = results_dir + "/" + e.name + "/metrics.ini";
-		if (!fs::is_regular_file(file)) throw std::runtime_error("no report of '" + e.name + "': '" + file + "' is missing");
+		if (!fs::exists(file)) throw std::runtime_error("no report of '" + e.name + "': '" + file + "' is missing");
+		requireRegularFile(file, "report");
 		requireNoRepeatedKeys(file);  // read as strictly as any ini: a garbled report is not an empty one
 		const mrpt::config::CConfigFile ini(file);
 		std::vector<std::string> keys;
@@ -60,7 +61,7 @@ std::string toCsv(const Summary& s)
 	for (const auto& r : s)
 		for (const auto& [k, v] : r.metrics) keys.insert(k);
 	std::ostringstream o;
-	o << "name,group";
+	o << kSummaryCsvBegins;
 	for (const auto& k : keys) o << "," << k;
 	o << "\n";
 	for (const auto& r : s)

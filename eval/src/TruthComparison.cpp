@@ -77,8 +77,8 @@ void TruthStats::add(const mrpt::obs::CObservation2DRangeScan& truth, const mrpt
 
 std::string TruthStats::table() const
 {
-	std::string out =
-		"| true distance | rays | within 2 cm | within 5 cm | mean abs error | median abs error | signed mean | "
+	std::string out = std::string(kTruthTableBegins) +
+		" within 2 cm | within 5 cm | mean abs error | median abs error | signed mean | "
 		"missed: no hit | missed: rejected |\n|---|---|---|---|---|---|---|---|---|\n";
 	const auto row = [&](const std::string& name, const TruthBand& b) {
 		const double n = static_cast<double>(std::max<std::size_t>(1, b.rays));

@@ -119,7 +119,7 @@ void RobotParams::validate() const
 	}
 	const auto& o = omnicam;
 	require(o.rim_theta > 1.0 && o.rim_theta < 3.0, "[omnicam] rim_theta_deg must be in (57.3, 171.9)");
-	require(o.noise_sigma >= 0, "[omnicam] noise_sigma must be >= 0");
+	require(o.noise_sigma >= 0 && o.noise_sigma <= 255, "[omnicam] noise_sigma must be within [0, 255]");
 	require(o.format == "jpg" || o.format == "png", "[omnicam] format must be jpg or png");
 	require(o.jpeg_quality >= 1 && o.jpeg_quality <= 100, "[omnicam] jpeg_quality must be in 1..100");
 	const auto& fx = o.effects;
@@ -133,14 +133,22 @@ void RobotParams::validate() const
 	require(o.truth_max_range > 0 && o.truth_max_range <= 1000, "[omnicam] truth_max_range must be within (0, 1000] m");
 	require(laser.rays >= 2 && laser.rays <= 100000, "[laser] rays must be within [2, 100000]");
 	require(laser.fov > 0 && laser.fov <= 6.2832, "[laser] fov_deg must be in (0, 360]");
-	require(laser.max_range > 0, "[laser] max_range must be > 0 m");
-	require(laser.sigma >= 0, "[laser] sigma must be >= 0 m");
-	require(odometry.sigma_dist >= 0 && odometry.sigma_turn >= 0, "[odometry] noise must be >= 0");
+	require(laser.max_range > 0 && laser.max_range <= 1000, "[laser] max_range must be within (0, 1000] m");
+	require(laser.sigma >= 0 && laser.sigma <= 10, "[laser] sigma must be within [0, 10] m");
+	require(odometry.sigma_dist >= 0 && odometry.sigma_dist <= 1 && odometry.sigma_turn >= 0 && odometry.sigma_turn <= 1,
+			"[odometry] sigma_dist and sigma_turn must be within [0, 1]");
 	const auto& r = robot;
-	require(r.speed > 0 && r.turn_rate > 0 && r.frame_rate > 0, "[robot] speed, turn_rate and frame_rate must be > 0");
-	require(r.length > 0 && r.width > 0 && r.height > 0, "[robot] the body's size must be > 0 m");
+	// A robot that creeps or films too often makes millions of frames: bounded so
+	// that a typo fails here, not after memory runs out.
+	require(r.speed >= 0.01 && r.speed <= 10, "[robot] speed must be within [0.01, 10] m/s");
+	constexpr double deg = M_PI / 180;
+	require(r.turn_rate >= 1 * deg && r.turn_rate <= 1000 * deg,
+			"[robot] turn_rate_deg must be within [1, 1000] deg/s");
+	require(r.frame_rate > 0 && r.frame_rate <= 100, "[robot] frame_rate must be within (0, 100] Hz");
+	require(r.length > 0 && r.width > 0 && r.height > 0 && r.length <= 10 && r.width <= 10,
+			"[robot] the body's size must be within (0, 10] m");
 	require(r.height < o.camera.h, "[robot] the body must be lower than the omnicam's h");
-	require(r.clearance >= 0, "[robot] clearance must be >= 0 m");
+	require(r.clearance >= 0 && r.clearance <= 10, "[robot] clearance must be within [0, 10] m");
 }
 
 }  // namespace omnirange::sim

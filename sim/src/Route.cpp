@@ -22,7 +22,7 @@ Route loadRoute(const std::string& path)
 	Route r;
 	r.file = path;
 	std::string raw;
-	for (int line = 1; std::getline(f, raw); ++line)
+	for (int line = 1; readCappedLine(f, raw, path, line, "route file"); ++line)
 	{
 		const auto fail = [&](const std::string& why) {
 			return std::runtime_error(path + ":" + std::to_string(line) + ": " + why);

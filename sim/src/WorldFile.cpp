@@ -41,7 +41,7 @@ class Parser
 		w_.materials = stockMaterials();
 		w_.floor_material = w_.findMaterial("concrete");
 		bool header = false;
-		for (std::string raw; std::getline(f, raw);)
+		for (std::string raw; readCappedLine(f, raw, path_, line_ + 1, "world file");)
 		{
 			++line_;
 			const auto tokens = split(raw);
@@ -275,7 +275,7 @@ class Parser
 		fl.requireAllUsed();
 		std::string row;
 		int r = 0;
-		while (std::getline(in, row))
+		while (readCappedLine(in, row, path_, line_ + 1, "world file"))
 		{
 			++line_;
 			if (row == "end") return;
@@ -320,6 +320,7 @@ class Parser
 		}
 		w_.maps.push_back(file);
 		mrpt::maps::COccupancyGridMap2D grid;
+		requireRegularFile(file, "grid map");
 		try
 		{
 			mrpt::io::CFileGZInputStream f;

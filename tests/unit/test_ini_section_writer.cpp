@@ -64,3 +64,16 @@ TEST(IniSectionWriter, AnAddedKeyGetsItsCommentAKeptOneKeepsItsOwn)
 	EXPECT_EQ(read(path), "[rangefinder]\n; mine\nN = 10\n; " + comments.at("xi") + "\nxi = 0.8\n");
 	EXPECT_EQ(comments.at("xi").rfind("[-] ", 0), 0u) << comments.at("xi");  // the unit first, as every shipped ini has it
 }
+
+TEST(IniSectionWriter, AnIniEveryProgramWouldRefuseIsRefusedBeforeAnyKeyIsAdded)
+{
+	// Keys written into it would not make it readable: cx set, CX = 2 kept, every program refusing it.
+	for (const std::string text : {"[rangefinder]\ncx = 1\nCX = 2\n", "cx = 1\n[rangefinder]\nN = 1\n",
+								   "[rangefinder\nN = 1\n", "[]\nN = 1\n"})
+	{
+		const std::string path = tmp("refused.ini");
+		std::ofstream(path) << text;
+		EXPECT_THROW(writeIniSection(path, "rangefinder", {{"cx", "512"}}), std::runtime_error) << text;
+		EXPECT_EQ(read(path), text);
+	}
+}

@@ -284,3 +284,28 @@ TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)
 	EXPECT_EQ(read(d + "/log_truemap.png").substr(1, 3), "PNG");
 	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 4);
 }
+
+TEST(OutputRule, ATextFileIsReplacedOnlyIfItBeginsAsTheProgramsOwnAndALinkToNothingIsKept)
+{
+	const std::string d = fresh("begins");
+	write(d + "/notes.md", "# my notes\n");
+	write(d + "/summary.md", "# omnirange: the experiments' figures\n\nold\n");
+	const auto allowed = [&](const std::string& out) {
+		try
+		{
+			requireOutputAllowed(out, OutputKind::Text, "omnirange-test", {}, false, "# omnirange: the experiments' figures");
+			return std::string();
+		}
+		catch (const std::runtime_error& e)
+		{
+			return std::string(e.what());
+		}
+	};
+	EXPECT_NE(allowed(d + "/notes.md").find("is not what omnirange-test writes there"), std::string::npos);
+	EXPECT_EQ(allowed(d + "/summary.md"), "");
+	EXPECT_EQ(allowed(d + "/new.md"), "");
+	EXPECT_NO_THROW(requireOutputAllowed(d + "/notes.md", OutputKind::Text, "omnirange-test", {}, true, "# omnirange"));
+	fs::create_symlink("nowhere/x.rawlog", d + "/dangling.rawlog");
+	EXPECT_NE(refusal(d + "/dangling.rawlog", OutputKind::Rawlog).find("which does not exist"), std::string::npos);
+	EXPECT_TRUE(fs::is_symlink(d + "/dangling.rawlog"));
+}

@@ -26,12 +26,8 @@ AccuracyApp::Options AccuracyApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> title("", "title", "title of the histogram", false, "", "TEXT", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.input = in.getValue(), o.output = requiredPath(out), o.title = title.getValue();
-	// A prefix: "out/acc" writes out/acc_pairs.csv and so on; a folder would get hidden "._pairs.csv".
-	if (const std::string prefix = outputPath(o.output);
-		!prefix.empty() && (o.output.back() == '/' || prefix == "." || prefix == ".." || std::filesystem::is_directory(prefix)))
-		throw std::invalid_argument("-o '" + o.output + "' is a folder; give a prefix for the files, e.g. '" +
-									(std::filesystem::path(prefix) / "accuracy").string() + "'");
+	o.input = in.getValue(), o.output = prefixPath(out, "accuracy"), o.title = title.getValue();
+	if (o.output.empty()) throw std::invalid_argument("-o names no file or folder");
 	a.laser_label = laser.getValue(), a.omni_label = omni.getValue();
 	a.max_difference = max_diff.getValue(), a.max_dt = max_dt.getValue(), a.first = first.getValue();
 	o.verbosity = verbosity.level();
@@ -46,10 +42,10 @@ AccuracyApp::AccuracyApp(Options o) : mrpt::system::COutputLogger("omnirange-acc
 eval::AccuracyResult AccuracyApp::run()
 {
 	const auto& a = o_.accuracy;
-	requireOutputsAllowed({{o_.output + "_pairs.csv", OutputKind::Text},
+	requireOutputsAllowed({{o_.output + "_pairs.csv", OutputKind::Text, eval::kPairsCsvBegins},
 						   {o_.output + "_histogram.png", OutputKind::Image},
-						   {o_.output + "_table.md", OutputKind::Text},
-						   {o_.output + "_truth.md", OutputKind::Text}},
+						   {o_.output + "_table.md", OutputKind::Text, eval::kAccuracyTableBegins},
+						   {o_.output + "_truth.md", OutputKind::Text, eval::kTruthTableBegins}},
 						  "omnirange-accuracy", {o_.input});
 	const eval::AccuracyResult r = eval::evaluateAccuracy(o_.input, a);
 	const std::string table = r.table(a.max_difference);

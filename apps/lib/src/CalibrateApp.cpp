@@ -24,6 +24,7 @@ namespace
 constexpr double kMaxRms = 1.0;  // [px] reprojection error over the boards
 constexpr double kMaxCentreSpread = 3.0;  // [px] the principal point's move without a group of boards
 constexpr double kMaxEllipticity = 0.1;  // of --rim's disc
+constexpr char kOpenCvYamlBegins[] = "%YAML:1.0";  // how cv::FileStorage begins -o's intrinsics
 // [px] --rim's centre from a calibrated one (mei, ocamcalib) in the ini: the real paraboloid's
 // disc and its checkerboard centre agree within 3 px; the rest is room for a rim partly hidden.
 constexpr double kMaxRimOffset = 10.0;
@@ -95,6 +96,8 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	o.checkerboards = boards.getValue(), o.intrinsics_output = optionalPath(out), o.board.square = square.getValue();
 	if (!board_dir.getValue().empty()) addImagesOf(board_dir.getValue(), o.checkerboards);
 	o.rim_images = rims.getValue(), o.save_to = optionalPath(save), o.ocamcalib = ocam.getValue();
+	if (!o.intrinsics_output.empty() && o.checkerboards.empty())
+		throw std::invalid_argument("-o is written by a checkerboard calibration only (--checkerboard or --checkerboard-dir)");
 	int used = 0;
 	if (std::sscanf(board.getValue().c_str(), "%dx%d%n", &o.board.columns, &o.board.rows, &used) != 2 ||
 		used != static_cast<int>(board.getValue().size()))
@@ -116,7 +119,7 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 	// Its -c ini is the usual --save-to, but not the bases under it: they are other inis' too.
 	if (!o_.ini.empty())
 		for (const auto& base : iniBasesOf(o_.ini)) inputs.push_back(base);
-	requireOutputsAllowed({{o_.save_to, OutputKind::Ini}, {o_.intrinsics_output, OutputKind::Text}},
+	requireOutputsAllowed({{o_.save_to, OutputKind::Ini}, {o_.intrinsics_output, OutputKind::Text, kOpenCvYamlBegins}},
 						  "omnirange-calibrate", inputs);
 }
 

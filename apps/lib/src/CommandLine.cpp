@@ -2,12 +2,14 @@
 
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/io/MemoryLimit.h>
+#include <omnirange/io/OutputRule.h>
 #include <omnirange/io/Temporaries.h>
 
 
 #include <opencv2/core.hpp>
 #include <opencv2/core/utils/logger.hpp>
 
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -84,6 +86,18 @@ std::string optionalPath(TCLAP::ValueArg<std::string>& arg)
 	return arg.isSet() ? requiredPath(arg) : arg.getValue();
 }
 
+std::string prefixPath(TCLAP::ValueArg<std::string>& arg, const std::string& example)
+{
+	const std::string given = optionalPath(arg);
+	if (given.empty()) return given;
+	const std::string prefix = outputPath(given);
+	if (given.back() == '/' || prefix == "." || prefix == ".." || std::filesystem::is_directory(prefix))
+		throw std::invalid_argument((arg.getFlag().empty() ? "--" + arg.getName() : "-" + arg.getFlag()) + " '" + given +
+									"' is a folder; give a prefix for the files, e.g. '" +
+									(std::filesystem::path(prefix) / example).string() + "'");
+	return given;
+}
+
 void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv)
 {
 	OneLineOutput out;
@@ -98,8 +112,9 @@ std::string errorText(const std::exception& e)
 	if (const auto* cv_error = dynamic_cast<const cv::Exception*>(&e))
 		return oneLine("OpenCV: " + cv_error->err + (cv_error->func.empty() ? "" : " (in " + cv_error->func + ")"));
 	const std::string text = e.what();
-	if (text.find("==== MRPT exception ====") != std::string::npos)
-		if (const std::string m = mrptMessages(text); !m.empty()) return oneLine("MRPT: " + m);
+	// What was said before MRPT's block (the file a caller names) is kept.
+	if (const auto block = text.find("==== MRPT exception ===="); block != std::string::npos)
+		if (const std::string m = mrptMessages(text); !m.empty()) return oneLine(text.substr(0, block) + "MRPT: " + m);
 	return oneLine(text);
 }
 

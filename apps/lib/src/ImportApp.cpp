@@ -11,11 +11,22 @@
 
 namespace omnirange::app
 {
-mrpt::poses::CPose3D poseFromText(const std::string& text)
+mrpt::poses::CPose3D poseFromText(const std::string& option, const std::string& text)
 {
-	const std::vector<double> v = parseDoubles(text);
-	if (v.size() != 4 && v.size() != 6)
-		throw std::invalid_argument("a pose is 'x y z yaw_deg' or 'x y z yaw_deg pitch_deg roll_deg', not '" + text + "'");
+	std::vector<double> v;
+	try
+	{
+		v = parseDoubles(text);
+		if (v.size() != 4 && v.size() != 6) throw std::invalid_argument("not 'x y z yaw_deg' or 'x y z yaw_deg pitch_deg roll_deg'");
+		for (std::size_t k = 0; k < v.size(); ++k)
+			if (std::abs(v[k]) > (k < 3 ? kMaxMountOffset : kMaxMountAngle))
+				throw std::invalid_argument(k < 3 ? "an offset beyond " + formatDouble(kMaxMountOffset) + " m"
+												  : "an angle beyond " + formatDouble(kMaxMountAngle) + " deg");
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument(option + " '" + text + "': " + e.what());
+	}
 	const double d = M_PI / 180;
 	return mrpt::poses::CPose3D(v[0], v[1], v[2], v[3] * d, v.size() == 6 ? v[4] * d : 0, v.size() == 6 ? v[5] * d : 0);
 }
@@ -47,13 +58,13 @@ ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
 	if (images.isSet() && list.isSet()) throw std::invalid_argument("give the images by --images or by --image-list, not both");
 	i.odometry_csv = odometry.getValue(), i.carmen_log = carmen.getValue(), i.output = requiredPath(out);
 	i.omni_label = omni_label.getValue(), i.laser_label = laser_label.getValue();
-	i.laser_pose = poseFromText(laser_pose.getValue());
+	i.laser_pose = poseFromText("--laser-pose", laser_pose.getValue());
 	i.laser_fov = fov.getValue() * M_PI / 180, i.laser_max_range = max_range.getValue();
 	o.ini = ini.getValue(), o.section = section.getValue();
 	if (!omni_pose.getValue().empty())
 	{
 		if (!o.ini.empty()) throw std::invalid_argument("give the omnicam's pose by -c INI or by --omni-pose, not both");
-		i.omni_pose = poseFromText(omni_pose.getValue());
+		i.omni_pose = poseFromText("--omni-pose", omni_pose.getValue());
 	}
 	if (i.images_dir.empty() && i.image_list.empty())
 		throw std::invalid_argument("the images are needed: --images DIR or --image-list CSV");

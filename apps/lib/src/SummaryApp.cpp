@@ -5,6 +5,7 @@
 #include <omnirange_eval/Summary.h>
 
 #include <omnirange/io/AtomicWrite.h>
+#include <omnirange/io/OptionsTable.h>
 #include <omnirange/io/OutputRule.h>
 
 #include <algorithm>
@@ -14,6 +15,11 @@
 
 namespace omnirange::app
 {
+namespace
+{
+constexpr char kSummaryPageBegins[] = "# omnirange: the experiments' figures";
+}  // namespace
+
 SummaryApp::Options SummaryApp::parse(int argc, const char* const* argv)
 {
 	Options o;
@@ -31,7 +37,7 @@ SummaryApp::Options SummaryApp::parse(int argc, const char* const* argv)
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	o.suite = suite.getValue(), o.groups = group.getValue(), o.results = results.getValue();
-	o.output = out.getValue(), o.csv = csv.getValue(), o.fill = fill.getValue(), o.check = check.getValue();
+	o.output = prefixPath(out, "summary"), o.csv = csv.getValue(), o.fill = fill.getValue(), o.check = check.getValue();
 	o.verbosity = verbosity.level();
 	if (!o.fill.empty() && o.csv.empty()) throw std::runtime_error("--fill needs --csv");
 	if (o.check && o.fill.empty()) throw std::runtime_error("--check needs --fill");
@@ -48,6 +54,7 @@ SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summa
 
 void SummaryApp::fillOrCheck(const std::string& file, const std::string& csv)
 {
+	requireRegularFile(file, "file to fill");
 	std::ifstream in(file);
 	if (!in) throw std::runtime_error("cannot read '" + file + "'");
 	std::ostringstream text;
@@ -57,6 +64,8 @@ void SummaryApp::fillOrCheck(const std::string& file, const std::string& csv)
 	try
 	{
 		filled = eval::fillTables(text.str(), table);
+		if (text.str().find("<!-- table: ") == std::string::npos)
+			throw std::runtime_error("no table block ('<!-- table: NAME -->' ... '<!-- end table -->') to fill");
 	}
 	catch (const std::runtime_error& e)
 	{
@@ -87,10 +96,11 @@ void SummaryApp::run()
 									 }),
 					  entries.end());
 	if (entries.empty()) throw std::runtime_error(o_.suite + ": no experiment of the groups asked for");
-	requireOutputsAllowed({{o_.output + ".csv", OutputKind::Text}, {o_.output + ".md", OutputKind::Text}},
+	requireOutputsAllowed({{o_.output + ".csv", OutputKind::Text, eval::kSummaryCsvBegins},
+						   {o_.output + ".md", OutputKind::Text, kSummaryPageBegins}},
 						  "omnirange-summary", {o_.suite, o_.csv});
 	const eval::Summary s = o_.csv.empty() ? eval::collectMetrics(entries, o_.results) : eval::readCsv(o_.csv);
-	std::string page = "# omnirange: the experiments' figures\n\nMade by omnirange-summary from each report's metrics.ini.\n";
+	std::string page = std::string(kSummaryPageBegins) + "\n\nMade by omnirange-summary from each report's metrics.ini.\n";
 	for (const auto& name : eval::tableNames()) page += "\n## " + name + "\n\n" + eval::markdownTable(name, s);
 	writeFileAtomically(o_.output + ".csv", eval::toCsv(s));
 	writeFileAtomically(o_.output + ".md", page);

@@ -60,11 +60,14 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	o.learning.validation_light_change = learn_light.getValue();
 	o.learning.light_changes = {0.0};
 	if (learn_light.getValue() > 0) o.learning.light_changes.push_back(learn_light.getValue());
-	t.figures_prefix = optionalPath(figures), t.figures_frame = figures_frame.getValue();
+	t.figures_prefix = prefixPath(figures, "fig"), t.figures_frame = figures_frame.getValue();
 	// Options that only mean something beside another: given without it, say so rather than ignore them.
 	for (const TCLAP::Arg* a : std::initializer_list<const TCLAP::Arg*>{&no_chroma_tie, &validate_on, &hold_out, &learn_light})
 		if (a->isSet() && o.learn_ini.empty()) throw std::invalid_argument("--" + a->getName() + " needs --learn");
 	if (figures_frame.isSet() && t.figures_prefix.empty()) throw std::invalid_argument("--figures-frame needs --figures");
+	if (max_frames.isSet() && !o.learn_ini.empty())
+		throw std::invalid_argument("-n is not read by --learn, which splits every pair of the range it is given: "
+									"choose the range with --first and --until");
 	if (!t.figures_prefix.empty() && !o.learn_ini.empty())
 		throw std::invalid_argument("--figures is drawn by a plain training run, not with --learn: run them apart");
 	o.verbosity = verbosity.level();
@@ -81,8 +84,8 @@ RawlogTrainingResult TrainApp::run()
 	const auto& t = o_.training;
 	const std::string fig = t.figures_prefix;
 	const auto figure = [&](const std::string& name) { return Output{fig.empty() ? "" : fig + name, OutputKind::Image}; };
-	requireOutputsAllowed({{o_.output, OutputKind::Histogram}, {o_.learn_ini, OutputKind::Ini},
-						   {o_.learn_candidates, OutputKind::Text}, figure("_birdseye.png"), figure("_laser.png"),
+	requireOutputsAllowed({{o_.output, OutputKind::Histogram}, {o_.learn_ini, OutputKind::Ini, kLearnedIniBegins},
+						   {o_.learn_candidates, OutputKind::Text, candidateColumns()}, figure("_birdseye.png"), figure("_laser.png"),
 						   figure("_fused.png")},
 						  "omnirange-train", {t.input, imagesDirFor(t.input), o_.ini});
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);

@@ -19,6 +19,11 @@ class Progress;
 namespace omnirange::eval
 {
 /** The Table II figures and the exclusions. */
+/** How the accuracy's files begin: an existing PREFIX_pairs.csv or
+ * PREFIX_table.md that does not is not one to replace (OutputRule.h). */
+inline constexpr char kPairsCsvBegins[] = "frame,laser_ray,omni_ray,";
+inline constexpr char kAccuracyTableBegins[] = "| frames | pairs |";
+
 struct AccuracyStats
 {
 	std::size_t compared{0}, laser_beyond{0}, too_different{0}, omni_rejected{0};

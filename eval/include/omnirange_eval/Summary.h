@@ -25,6 +25,8 @@ using Summary = std::vector<SummaryRow>;
  * std::runtime_error naming a report that is missing or unreadable. */
 Summary collectMetrics(const std::vector<SuiteEntry>& entries, const std::string& results_dir);
 
+/** How toCsv() begins (OutputRule.h's begins_with). */
+inline constexpr char kSummaryCsvBegins[] = "name,group";
 /** One row per experiment: name, group, then every metric (sorted by key). */
 std::string toCsv(const Summary& s);
 /** What toCsv() wrote. Throws std::runtime_error("PATH:LINE: why"). */

@@ -15,6 +15,9 @@
 namespace omnirange::eval
 {
 /** The counts for the rays whose true boundary lies in one band of range. */
+/** How TruthStats::table() begins (OutputRule.h's begins_with). */
+inline constexpr char kTruthTableBegins[] = "| true distance | rays |";
+
 struct TruthBand
 {
 	explicit TruthBand(double lo_ = 0, double hi_ = 0) : lo(lo_), hi(hi_) {}

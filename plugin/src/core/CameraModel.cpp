@@ -133,7 +133,9 @@ void CameraParams::validate() const
 {
 	require(image_width > 0 && image_height > 0, "image_width and image_height must be > 0");
 	require(image_width <= 20000 && image_height <= 20000, "image_width and image_height must be <= 20000 px");
-	require(R > 0, "R must be > 0 px");
+	require(static_cast<unsigned long>(image_width) * static_cast<unsigned long>(image_height) <= kMaxImagePixels,
+			"image_width x image_height must be at most 100 megapixels (no reader takes more)");
+	require(R > 0 && R <= 20000, "R must be within (0, 20000] px");
 	require(h > 0, "h must be > 0 m");
 	require(alpha > 0, "alpha must be > 0 px/rad");
 	require(cx >= 0 && cx < image_width && cy >= 0 && cy < image_height,

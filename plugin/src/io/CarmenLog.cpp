@@ -151,6 +151,9 @@ CarmenLog readCarmenLog(const std::string& path)
 		}
 	});
 	if (log.odometry.empty()) log.odometry = std::move(laser_poses);
+	// A file with none of the messages read is not a CARMEN log (a rawlog, a README).
+	if (log.laser.empty() && log.odometry.empty())
+		throw std::runtime_error("'" + path + "' holds no CARMEN laser (FLASER, RAWLASER1, ROBOTLASER1) or ODOM message");
 	return log;
 }
 

@@ -28,6 +28,9 @@ void writeIniSection(const std::string& path, const std::string& section,
 	std::vector<std::string> lines;
 	if (std::filesystem::exists(path))
 	{
+		// Keys go into a file every program will read strictly: one that
+		// would be refused already is refused before anything is added.
+		requireWellFormedIni(path);
 		std::ifstream in(path);
 		if (!in) throw std::runtime_error("cannot read ini file '" + path + "'");
 		for (std::string l; std::getline(in, l);) lines.push_back(l);

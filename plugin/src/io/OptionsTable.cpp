@@ -36,6 +36,13 @@ double parseDouble(const std::string& text)
 	return v;
 }
 
+double parseWithin(const std::string& text, double limit)
+{
+	const double v = parseDouble(text);
+	if (std::abs(v) > limit) throw std::invalid_argument("not within [-" + formatDouble(limit) + ", " + formatDouble(limit) + "]");
+	return v;
+}
+
 double parseTime(const std::string& text)
 {
 	const std::string t = trimmed(text);
@@ -73,6 +80,16 @@ bool readLineUpTo(std::istream& in, std::string& line, std::size_t cap)
 }
 }  // namespace
 
+bool readCappedLine(std::istream& in, std::string& line, const std::string& path, int line_number,
+					const std::string& what)
+{
+	if (!readLineUpTo(in, line, kMaxLineBytes)) return false;
+	if (line.size() >= kMaxLineBytes)
+		throw std::runtime_error(path + ":" + std::to_string(line_number) + ": a line of more than " +
+								 std::to_string(kMaxLineBytes >> 20) + " MB: is this the " + what + "?");
+	return true;
+}
+
 int forEachDataLine(const std::string& path, const std::string& what,
 					const std::function<void(int, const std::string&)>& row)
 {
@@ -81,11 +98,8 @@ int forEachDataLine(const std::string& path, const std::string& what,
 	if (!in) throw std::runtime_error("cannot read the " + what + " '" + path + "'");
 	int rows = 0;
 	std::string line;
-	for (int n = 1; readLineUpTo(in, line, kMaxLineBytes); ++n)
+	for (int n = 1; readCappedLine(in, line, path, n, what); ++n)
 	{
-		if (line.size() >= kMaxLineBytes)
-			throw std::runtime_error(path + ":" + std::to_string(n) + ": a line of more than " +
-									 std::to_string(kMaxLineBytes >> 20) + " MB: is this the " + what + "?");
 		const std::string t = trimmed(line);
 		if (t.empty() || t[0] == '#') continue;
 		try
@@ -161,7 +175,14 @@ IniLine parseIniLine(const std::string& line)
 	const std::string t = trimmed(line);
 	if (t.empty() || t[0] == ';' || t[0] == '#') return {};
 	if (t[0] == '[')
-		return {IniLine::Kind::Section, trimmed(t.substr(1, t.find(']') == std::string::npos ? std::string::npos : t.find(']') - 1))};
+	{
+		// "[name]", then at most a comment: MRPT reads no other line as a section.
+		const auto close = t.find(']');
+		const std::string after = close == std::string::npos ? "" : trimmed(t.substr(close + 1));
+		if (close == std::string::npos || !(after.empty() || after[0] == ';' || after[0] == '#'))
+			return {IniLine::Kind::Malformed, t};
+		return {IniLine::Kind::Section, trimmed(t.substr(1, close - 1))};
+	}
 	const auto eq = t.find('=');
 	if (eq == std::string::npos || eq == 0 || t.find('\0') != std::string::npos) return {IniLine::Kind::Malformed, t};
 	return {IniLine::Kind::Key, trimmed(t.substr(0, eq))};
@@ -169,6 +190,15 @@ IniLine parseIniLine(const std::string& line)
 
 namespace
 {
+/** `text` with every byte that is not printable ASCII shown as '?': a binary
+ * file given as an ini must not put raw bytes (or a NUL) in the message. */
+std::string printable(std::string text)
+{
+	for (char& c : text)
+		if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+	return text;
+}
+
 /** Calls `visit(section, key, line)` for every key line of the ini file, and
  * `visit(section, "", line)` for every section header. */
 void forEachIniLine(const std::string& path,
@@ -183,11 +213,17 @@ void forEachIniLine(const std::string& path,
 	{
 		++n;
 		const IniLine l = parseIniLine(line);
+		if (l.kind == IniLine::Kind::Section && l.name.empty())
+			throw std::runtime_error(path + ":" + std::to_string(n) + ": a section with no name ('[]')");
 		if (l.kind == IniLine::Kind::Section) section = l.name, visit(section, "", n);
+		// Above the first section only `base` is read; MRPT would skip any other key there.
+		else if (l.kind == IniLine::Kind::Key && section.empty() && l.name != "base")
+			throw std::runtime_error(path + ":" + std::to_string(n) + ": key '" + printable(l.name) +
+									 "' is above every [section]: no program reads it there");
 		else if (l.kind == IniLine::Kind::Key) visit(section, l.name, n);
 		else if (l.kind == IniLine::Kind::Malformed)
-			throw std::runtime_error(path + ":" + std::to_string(n) + ": '" + l.name.substr(0, 40) +
-									 "' is not 'key = value', a [section] or a comment");
+			throw std::runtime_error(path + ":" + std::to_string(n) + ": '" + printable(l.name.substr(0, 40)) +
+									 "' is not 'key = value', a [section] or a comment (is it an ini file?)");
 	}
 }
 
@@ -198,7 +234,7 @@ std::string lowercase(std::string s)
 }
 }  // namespace
 
-void requireNoRepeatedKeys(const std::string& path)
+int requireWellFormedIni(const std::string& path)
 {
 	std::map<std::string, int> seen;  // "section/key", lower case (as MRPT matches them) -> line
 	forEachIniLine(path, [&](const std::string& section, const std::string& key, int n) {
@@ -208,7 +244,12 @@ void requireNoRepeatedKeys(const std::string& path)
 			throw std::runtime_error(path + ":" + std::to_string(n) + ": key '" + key + "' repeats in [" + section +
 									 "] (first at line " + std::to_string(it->second) + "; case does not tell keys apart)");
 	});
-	if (seen.empty()) throw std::runtime_error("ini file '" + path + "' holds no key: is it the ini meant?");
+	return static_cast<int>(seen.size());
+}
+
+void requireNoRepeatedKeys(const std::string& path)
+{
+	if (requireWellFormedIni(path) == 0) throw std::runtime_error("ini file '" + path + "' holds no key: is it the ini meant?");
 }
 
 void requireOnlySections(const std::string& path, const std::vector<std::string>& known)

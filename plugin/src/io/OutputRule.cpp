@@ -149,7 +149,7 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 }  // namespace
 
 void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, const std::string& program,
-						  const std::vector<std::string>& inputs, bool force)
+						  const std::vector<std::string>& inputs, bool force, const std::string& begins_with)
 {
 	const std::string output = outputPath(output_as_given);
 	if (output.empty()) return;
@@ -163,6 +163,10 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 		throw std::runtime_error("the output folder '" + output + "' is a symbolic link (remove it, or give another output)");
 	}
 	const auto status = fs::status(p, ec);  // through symlinks
+	// A link that names nothing would be replaced by a file: the link is the user's.
+	if (!fs::exists(status) && fs::is_symlink(p, ec))
+		throw std::runtime_error("the output '" + output + "' is a symbolic link to '" + fs::read_symlink(p, ec).string() +
+								 "', which does not exist (remove the link, or give another output)");
 	if (!fs::exists(status)) return;
 	const std::string hint = force ? "" : " (remove it, or give another output)";
 	if (kind == OutputKind::Folder)
@@ -176,6 +180,9 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	if (!fs::is_regular_file(status))
 		throw std::runtime_error("the output '" + output + "' exists and is not a file");
 	replacedFileOf(output);  // a read-only file is refused before any work, --force or not
+	if (!force && isOfKind(output, kind) && firstBytes(output, begins_with.size()) != begins_with)
+		throw std::runtime_error("'" + output + "' exists and is not what " + program + " writes there (it begins '" +
+								 begins_with.substr(0, begins_with.find('\n')) + "')" + hint);
 	if (force || isOfKind(output, kind)) return;
 	throw std::runtime_error("'" + output + "' exists and is not " + kindName(kind) + hint);
 }
@@ -195,7 +202,7 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 				throw std::runtime_error("the outputs '" + outputs[i].path + "' and '" + outputs[j].path +
 										 "' are in the same place: one would replace the other");
 		}
-	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force);
+	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
 }
 
 void replaceFolder(const std::string& target, const std::string& fresh)

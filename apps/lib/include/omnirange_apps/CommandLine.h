@@ -52,6 +52,11 @@ std::string requiredPath(TCLAP::ValueArg<std::string>& arg);
  * std::invalid_argument when given empty (`--save-to ''` would be ignored). */
 std::string optionalPath(TCLAP::ValueArg<std::string>& arg);
 
+/** The value of a prefix option (PREFIX_pairs.csv, PREFIX.md): "" when not
+ * given; throws std::invalid_argument when it names a folder ("out/", ".",
+ * an existing folder), whose files would be hidden ("out/_pairs.csv"). */
+std::string prefixPath(TCLAP::ValueArg<std::string>& arg, const std::string& example);
+
 /** Parses the command line; on --help/--version or an error (reported on
  * one line of stderr), throws ExitRequest with code 0 or 2. */
 void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv);

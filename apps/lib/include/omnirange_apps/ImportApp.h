@@ -29,7 +29,9 @@ class ImportApp : public mrpt::system::COutputLogger
 	Options o_;
 };
 
-/** "x y z yaw_deg [pitch_deg roll_deg]" -> a pose; throws std::invalid_argument. */
-mrpt::poses::CPose3D poseFromText(const std::string& text);
+/** The value of `option`, "x y z yaw_deg [pitch_deg roll_deg]" (offsets within
+ * kMaxMountOffset, angles within kMaxMountAngle) -> a pose; throws
+ * std::invalid_argument naming the option. */
+mrpt::poses::CPose3D poseFromText(const std::string& option, const std::string& text);
 
 }  // namespace omnirange::app

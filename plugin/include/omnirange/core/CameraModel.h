@@ -33,6 +33,10 @@ std::string toString(MirrorModel m);
 /** "paraboloid", "first_order", "mei" or "ocamcalib"; throws std::invalid_argument otherwise. */
 MirrorModel mirrorModelFromString(const std::string& name);
 
+/** Images past this many pixels are refused: readers from their header,
+ * before decoding; a camera (or a simulated one) of that size in its ini. */
+inline constexpr unsigned long kMaxImagePixels = 100000000;
+
 /** Parameters of the omnicam. The ini keys equal the member names (angles:
  * the name plus "_deg", in degrees; see OptionsTable). */
 struct CameraParams

@@ -14,8 +14,6 @@ namespace omnirange
  * (.jpg, .jpeg, .png, .pgm, .ppm, .bmp, in any case). */
 bool isImageFileName(const std::string& file);
 
-/** Images past this many pixels are refused from their header, before decoding. */
-inline constexpr unsigned long kMaxImagePixels = 100000000;
 
 /** An image file (of the sensor `label`; "" for none) as OpenCV's imdecode
  * `flags` make it (8-bit BGR by default); empty if it does not decode.

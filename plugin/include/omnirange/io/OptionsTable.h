@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <istream>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -43,6 +44,13 @@ bool parseBool(const std::string& text);  ///< true/false, yes/no, 1/0
  * exponent or hex, within MRPT's clock (below kMaxTime). */
 double parseTime(const std::string& text);
 inline constexpr double kMaxTime = 1e11;
+/** [m] A sensor's offset on its robot (pose_x, pose_y, pose_z, --laser-pose):
+ * far larger is a typo, and past MRPT's matching ranges it crashes icp. */
+inline constexpr double kMaxMountOffset = 100.0;
+/** [deg] A sensor's angles on its robot. */
+inline constexpr double kMaxMountAngle = 360.0;
+/** parseDouble() within [-limit, limit]; the error names the range. */
+double parseWithin(const std::string& text, double limit);
 /** Numbers separated by blanks, each as parseDouble() takes it; "" is none. */
 std::vector<double> parseDoubles(const std::string& text);
 std::string formatDouble(double v);
@@ -58,6 +66,12 @@ void requireRegularFile(const std::string& path, const std::string& what);
 /** [bytes] The longest line a text file of ours may have (1 MB: a laser row of
  * 10,000 ranges is about 100 kB). */
 inline constexpr std::size_t kMaxLineBytes = std::size_t(1) << 20;
+
+/** std::getline() for our text files: false at the end; throws
+ * std::runtime_error("PATH:LINE: a line of more than 1 MB ...") rather than
+ * reading a line without end. */
+bool readCappedLine(std::istream& in, std::string& line, const std::string& path, int line_number,
+					const std::string& what);
 
 /** Calls `row(line_number, text)` for every line of the text file `path`
  * that is neither blank nor a '#' comment, trimmed. A std::invalid_argument
@@ -209,9 +223,13 @@ class OptionsTable
 /** Throws std::runtime_error("FILE:LINE: ...") if a key appears twice in
  * one section of the ini file `path`, in any mix of upper and lower case
  * (MRPT's reader keeps the last one silently), if a line is Malformed
- * (MRPT's reader skips it silently), if the file holds no key at all, or if
+ * (MRPT's reader skips it silently), if a key stands above every section
+ * (other than `base`) or under `[]`, if the file holds no key at all, or if
  * it cannot be read. */
 void requireNoRepeatedKeys(const std::string& path);
+/** The same, for an ini about to be written into: an empty one passes.
+ * Returns how many keys it holds. */
+int requireWellFormedIni(const std::string& path);
 /** Throws std::runtime_error("FILE:LINE: ...") at a section not in `known`:
  * for files read by this project alone, where a misspelt section would
  * otherwise leave all its keys at their defaults. */
@@ -233,7 +251,7 @@ OptionsTable<S>& OptionsTable<S>::addPose(const std::string& doc, Get get)
 	const auto linear = [&](const std::string& key, int axis) {
 		Field f{{key, "m", doc}, {}, {}};
 		f.parse = [get, axis](S& s, const std::string& t) {
-			const double v = parseDouble(t);
+			const double v = parseWithin(t, kMaxMountOffset);
 			CPose3D& p = get(s);
 			axis == 0 ? p.x(v) : axis == 1 ? p.y(v) : p.z(v);
 		};
@@ -247,7 +265,7 @@ OptionsTable<S>& OptionsTable<S>::addPose(const std::string& doc, Get get)
 		f.parse = [get, which](S& s, const std::string& t) {
 			CPose3D& p = get(s);
 			double ypr[3] = {p.yaw(), p.pitch(), p.roll()};
-			ypr[which] = parseDouble(t) * kDegToRad;
+			ypr[which] = parseWithin(t, kMaxMountAngle) * kDegToRad;
 			p.setYawPitchRoll(ypr[0], ypr[1], ypr[2]);
 		};
 		f.print = [get, which](const S& s) {

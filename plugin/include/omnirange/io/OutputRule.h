@@ -35,14 +35,19 @@ std::string outputPath(const std::string& path);
 
 /** Throws std::runtime_error, before any work, naming `output` when the rule
  * above forbids `program` to write it. With `force`, an existing file or
- * folder of another kind may be replaced, but never an input. */
+ * folder of another kind may be replaced, but never an input. A text or ini
+ * output whose program always begins it the same way gives `begins_with`: an
+ * existing file must begin so too (a user's notes.md is text, but not a
+ * summary). */
 void requireOutputAllowed(const std::string& output, OutputKind kind, const std::string& program,
-						  const std::vector<std::string>& inputs, bool force = false);
+						  const std::vector<std::string>& inputs, bool force = false,
+						  const std::string& begins_with = "");
 
 struct Output
 {
 	std::string path;
 	OutputKind kind;
+	std::string begins_with{};  ///< see requireOutputAllowed()
 };
 /** requireOutputAllowed() for each of a program's outputs ("" paths skipped). */
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,

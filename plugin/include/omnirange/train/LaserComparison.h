@@ -12,6 +12,8 @@ namespace omnirange
 {
 /** [m] laser/omnicam pairs differing by more are excluded (paper §IV-B). */
 constexpr double kDefaultMaxDifference = 1.25;
+/** [m] The largest max_difference taken. */
+constexpr double kMaxRangeDifference = 100.0;
 
 enum class PairStatus
 {
