@@ -19,17 +19,21 @@ done
 shift $((OPTIND - 1))
 groups=("$@")
 
-names=()
+names=(); ran_groups=()
 while read -r name group _; do
   [[ -z "$name" || "$name" == \#* ]] && continue
   # The held-out worlds run only when their group is named: a run spends them.
-  if { [ ${#groups[@]} -eq 0 ] && [ "$group" != heldout ]; } || [[ " ${groups[*]} " == *" $group "* ]]; then names+=("$name"); fi
+  if { [ ${#groups[@]} -eq 0 ] && [ "$group" != heldout ]; } || [[ " ${groups[*]} " == *" $group "* ]]; then
+    names+=("$name")
+    [[ " ${ran_groups[*]:-} " == *" $group "* ]] || ran_groups+=("$group")
+  fi
 done < ini/suite.txt
 n=${#names[@]}
 [ "$n" -gt 0 ] || { echo "run-suite.sh: no experiment in ini/suite.txt of the groups: ${groups[*]}" >&2; exit 2; }
 [ -n "$jobs" ] || { [ "$n" -le 2 ] && jobs=1 || jobs=$(nproc); }
 [ -n "$prefix" ] || prefix=results/$( [ ${#groups[@]} -eq 0 ] && echo suite || (IFS=-; echo "${groups[*]}") )-summary
-group_args=(); for g in "${groups[@]}"; do group_args+=(-g "$g"); done
+# The summary tables the groups that ran (not the held-out worlds, when no group is named).
+group_args=(); for g in "${ran_groups[@]}"; do group_args+=(-g "$g"); done
 
 t0=$(date +%s)
 if [ "$jobs" -eq 1 ]; then
