@@ -3,8 +3,8 @@
 #include "omnirange_eval/CandidateStudy.h"
 #include "omnirange_eval/ExternalProgram.h"
 #include "omnirange_eval/Figures.h"
-#include "omnirange_eval/GuardedIcp.h"
-#include "omnirange_eval/IcpSlamIni.h"
+#include <omnirange_slam/GuardedIcp.h>
+#include <omnirange_slam/IcpSlamIni.h>
 #include "omnirange_eval/SensoryFrameFormat.h"
 
 #include <omnirange/io/AtomicWrite.h>
@@ -259,7 +259,7 @@ void Experiment::runIcpSlam()
 	std::vector<std::pair<std::string, cv::Mat>> figures{{"true map", paperStyle(truth_)}};
 	for (auto& s : r_.sensors)
 	{
-		for (const auto& k : icpKeysMrptIgnores(s.icp_ini))
+		for (const auto& k : slam::icpKeysMrptIgnores(s.icp_ini))
 			MRPT_LOG_WARN_STREAM("icp-slam ini '" << s.icp_ini << "': [ICP] " << k
 												  << " is not read by MRPT 2.5 and keeps its default");
 		const std::string only = "only_" + s.tag + ".rawlog";
@@ -291,8 +291,8 @@ void Experiment::runGuardedIcp()
 	std::vector<std::pair<std::string, cv::Mat>> figures{{"true map", paperStyle(truth_)}};
 	for (auto& s : r_.sensors)
 	{
-		const GuardedIcpResult g = eval::runGuardedIcp(out_ + "/only_" + s.tag + ".rawlog", s.label, kOdometryLabel,
-												 GuardedIcpOptions::fromIniFile(s.icp_ini));
+		const slam::GuardedIcpResult g = slam::runGuardedIcp(out_ + "/only_" + s.tag + ".rawlog", s.label, kOdometryLabel,
+												 slam::GuardedIcpOptions::fromIniFile(s.icp_ini));
 		MRPT_LOG_INFO_STREAM("guarded ICP, " << s.label << ": " << g.matches << " matches, " << g.refused_jumps
 											 << " refused, " << g.weak_directions << " weak directions left to the odometry, "
 											 << g.loops << " loops closed");

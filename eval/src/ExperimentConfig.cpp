@@ -1,5 +1,5 @@
 #include "omnirange_eval/ExperimentConfig.h"
-#include "omnirange_eval/IcpSlamIni.h"
+#include <omnirange_slam/IcpSlamIni.h>
 
 #include <omnirange_sim/Route.h>
 #include <omnirange_sim/RobotParams.h>
@@ -107,7 +107,7 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 		const auto& cfg = *layers.merged;
 		table().load(c, cfg, "experiment");
 		resolvePaths(c, layers);
-		requireStrictIcpSection(c.icp_laser_ini), requireStrictIcpSection(c.icp_omni_ini);
+		slam::requireStrictIcpSection(c.icp_laser_ini), slam::requireStrictIcpSection(c.icp_omni_ini);
 		validate(c);
 		c.rangefinder.loadFromConfig(cfg, "rangefinder");
 		checkSimulatorInputs(c);

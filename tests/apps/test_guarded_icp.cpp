@@ -1,7 +1,7 @@
 // The odometry-guarded matcher: what a scan can fix and what it cannot, and
 // the guard's refusal, on scans drawn from walls whose places are known.
 #include <omnirange_apps/SlamApp.h>
-#include <omnirange_eval/GuardedIcp.h>
+#include <omnirange_slam/GuardedIcp.h>
 #include <omnirange_eval/SensoryFrameFormat.h>
 #include <omnirange_eval/Trajectory.h>
 
@@ -22,6 +22,7 @@
 
 using namespace omnirange;
 using namespace omnirange::eval;
+using namespace omnirange::slam;
 using mrpt::poses::CPose2D;
 
 namespace

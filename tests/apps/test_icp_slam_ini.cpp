@@ -1,13 +1,13 @@
 // icp-slam's ini as MRPT reads it: the keys it would ignore are found, and
 // the shipped inis have none.
-#include <omnirange_eval/IcpSlamIni.h>
+#include <omnirange_slam/IcpSlamIni.h>
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-using omnirange::eval::icpKeysMrptIgnores;
+using omnirange::slam::icpKeysMrptIgnores;
 
 namespace
 {
@@ -62,7 +62,7 @@ TEST(IcpSlamIni, AMissingFileIsAnErrorNamingIt)
 
 TEST(IcpSlamIni, TheIcpSectionIsReadStrictlyNamingFileSectionAndKey)
 {
-	using omnirange::eval::requireStrictIcpSection;
+	using omnirange::slam::requireStrictIcpSection;
 	const auto refusal = [](const std::string& text) {
 		const TempIni ini(text);
 		try

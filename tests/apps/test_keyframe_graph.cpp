@@ -1,8 +1,8 @@
 // Loop closure over the guarded matcher's keyframes: a drive round a ring
 // corridor whose estimate drifts, with the scans drawn where the robot truly
 // was, must come back to the truth when the loop closes; the gates must hold.
-#include <omnirange_eval/GuardedIcp.h>
-#include <omnirange_eval/KeyframeGraph.h>
+#include <omnirange_slam/GuardedIcp.h>
+#include <omnirange_slam/KeyframeGraph.h>
 #include <omnirange_eval/Trajectory.h>
 
 #include "../common/DrawnScans.h"
@@ -18,6 +18,7 @@
 
 using namespace omnirange;
 using namespace omnirange::eval;
+using namespace omnirange::slam;
 using namespace omnirange::test;
 
 namespace

@@ -39,14 +39,14 @@ SlamApp::SlamApp(Options o) : mrpt::system::COutputLogger("omnirange-slam"), o_(
 	setMinLoggingLevel(o_.verbosity);
 }
 
-eval::GuardedIcpResult SlamApp::run()
+slam::GuardedIcpResult SlamApp::run()
 {
 	// icp-slam's kind of outputs, in a folder of this program's that is swapped in whole.
 	const std::string folder = outputPath(o_.output);
 	StagedFolder staged(folder, "omnirange-slam", {o_.input, o_.ini}, false);
 	const std::string map = staged.path() + "/_finalmap_.simplemap", path = staged.path() + "/log_estimated_path.txt";
-	const auto options = eval::GuardedIcpOptions::fromIniFile(o_.ini);
-	const eval::GuardedIcpResult r = eval::runGuardedIcp(o_.input, o_.scan_label, o_.odometry_label, options);
+	const auto options = slam::GuardedIcpOptions::fromIniFile(o_.ini);
+	const slam::GuardedIcpResult r = slam::runGuardedIcp(o_.input, o_.scan_label, o_.odometry_label, options);
 	eval::saveSimplemap(r.keyframes, map);
 	std::string text = "% time [s], x [m], y [m], phi [rad]: the estimated pose at every scan\n";
 	char line[128];

@@ -2,6 +2,8 @@
 // Robot paths: ground truth and odometry from a rawlog, keyframes estimated by
 // a SLAM engine, and the absolute trajectory error between them.
 
+#include <omnirange_slam/StampedPose.h>
+
 #include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -10,11 +12,7 @@
 
 namespace omnirange::eval
 {
-struct StampedPose
-{
-	double t;  ///< [s] timestamp
-	mrpt::poses::CPose2D pose;
-};
+using slam::StampedPose;
 
 /** Every GT (CObservationRobotPose) pose of a rawlog, in time order. */
 std::vector<StampedPose> groundTruthPath(const std::string& rawlog, const std::string& label);

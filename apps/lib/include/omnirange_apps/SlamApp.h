@@ -1,11 +1,11 @@
 #pragma once
 // omnirange-slam: a rawlog with scans and odometry -> a path and the keyframes
-// of a map, by the odometry-guarded matcher (omnirange_eval/GuardedIcp.h),
+// of a map, by the odometry-guarded matcher (omnirange_slam/GuardedIcp.h),
 // configured by an icp-slam ini. Its outputs are icp-slam's kind:
 // DIR/_finalmap_.simplemap (for observations2map, RawLogViewer) and
 // DIR/log_estimated_path.txt.
 
-#include <omnirange_eval/GuardedIcp.h>
+#include <omnirange_slam/GuardedIcp.h>
 
 #include <mrpt/system/COutputLogger.h>
 
@@ -29,7 +29,7 @@ class SlamApp : public mrpt::system::COutputLogger
 	static Options parse(int argc, const char* const* argv);
 
 	explicit SlamApp(Options o);
-	eval::GuardedIcpResult run();
+	slam::GuardedIcpResult run();
 
    private:
 	Options o_;

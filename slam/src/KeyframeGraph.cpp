@@ -1,6 +1,6 @@
-#include "omnirange_eval/KeyframeGraph.h"
+#include "omnirange_slam/KeyframeGraph.h"
 
-#include "omnirange_eval/GuardedIcp.h"
+#include "omnirange_slam/GuardedIcp.h"
 
 #include <mrpt/graphslam/levmarq.h>
 #include <mrpt/math/wrap2pi.h>
@@ -15,7 +15,7 @@
 #include <utility>
 #include <stdexcept>
 
-namespace omnirange::eval
+namespace omnirange::slam
 {
 namespace
 {
@@ -177,4 +177,4 @@ void KeyframeGraph::insertInto(mrpt::maps::CSimplePointsMap& map) const
 		map.insertObservation(*keyframes_[k].scan, mrpt::poses::CPose3D(graph_.nodes.at(k)));
 }
 
-}  // namespace omnirange::eval
+}  // namespace omnirange::slam

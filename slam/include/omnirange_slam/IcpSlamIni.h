@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace omnirange::eval
+namespace omnirange::slam
 {
 /** The keys of `section` in the ini file `file` that MRPT's ICP options
  * (mrpt::slam::CICP::TConfigParams) do not read, sorted; throws if the file
@@ -20,4 +20,4 @@ std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::
  * enum's name). Throws std::runtime_error naming the file, section and key. */
 void requireStrictIcpSection(const std::string& file, const std::string& section = "ICP");
 
-}  // namespace omnirange::eval
+}  // namespace omnirange::slam

@@ -1,4 +1,4 @@
-#include "omnirange_eval/IcpSlamIni.h"
+#include "omnirange_slam/IcpSlamIni.h"
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-namespace omnirange::eval
+namespace omnirange::slam
 {
 std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::string& section)
 {
@@ -104,4 +104,4 @@ void requireStrictIcpSection(const std::string& file, const std::string& section
 	}
 }
 
-}  // namespace omnirange::eval
+}  // namespace omnirange::slam

@@ -1,5 +1,5 @@
-#include "omnirange_eval/GuardedIcp.h"
-#include "omnirange_eval/IcpSlamIni.h"
+#include "omnirange_slam/GuardedIcp.h"
+#include "omnirange_slam/IcpSlamIni.h"
 
 #include <omnirange/io/RawlogProcessor.h>
 
@@ -20,7 +20,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace omnirange::eval
+namespace omnirange::slam
 {
 namespace
 {
@@ -293,4 +293,4 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 	return r;
 }
 
-}  // namespace omnirange::eval
+}  // namespace omnirange::slam

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace omnirange::eval
+namespace omnirange::slam
 {
 struct LoopClosureOptions
 {
@@ -93,4 +93,4 @@ private:
 	int loops_{0};
 };
 
-}  // namespace omnirange::eval
+}  // namespace omnirange::slam

@@ -11,8 +11,8 @@
 // Its keyframes form a pose graph that closes loops (KeyframeGraph.h).
 // docs/method.md ("Maps from the omnicam: the odometry guard") has the why.
 
-#include <omnirange_eval/KeyframeGraph.h>
-#include <omnirange_eval/Trajectory.h>
+#include <omnirange_slam/KeyframeGraph.h>
+#include <omnirange_slam/StampedPose.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/CSimpleMap.h>
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-namespace omnirange::eval
+namespace omnirange::slam
 {
 struct GuardedIcpOptions
 {
@@ -94,4 +94,4 @@ Eigen::Matrix2d translationInformation(const mrpt::obs::CObservation2DRangeScan&
 mrpt::math::TPose2D keepConstrainedCorrection(const mrpt::math::TPose2D& predicted, const mrpt::math::TPose2D& matched,
 											  const Eigen::Matrix2d& information, double weak_ratio, int& weak);
 
-}  // namespace omnirange::eval
+}  // namespace omnirange::slam
