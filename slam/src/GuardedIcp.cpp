@@ -52,10 +52,6 @@ bool beyond(const mrpt::poses::CPose2D& d, double lin, double ang_deg)
 }
 
 /** Odometric motion, which bounds how far the wheels can have erred. */
-struct Motion
-{
-	double lin{0}, ang{0};  ///< odometric motion since the last accepted match [m], [rad]
-};
 }  // namespace
 
 const OptionsTable<GuardedIcpOptions>& GuardedIcpOptions::guardTable()
@@ -177,46 +173,105 @@ mrpt::math::TPose2D keepConstrainedCorrection(const mrpt::math::TPose2D& predict
 	return {predicted.x + kept.x(), predicted.y + kept.y(), matched.phi};
 }
 
+GuardedMatcher::GuardedMatcher(const GuardedIcpOptions& o)
+	: o_(o), graph_(o.loops, o.icp, o.weak_direction_ratio)
+{
+	map_.insertionOptions.minDistBetweenLaserPoints = static_cast<float>(o.min_dist_between_points);
+	map_.insertionOptions.fuseWithExisting = false;
+	map_.insertionOptions.isPlanarMap = true;
+	icp_.options = o.icp;
+}
+
+void GuardedMatcher::onOdometry(const mrpt::poses::CPose2D& u)
+{
+	++odometry_seen_;
+	pose_ = pose_ + u;
+	since_.lin += std::hypot(u.x(), u.y());
+	since_.ang += std::abs(u.phi());
+	driven_ += std::hypot(u.x(), u.y());
+}
+
+void GuardedMatcher::insertKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan)
+{
+	const mrpt::poses::CPose2D before = pose_;
+	if (!graph_.add(scan, pose_, driven_))
+	{
+		map_.insertObservation(*scan, mrpt::poses::CPose3D(pose_));
+		return;
+	}
+	// A loop closed: every keyframe moved. The matcher goes on from the
+	// newest keyframe's new pose, against a map rebuilt from them all.
+	pose_ = graph_.pose(graph_.size() - 1);
+	last_match_ = pose_ + (last_match_ - before);
+	map_.clear();
+	graph_.insertInto(map_);
+}
+
+void GuardedMatcher::match(const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	last_match_ = pose_;
+	mrpt::maps::CSimplePointsMap points;
+	points.insertionOptions.isPlanarMap = true;
+	points.insertObservation(scan);
+	mrpt::slam::CICP::TReturnInfo info;
+	const auto pdf = icp_.Align(&map_, &points, pose_, info);
+	if (!pdf || info.goodness < o_.min_goodness)
+	{
+		++counts_.poor_matches;
+		return;
+	}
+	const mrpt::poses::CPose2D matched = pdf->getMeanVal();
+	const mrpt::poses::CPose2D jump = matched - pose_;
+	const bool too_far = std::hypot(jump.x(), jump.y()) > o_.max_jump + o_.max_jump_per_metre * since_.lin ||
+						 std::abs(jump.phi()) > o_.max_turn_deg * kDeg + o_.max_turn_per_radian * since_.ang;
+	if (too_far)
+	{
+		++counts_.refused_jumps;
+		return;
+	}
+	pose_ = mrpt::poses::CPose2D(keepConstrainedCorrection(pose_.asTPose(), matched.asTPose(),
+														   translationInformation(scan), o_.weak_direction_ratio,
+														   counts_.weak_directions));
+	++counts_.matches;
+	since_ = {};
+}
+
+void GuardedMatcher::onScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan)
+{
+	const double t = mrpt::Clock::toDouble(scan->timestamp);
+	if (map_.empty())  // until a scan has put points in the map, there is nothing to match
+	{
+		insertKeyframe(scan);
+		last_match_ = pose_;
+		scans_.push_back({t, graph_.size() - 1, mrpt::poses::CPose2D()});
+		return;
+	}
+	if (beyond(pose_ - last_match_, o_.localization_lin, o_.localization_ang_deg)) match(*scan);
+	const auto keyframe = [&] { return graph_.pose(graph_.size() - 1); };
+	if (beyond(pose_ - keyframe(), o_.insertion_lin, o_.insertion_ang_deg)) insertKeyframe(scan);
+	scans_.push_back({t, graph_.size() - 1, pose_ - keyframe()});
+}
+
+GuardedIcpResult GuardedMatcher::result() const
+{
+	GuardedIcpResult r = counts_;
+	for (const Anchored& a : scans_) r.path.push_back({a.t, graph_.pose(a.keyframe) + a.relative});
+	r.keyframes = graph_.simplemap();
+	r.loops = graph_.loops();
+	return r;
+}
+
 GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& scan_label,
 							   const std::string& odometry_label, const GuardedIcpOptions& o)
 {
 	using mrpt::obs::CObservation2DRangeScan;
 	using mrpt::obs::CObservationOdometry;
-	using mrpt::poses::CPose2D;
-	GuardedIcpResult r;
-	mrpt::maps::CSimplePointsMap map;
-	map.insertionOptions.minDistBetweenLaserPoints = static_cast<float>(o.min_dist_between_points);
-	map.insertionOptions.fuseWithExisting = false;
-	map.insertionOptions.isPlanarMap = true;
-	mrpt::slam::CICP icp;
-	icp.options = o.icp;
-
-	KeyframeGraph graph(o.loops, o.icp, o.weak_direction_ratio);
-	CPose2D pose, last_odometry, last_match;
+	GuardedMatcher matcher(o);
+	mrpt::poses::CPose2D last_odometry;
 	bool have_odometry = false;
-	std::size_t odometry_seen = 0;
-	double driven = 0;  // odometric distance from the start
-	Motion since;  // odometric motion since the last accepted match
-	// Each scan's pose relative to the keyframe before it, so that closing a
-	// loop later moves it with its keyframe.
-	struct Anchored
-	{
-		double t;
-		std::size_t keyframe;
-		CPose2D relative;
-	};
-	std::vector<Anchored> scans;
-
 	RawlogProcessor loop(rawlog);
-	const auto drive = [&](const CPose2D& u) {
-		++odometry_seen;
-		pose = pose + u;
-		since.lin += std::hypot(u.x(), u.y());
-		since.ang += std::abs(u.phi());
-		driven += std::hypot(u.x(), u.y());
-	};
 	loop.on<CObservationOdometry>(odometry_label, [&](const CObservationOdometry::Ptr& odo) {
-		drive(have_odometry ? odo->odometry - last_odometry : CPose2D());
+		matcher.onOdometry(have_odometry ? odo->odometry - last_odometry : mrpt::poses::CPose2D());
 		last_odometry = odo->odometry;
 		have_odometry = true;
 	});
@@ -224,73 +279,16 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 	// use_sensoryframes = 1) carries the odometry as each frame's increment.
 	loop.onObject([&](const mrpt::serialization::CSerializable::Ptr& object) {
 		if (const auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(object))
-			if (const auto move = actions->getBestMovementEstimation()) drive(move->rawOdometryIncrementReading);
+			if (const auto move = actions->getBestMovementEstimation()) matcher.onOdometry(move->rawOdometryIncrementReading);
 	});
-	const auto insertKeyframe = [&](const CObservation2DRangeScan::Ptr& scan) {
-		const CPose2D before = pose;
-		if (!graph.add(scan, pose, driven))
-		{
-			map.insertObservation(*scan, mrpt::poses::CPose3D(pose));
-			return;
-		}
-		// A loop closed: every keyframe moved. The matcher goes on from the
-		// newest keyframe's new pose, against a map rebuilt from them all.
-		pose = graph.pose(graph.size() - 1);
-		last_match = pose + (last_match - before);
-		map.clear();
-		graph.insertInto(map);
-	};
-	const auto keyframeAt = [&]() { return graph.pose(graph.size() - 1); };
-	loop.on<CObservation2DRangeScan>(scan_label, [&](const CObservation2DRangeScan::Ptr& scan) {
-		const double t = mrpt::Clock::toDouble(scan->timestamp);
-		if (map.empty())  // until a scan has put points in the map, there is nothing to match
-		{
-			insertKeyframe(scan);
-			last_match = pose;
-			scans.push_back({t, graph.size() - 1, CPose2D()});
-			return;
-		}
-		if (beyond(pose - last_match, o.localization_lin, o.localization_ang_deg))
-		{
-			last_match = pose;
-			mrpt::maps::CSimplePointsMap points;
-			points.insertionOptions.isPlanarMap = true;
-			points.insertObservation(*scan);
-			mrpt::slam::CICP::TReturnInfo info;
-			const auto pdf = icp.Align(&map, &points, pose, info);
-			if (!pdf || info.goodness < o.min_goodness)
-				++r.poor_matches;
-			else
-			{
-				const CPose2D matched = pdf->getMeanVal();
-				const CPose2D jump = matched - pose;
-				const bool too_far = std::hypot(jump.x(), jump.y()) > o.max_jump + o.max_jump_per_metre * since.lin ||
-									 std::abs(jump.phi()) > o.max_turn_deg * kDeg + o.max_turn_per_radian * since.ang;
-				if (too_far)
-					++r.refused_jumps;
-				else
-				{
-					pose = CPose2D(keepConstrainedCorrection(pose.asTPose(), matched.asTPose(),
-															 translationInformation(*scan), o.weak_direction_ratio,
-															 r.weak_directions));
-					++r.matches;
-					since = {};
-				}
-			}
-		}
-		if (beyond(pose - keyframeAt(), o.insertion_lin, o.insertion_ang_deg)) insertKeyframe(scan);
-		scans.push_back({t, graph.size() - 1, pose - keyframeAt()});
-	});
+	loop.on<CObservation2DRangeScan>(scan_label, [&](const CObservation2DRangeScan::Ptr& scan) { matcher.onScan(scan); });
 	loop.run();
-	if (scans.empty())
+	if (matcher.scansSeen() == 0)
 		throw std::runtime_error("no " + scan_label + " scan in '" + rawlog + "' (" + loop.describeLabels() + ")");
-	if (odometry_seen == 0)
+	if (matcher.odometrySeen() == 0)
 		throw std::runtime_error("no " + odometry_label + " odometry in '" + rawlog + "' (" + loop.describeLabels() +
 								 ", and no robot-movement action): the guard needs the wheels");
-	for (const Anchored& a : scans) r.path.push_back({a.t, graph.pose(a.keyframe) + a.relative});
-	r.keyframes = graph.simplemap();
-	r.loops = graph.loops();
-	return r;
+	return matcher.result();
 }
 
 }  // namespace omnirange::slam

@@ -16,6 +16,8 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/poses/CPose2D.h>
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/slam/CICP.h>
@@ -74,7 +76,58 @@ struct GuardedIcpResult
 	int loops{0};  ///< loops closed
 };
 
-/** Runs the matcher over a rawlog's scans of one label and its odometry, in
+/** The matcher itself, fed one observation at a time in the order they
+ * were taken: odometry increments and scans. What omnirange-slam and the
+ * experiment run over a rawlog (runGuardedIcp), and what a live robot could
+ * call as its sensors report. */
+class GuardedMatcher
+{
+   public:
+	explicit GuardedMatcher(const GuardedIcpOptions& o);
+	/** The wheels moved the robot by `increment` (in its own frame). */
+	void onOdometry(const mrpt::poses::CPose2D& increment);
+	/** A scan: matched against the map of keyframes where the robot has moved
+	 * far enough since the last match, kept only if the odometry allows it,
+	 * and made a keyframe where the robot has moved far enough from the last. */
+	void onScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan);
+	/** The current pose estimate. */
+	const mrpt::poses::CPose2D& pose() const { return pose_; }
+	std::size_t odometrySeen() const { return odometry_seen_; }
+	std::size_t scansSeen() const { return scans_.size(); }
+	/** The path (every scan's pose, with the loops closed since), the
+	 * keyframes and the counters so far. */
+	GuardedIcpResult result() const;
+
+   private:
+	/** Odometric motion since the last accepted match. */
+	struct Motion
+	{
+		double lin{0}, ang{0};  ///< [m], [rad]
+	};
+	/** A scan's pose relative to the keyframe before it: closing a loop
+	 * later moves it with its keyframe. */
+	struct Anchored
+	{
+		double t;
+		std::size_t keyframe;
+		mrpt::poses::CPose2D relative;
+	};
+	void match(const mrpt::obs::CObservation2DRangeScan& scan);
+	void insertKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan);
+
+	GuardedIcpOptions o_;
+	mrpt::maps::CSimplePointsMap map_;
+	mrpt::slam::CICP icp_;
+	KeyframeGraph graph_;
+	mrpt::poses::CPose2D pose_, last_match_;
+	std::size_t odometry_seen_{0};
+	double driven_{0};  ///< [m] odometric distance from the start
+	Motion since_;
+	std::vector<Anchored> scans_;
+	GuardedIcpResult counts_;  ///< the counters; path and keyframes filled by result()
+};
+
+/** Runs a GuardedMatcher over a rawlog's scans of one label and its odometry, in
  * file order (streamed). The odometry is the CObservationOdometry readings of
  * `odometry_label`, or, in the actions/sensory-frames format, each frame's
  * robot-movement action. Throws std::runtime_error when it holds no such
