@@ -228,60 +228,72 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 		};
 		Ray& ray = rays[s];
 		ray.bearing = line.bearing;
-		ray.search = findHit(is_free, line.count, line.last_candidate, p_.filter);
-		if (ray.search.status == HitSearch::Status::Hit && ray.search.index == 0 && p_.base_shadow > 0)
-		{
-			// An obstacle cannot stand inside the robot's base, and one just outside
-			// it hides the floor up its face: floor that comes back soon after a
-			// non-free run at the base is floor, darkened by the robot or its body.
-			const int resume = floorPastBase(line, is_free);
-			if (resume > 0)
-			{
-				auto from = [&](int k) { return is_free(resume + k); };
-				ray.search = findHit(from, line.count - resume, line.last_candidate - resume, p_.filter);
-				if (ray.search.index >= 0) ray.search.index += resume;
-				if (ray.search.last_rejected >= 0) ray.search.last_rejected += resume;
-				ray.past_base = resume;
-			}
-		}
-		const bool colour_hit = ray.search.status == HitSearch::Status::Hit;
-		int hit = colour_hit ? ray.search.index : -1;
-		if (p_.step_threshold > 0 && line.first_in_range >= 0)
-		{
-			// A face the colour model sees through still shows its foot. The
-			// search may climb to the colour's hit: a step that peaks there is
-			// the colour's own edge, and the colour places it. A shadow passed
-			// at the base has an edge too: the search starts past it.
-			const int to = colour_hit ? hit : line.last_candidate;
-			const int step = findBrightnessStep(data, pix, line.count, std::max(line.first_in_range, ray.past_base), to,
-												p_.step_threshold, p_.step_window, p_.step_sign);
-			if (step >= 0 && (!colour_hit || step < hit)) hit = step, ray.by_step = true;
-		}
+		searchColour(line, is_free, ray);
+		const int hit = endOfFloor(line, data, pix, ray);
 		if (hit < 0)
 		{
 			ray.status = RayStatus::NoHit;
 			ray.range = static_cast<float>(p_.max_range);
 			continue;
 		}
-		float range = mid_range_[line.first + hit];
-		ray.hit_rho = mid_rho_[line.first + hit];
-		if (p_.boundary_model == BoundaryModel::Subpixel && hit > 0)
-		{
-			ray.hit_rho = static_cast<float>(rhoAt(line, refineBoundary(data, pix, line.count, hit, p_.boundary_reach)) + p_.boundary_offset);
-			range = static_cast<float>(camera_.distanceFromRho(ray.hit_rho));
-		}
-		ray.edge_contrast = edgeContrast(data, pix, hit);
-		if (const double bias = edgeBiasAt(p_.edge_bias, ray.edge_contrast); bias != 0 && range + bias > 0)
-		{
-			range = static_cast<float>(std::min(range + bias, p_.max_range));
-			ray.hit_rho = static_cast<float>(camera_.rhoFromDistance(range));
-		}
-		// The first pixel is at the base: the obstacle may start inside it.
-		const bool too_close = hit == 0 || range < p_.min_range;
-		ray.status = too_close ? RayStatus::TooClose : RayStatus::Hit;
-		ray.range = too_close ? static_cast<float>(p_.min_range) : range;
+		placeHit(line, data, pix, hit, ray);
 	}
 	return rays;
+}
+
+template <class IsFree>
+void PolarScanner::searchColour(const Scanline& line, IsFree& is_free, Ray& ray) const
+{
+	ray.search = findHit(is_free, line.count, line.last_candidate, p_.filter);
+	if (ray.search.status != HitSearch::Status::Hit || ray.search.index != 0 || p_.base_shadow <= 0) return;
+	// An obstacle cannot stand inside the robot's base, and one just outside
+	// it hides the floor up its face: floor that comes back soon after a
+	// non-free run at the base is floor, darkened by the robot or its body.
+	const int resume = floorPastBase(line, is_free);
+	if (resume <= 0) return;
+	auto from = [&](int k) { return is_free(resume + k); };
+	ray.search = findHit(from, line.count - resume, line.last_candidate - resume, p_.filter);
+	if (ray.search.index >= 0) ray.search.index += resume;
+	if (ray.search.last_rejected >= 0) ray.search.last_rejected += resume;
+	ray.past_base = resume;
+}
+
+int PolarScanner::endOfFloor(const Scanline& line, const std::uint8_t* bgr, const std::int32_t* pix, Ray& ray) const
+{
+	const bool colour_hit = ray.search.status == HitSearch::Status::Hit;
+	const int hit = colour_hit ? ray.search.index : -1;
+	if (p_.step_threshold <= 0 || line.first_in_range < 0) return hit;
+	// A face the colour model sees through still shows its foot. The search
+	// may climb to the colour's hit: a step that peaks there is the colour's
+	// own edge, and the colour places it. A shadow passed at the base has an
+	// edge too: the search starts past it.
+	const int to = colour_hit ? hit : line.last_candidate;
+	const int step = findBrightnessStep(bgr, pix, line.count, std::max(line.first_in_range, ray.past_base), to,
+										p_.step_threshold, p_.step_window, p_.step_sign);
+	if (step < 0 || (colour_hit && step >= hit)) return hit;
+	ray.by_step = true;
+	return step;
+}
+
+void PolarScanner::placeHit(const Scanline& line, const std::uint8_t* bgr, const std::int32_t* pix, int hit, Ray& ray) const
+{
+	float range = mid_range_[line.first + hit];
+	ray.hit_rho = mid_rho_[line.first + hit];
+	if (p_.boundary_model == BoundaryModel::Subpixel && hit > 0)
+	{
+		ray.hit_rho = static_cast<float>(rhoAt(line, refineBoundary(bgr, pix, line.count, hit, p_.boundary_reach)) + p_.boundary_offset);
+		range = static_cast<float>(camera_.distanceFromRho(ray.hit_rho));
+	}
+	ray.edge_contrast = edgeContrast(bgr, pix, hit);
+	if (const double bias = edgeBiasAt(p_.edge_bias, ray.edge_contrast); bias != 0 && range + bias > 0)
+	{
+		range = static_cast<float>(std::min(range + bias, p_.max_range));
+		ray.hit_rho = static_cast<float>(camera_.rhoFromDistance(range));
+	}
+	// The first pixel is at the base: the obstacle may start inside it.
+	const bool too_close = hit == 0 || range < p_.min_range;
+	ray.status = too_close ? RayStatus::TooClose : RayStatus::Hit;
+	ray.range = too_close ? static_cast<float>(p_.min_range) : range;
 }
 
 template <class IsFree>

@@ -137,6 +137,16 @@ class PolarScanner
 	 * non-free: the N/K filter with the classes swapped); 0 if it does not. */
 	template <class IsFree>
 	int floorPastBase(const Scanline& line, IsFree& is_free) const;
+	/** The paper's search (N/K filter) on the colour's classes, passing a
+	 * shadow at the base (base_shadow): fills ray.search and ray.past_base. */
+	template <class IsFree>
+	void searchColour(const Scanline& line, IsFree& is_free, Ray& ray) const;
+	/** The pixel that ends the ray: the colour's hit, or a brightness step
+	 * before it (BrightnessStep.h); -1 for none. Sets ray.by_step. */
+	int endOfFloor(const Scanline& line, const std::uint8_t* bgr, const std::int32_t* pix, Ray& ray) const;
+	/** The ray's range, status and contrast from the pixel `hit` that ends it:
+	 * the boundary model, the edge bias, too close. */
+	void placeHit(const Scanline& line, const std::uint8_t* bgr, const std::int32_t* pix, int hit, Ray& ray) const;
 
 	PolarScannerParams p_;
 	int width_, height_;
