@@ -12,7 +12,7 @@
 #include <omnirange/io/Progress.h>
 #include <omnirange/io/RawlogScan.h>
 
-#include <mrpt/io/CFileGZInputStream.h>
+#include <omnirange/io/GzObject.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <algorithm>
@@ -32,11 +32,7 @@ constexpr const char* kProgram = "omnirange-experiment";
 
 mrpt::maps::COccupancyGridMap2D loadGrid(const std::string& file)
 {
-	mrpt::maps::COccupancyGridMap2D g;
-	mrpt::io::CFileGZInputStream f;
-	if (!f.open(file)) throw std::runtime_error("cannot open grid map '" + file + "'");
-	mrpt::serialization::archiveFrom(f) >> g;
-	return g;
+	return readGzObject<mrpt::maps::COccupancyGridMap2D>(file, "grid map");
 }
 }  // namespace
 

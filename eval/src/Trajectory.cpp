@@ -2,7 +2,7 @@
 
 #include <omnirange/io/RawlogProcessor.h>
 
-#include <mrpt/io/CFileGZInputStream.h>
+#include <omnirange/io/GzObject.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationRobotPose.h>
 #include <mrpt/poses/CPose3DPDF.h>
@@ -50,11 +50,7 @@ mrpt::poses::CPose2D poseAt(const std::vector<StampedPose>& path, double t)
 
 mrpt::maps::CSimpleMap loadSimplemap(const std::string& file)
 {
-	mrpt::maps::CSimpleMap sm;
-	mrpt::io::CFileGZInputStream f;
-	if (!f.open(file)) throw std::runtime_error("cannot open simplemap '" + file + "'");
-	mrpt::serialization::archiveFrom(f) >> sm;
-	return sm;
+	return readGzObject<mrpt::maps::CSimpleMap>(file, "simplemap");
 }
 
 std::vector<StampedPose> simplemapKeyframes(const mrpt::maps::CSimpleMap& sm)

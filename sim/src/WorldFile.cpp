@@ -5,7 +5,7 @@
 
 #include "omnirange_sim/World.h"
 
-#include <mrpt/io/CFileGZInputStream.h>
+#include <omnirange/io/GzObject.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -320,12 +320,9 @@ class Parser
 		}
 		w_.maps.push_back(file);
 		mrpt::maps::COccupancyGridMap2D grid;
-		requireRegularFile(file, "grid map");
 		try
 		{
-			mrpt::io::CFileGZInputStream f;
-			if (!f.open(file)) throw std::runtime_error("cannot open");
-			mrpt::serialization::archiveFrom(f) >> grid;
+			grid = readGzObject<mrpt::maps::COccupancyGridMap2D>(file, "grid map");
 		}
 		catch (const std::exception& e)
 		{

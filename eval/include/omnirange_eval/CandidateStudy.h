@@ -4,6 +4,7 @@
 // held-aside frames made it choose. A study for the method's docs, not a
 // step of the pipeline: learning itself only ever sees the laser.
 
+#include <omnirange/io/ObservationPairer.h>
 #include <omnirange/train/ParameterLearning.h>
 
 #include <string>
@@ -20,7 +21,7 @@ struct CandidateStudyOptions
 	std::string rawlog;  ///< with the omnicam's images and the simulator's TRUTH
 	int first{0};  ///< image/truth pairs before this one are skipped (the training part)
 	std::string omni_label{"OMNICAM"}, truth_label{"TRUTH"};
-	double max_dt{0.05};  ///< [s] an image and a truth scan further apart are no pair
+	double max_dt{kDefaultMaxPairingDt};  ///< [s] an image and a truth scan further apart are no pair
 };
 
 /** One CSV row per candidate of `learned.tried`, in its order: the
