@@ -201,7 +201,10 @@ LogImportSummary importLogs(const LogImportOptions& o)
 	}
 	s.rays = scans.empty() ? 0 : static_cast<int>(scans.front().ranges.size());
 
-	// 2. Write the three streams merged in time order (at one time: image, scan, odometry).
+	// 2. Write the three streams merged in time order; at one time the odometry
+	//    first: icp-slam and the guarded matcher take the motion up to an
+	//    instant from the odometry before the scans taken at it (as the
+	//    simulator writes them), so odometry after them would come a frame late.
 	RawlogWriter out(o.output);
 	if (o.force) out.replaceAnyImagesFolder();
 	std::size_t i = 0, j = 0, k = 0;
@@ -209,7 +212,16 @@ LogImportSummary importLogs(const LogImportOptions& o)
 	while (i < images.size() || j < scans.size() || k < odometry.size())
 	{
 		const double ti = time(images, i), tj = time(scans, j), tk = time(odometry, k);
-		if (ti <= tj && ti <= tk)
+		if (tk <= ti && tk <= tj)
+		{
+			auto obs = mrpt::obs::CObservationOdometry::Create();
+			obs->sensorLabel = o.odometry_label;
+			obs->timestamp = mrpt::Clock::fromDouble(tk);
+			obs->odometry = mrpt::poses::CPose2D(odometry[k].x, odometry[k].y, odometry[k].phi);
+			out.write(*obs);
+			++k;
+		}
+		else if (ti <= tj)
 		{
 			auto obs = mrpt::obs::CObservationImage::Create();
 			obs->sensorLabel = o.omni_label;
@@ -223,7 +235,7 @@ LogImportSummary importLogs(const LogImportOptions& o)
 			out.write(*obs);
 			++i;
 		}
-		else if (tj <= tk)
+		else
 		{
 			auto obs = mrpt::obs::CObservation2DRangeScan::Create();
 			obs->sensorLabel = o.laser_label;
@@ -243,15 +255,6 @@ LogImportSummary importLogs(const LogImportOptions& o)
 			}
 			out.write(*obs);
 			++j;
-		}
-		else
-		{
-			auto obs = mrpt::obs::CObservationOdometry::Create();
-			obs->sensorLabel = o.odometry_label;
-			obs->timestamp = mrpt::Clock::fromDouble(tk);
-			obs->odometry = mrpt::poses::CPose2D(odometry[k].x, odometry[k].y, odometry[k].phi);
-			out.write(*obs);
-			++k;
 		}
 	}
 	out.commit();
