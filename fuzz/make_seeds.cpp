@@ -71,7 +71,7 @@ int main()
 	two.save(kCorpus + "/histogram/two_class_chroma6_reference.hist");
 
 	{
-		RawlogWriter w(kCorpus + "/rawlog/observations.rawlog.gz");
+		RawlogWriter w(kCorpus + "/rawlog/observations.rawlog.gz", "omnirange-fuzz-seeds");
 		for (const auto& o : observations()) w.write(*o);
 		w.commit();
 	}
@@ -81,7 +81,7 @@ int main()
 		for (const auto& o : observations()) a << *o;
 	}
 	{
-		RawlogWriter w(kCorpus + "/rawlog/sensory_frames.rawlog.gz");
+		RawlogWriter w(kCorpus + "/rawlog/sensory_frames.rawlog.gz", "omnirange-fuzz-seeds");
 		mrpt::obs::CActionCollection actions;
 		mrpt::obs::CActionRobotMovement2D move;
 		move.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0, 0.05), {});

@@ -28,6 +28,7 @@ namespace omnirange::sim
 namespace
 {
 constexpr double kEpoch = 1767225600.0;  // 2026-01-01T00:00:00Z: timestamps start here
+constexpr char kProgram[] = "omnirange-sim";  // the outputs' owner (OutputRule.h)
 
 std::string stemOf(const std::string& rawlog)
 {
@@ -50,9 +51,9 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	//    and none of them is an output.
 	const std::string base = stemOf(o.output);
 	const std::vector<std::string> inputs{o.world_file, o.route_file, o.robot_ini};
-	requireRawlogOutputAllowed(o.output, inputs, o.force);
+	requireRawlogOutputAllowed(o.output, kProgram, inputs, o.force);
 	requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::Rawlog}},
-						  "omnirange-sim", inputs, o.force);
+						  kProgram, inputs, o.force);
 	RobotParams robot;
 	if (!o.robot_ini.empty()) robot = RobotParams::loadFile(o.robot_ini);
 	if (!o.image_format.empty())
@@ -64,9 +65,9 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	// The grid maps the world names are read as surely as the world: never an output.
 	std::vector<std::string> with_maps = inputs;
 	with_maps.insert(with_maps.end(), world.maps.begin(), world.maps.end());
-	requireRawlogOutputAllowed(o.output, with_maps, o.force);
+	requireRawlogOutputAllowed(o.output, kProgram, with_maps, o.force);
 	requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::Rawlog}},
-						  "omnirange-sim", with_maps, o.force);
+						  kProgram, with_maps, o.force);
 	const Route route = loadRoute(o.route_file);
 	checkRouteClear(route, world, robot.robot.clearance, robot.omnicam.camera.h);
 	const double dt = 1.0 / robot.robot.frame_rate;
@@ -80,7 +81,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	const OmniRenderer renderer(world, robot);
 
 	// 2. The frames: ODOMETRY, GT, OMNICAM, TRUTH, LASER at each pose.
-	RawlogWriter out(o.output);
+	RawlogWriter out(o.output, kProgram);
 	if (o.force) out.replaceAnyImagesFolder();
 	OdometrySimulator odometry(robot.odometry, robot.robot.seed * 31u + 1u);
 	std::mt19937_64 laser_rng(robot.robot.seed * 131u + 7u);

@@ -49,9 +49,12 @@ namespace
 constexpr double kMaxIcpValue = 1e4;
 
 /** A number of the kind of MRPT's default `model`: a count is a whole
- * number, a value that defaults to >= 0 stays so, and neither is huge. */
-void requireLikeMrptsDefault(const std::string& model, double v)
+ * number, a value that defaults to >= 0 stays so, and neither is huge;
+ * and the ranges MRPT asserts at run time, checked here with the key named. */
+void requireLikeMrptsDefault(const std::string& key, const std::string& model, double v)
 {
+	if (key == "ALFA" && !(v >= 0 && v < 1)) throw std::invalid_argument("must be within [0, 1)");
+	if (key == "corresponding_points_decimation" && !(v >= 1)) throw std::invalid_argument("must be >= 1");
 	const bool count = model.find_first_of(".eE") == std::string::npos;
 	if (count && v != std::floor(v)) throw std::invalid_argument("not a whole number");
 	if (model[0] != '-' && v < 0) throw std::invalid_argument("must be >= 0");
@@ -64,6 +67,14 @@ void requireStrictIcpSection(const std::string& file, const std::string& section
 	try
 	{
 		requireNoRepeatedKeys(file);
+		// A misspelt section ([IPC], [odometry_gaurd]) would leave its keys unread.
+		std::vector<std::string> sections;
+		mrpt::config::CConfigFile(file).getAllSections(sections);
+		for (const auto& s : sections)
+			if (s != "MappingApplication" && s.rfind("MappingApplication_", 0) != 0 && s != section &&
+				s != "odometry_guard" && s != "loop_closure")
+				throw std::invalid_argument("unknown section [" + s + "] (an icp-slam ini has [MappingApplication] and "
+											"its map sections, [" + section + "], [odometry_guard] and [loop_closure])");
 		if (!mrpt::config::CConfigFile(file).sectionExists(section)) return;  // every option at MRPT's default
 		for (const auto& k : icpKeysMrptIgnores(file, section))
 			throw std::invalid_argument("[" + section + "] " + k + ": not a key MRPT reads (it would keep its default)");
@@ -87,7 +98,7 @@ void requireStrictIcpSection(const std::string& file, const std::string& section
 			{
 				if (model == "true" || model == "false") parseBool(value);
 				else if (!model.empty() && (std::isdigit(static_cast<unsigned char>(model[0])) || model[0] == '-' || model[0] == '.'))
-					requireLikeMrptsDefault(model, parseDouble(value));
+					requireLikeMrptsDefault(as_written, model, parseDouble(value));
 				else if (value.empty() || value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789") != std::string::npos)
 					throw std::invalid_argument("not a name like '" + model + "'");
 			}

@@ -91,7 +91,7 @@ TEST(CameraEffects, BayerKeepsFlatColoursAndBlursEdges)
 TEST(CameraEffects, JpegImagesCarryFourTwoZeroChroma)
 {
 	const std::string rawlog = test::tempDir() + "/jpeg.rawlog";
-	omnirange::RawlogWriter w(rawlog);
+	omnirange::RawlogWriter w(rawlog, "omnirange-test");
 	const cv::Mat img(64, 64, CV_8UC3, cv::Scalar(60, 140, 70));
 	const auto stored = w.externalImage(img, "frame.jpg", 90);
 	w.write(mrpt::obs::CObservation2DRangeScan());

@@ -33,7 +33,7 @@ int writeWithLimit(const std::string& path, rlim_t limit, int objects)
 		::setrlimit(RLIMIT_FSIZE, &r);
 		try
 		{
-			omnirange::RawlogWriter w(path);
+			omnirange::RawlogWriter w(path, "omnirange-test");
 			std::mt19937 rng(1);
 			std::uniform_real_distribution<float> u(0.5f, 10.f);
 			for (int k = 0; k < objects; ++k)

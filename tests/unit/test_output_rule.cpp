@@ -155,9 +155,9 @@ TEST(OutputRule, ALinkedFolderAReadOnlyFileAndTwoOutputsInOnePlaceAreRefused)
 	fs::create_directory(d + "/in_Images");
 	write(d + "/in.rawlog", std::string("\x1f\x8b", 2));
 	fs::create_directory_symlink(d + "/in_Images", d + "/out_Images");
-	EXPECT_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", {d + "/in.rawlog"}, false), std::runtime_error);  // no rawlog of ours beside it: the user's link
+	EXPECT_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-test", {d + "/in.rawlog"}, false), std::runtime_error);  // no rawlog of ours beside it: the user's link
 	write(d + "/out.rawlog", std::string("\x1f\x8b", 2));
-	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", {d + "/in.rawlog"}, false));
+	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-test", {d + "/in.rawlog"}, false));
 	// An output reached through a link and '..' is where the system takes it, not where the text says.
 	fs::create_directories(d + "/data/images");
 	fs::create_directory_symlink(d + "/data/images", d + "/imgs");
@@ -236,7 +236,7 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 {
 	const std::string d = fresh("writer");
 	const auto writeOne = [&](bool force) {
-		RawlogWriter w(d + "/log.rawlog");
+		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
 		if (force) w.replaceAnyImagesFolder();
 		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 2, 3)), "0.png");
 		w.write(mrpt::obs::CObservationOdometry());
@@ -249,7 +249,7 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 	EXPECT_FALSE(fs::exists(d + "/log.rawlog"));
 	writeOne(true);  // --force
 	EXPECT_TRUE(fs::exists(d + "/log_Images/0.png"));
-	EXPECT_TRUE(isOutputFolderOf(d + "/log_Images", kRawlogImagesOwner));
+	EXPECT_TRUE(isOutputFolderOf(d + "/log_Images", rawlogImagesOwner("omnirange-test")));
 	writeOne(false);  // now ours: replaced again without asking
 	EXPECT_TRUE(fs::exists(d + "/log.rawlog"));
 	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 2);  // no .old or .tmp left
@@ -267,7 +267,7 @@ TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)
 	const auto simulate = [&] {
 		StagedFile map(d + "/log_truemap.gridmap.gz", [](const std::string& tmp) { write(tmp, "new map"); });
 		StagedFile picture = stageImage(d + "/log_truemap.png", cv::Mat(4, 4, CV_8UC3, cv::Scalar(9, 9, 9)));
-		RawlogWriter w(d + "/log.rawlog");
+		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
 		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 2, 3)), "0.png");
 		w.write(mrpt::obs::CObservationOdometry());
 		w.commit();

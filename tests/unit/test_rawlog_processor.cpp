@@ -38,7 +38,7 @@ TEST(RawlogProcessor, HooksSeeTheirClassAndLabelAndPairsPairOnce)
 {
 	const std::string file = tmpFile("obs.rawlog");
 	{
-		RawlogWriter w(file);
+		RawlogWriter w(file, "omnirange-test");
 		// A/B at 0.0, 0.05 pair; the lone A at 1.0 does not; B at 2.0 pairs with A at 2.08.
 		for (const auto& [label, t] : std::vector<std::pair<std::string, double>>{
 				 {"A", 0.0}, {"B", 0.05}, {"A", 1.0}, {"B", 2.0}, {"A", 2.08}, {"C", 2.09}})
@@ -73,7 +73,7 @@ TEST(RawlogProcessor, SensoryFramesAreOpenedAndStopEndsTheLoop)
 {
 	const std::string file = tmpFile("sf.rawlog");
 	{
-		RawlogWriter w(file);
+		RawlogWriter w(file, "omnirange-test");
 		for (int i = 0; i < 3; ++i)
 		{
 			w.write(mrpt::obs::CActionCollection());

@@ -95,6 +95,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	o.verbosity = verbosity.level();
 	o.checkerboards = boards.getValue(), o.intrinsics_output = optionalPath(out), o.board.square = square.getValue();
 	if (!board_dir.getValue().empty()) addImagesOf(board_dir.getValue(), o.checkerboards);
+	o.checkerboard_dir = board_dir.getValue();
 	o.rim_images = rims.getValue(), o.save_to = optionalPath(save), o.ocamcalib = ocam.getValue();
 	if (!o.intrinsics_output.empty() && o.checkerboards.empty())
 		throw std::invalid_argument("-o is written by a checkerboard calibration only (--checkerboard or --checkerboard-dir)");
@@ -115,6 +116,7 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 	std::vector<std::string> inputs{o_.calibration.input, o_.histogram, o_.ocamcalib};
 	inputs.insert(inputs.end(), o_.checkerboards.begin(), o_.checkerboards.end());
 	inputs.insert(inputs.end(), o_.rim_images.begin(), o_.rim_images.end());
+	if (!o_.checkerboard_dir.empty()) inputs.push_back(o_.checkerboard_dir);
 	if (!o_.calibration.input.empty()) inputs.push_back(imagesDirFor(o_.calibration.input));
 	// Its -c ini is the usual --save-to, but not the bases under it: they are other inis' too.
 	if (!o_.ini.empty())

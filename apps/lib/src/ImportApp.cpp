@@ -81,7 +81,7 @@ LogImportSummary ImportApp::run()
 {
 	// The -c ini (and its bases) is read as surely as the logs: never an output.
 	const auto& i = o_.import;
-	requireRawlogOutputAllowed(i.output, {o_.ini, i.images_dir, i.image_list, i.laser_csv, i.odometry_csv, i.carmen_log},
+	requireRawlogOutputAllowed(i.output, kImportProgram, {o_.ini, i.images_dir, i.image_list, i.laser_csv, i.odometry_csv, i.carmen_log},
 							   i.force);
 	if (!o_.ini.empty()) o_.import.omni_pose = loadRangefinderIni(o_.ini, o_.section, *this).sensor_pose;
 	const LogImportSummary s = importLogs(o_.import);

@@ -54,7 +54,7 @@ ScanApp::ScanApp(Options o) : mrpt::system::COutputLogger("omnirange-scan"), o_(
 RawlogScanSummary ScanApp::run()
 {
 	// The rawlog input scanRawlog checks itself; these are the app's own inputs.
-	requireRawlogOutputAllowed(o_.scan.output, {o_.ini, o_.histogram}, o_.scan.force);
+	requireRawlogOutputAllowed(o_.scan.output, kScanProgram, {o_.ini, o_.histogram}, o_.scan.force);
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	const Rangefinder rf(params, ColourModel::load(o_.histogram));
 	if (rf.compensationMissing())

@@ -60,6 +60,8 @@ void SummaryApp::fillOrCheck(const std::string& file, const std::string& csv)
 	std::ostringstream text;
 	text << in.rdbuf();
 	const eval::Summary table = eval::readCsv(csv);
+	// An empty table would fill every block with nothing: the figures would be lost.
+	if (table.empty()) throw std::runtime_error(csv + ": no experiment in it (no row under the header)");
 	std::string filled;
 	try
 	{

@@ -12,6 +12,11 @@ namespace fs = std::filesystem;
 
 namespace omnirange
 {
+namespace
+{
+constexpr std::size_t kMaxIniLayers = 16;  // inis deep in 'base =' lines
+}  // namespace
+
 std::string iniBaseOf(const std::string& path)
 {
 	requireRegularFile(path, "ini file");
@@ -35,7 +40,7 @@ std::vector<std::string> iniBasesOf(const std::string& path)
 	std::vector<std::string> bases;
 	try
 	{
-		for (std::string base = path; bases.size() < 16 && !(base = iniBaseOf(base)).empty();) bases.push_back(base);
+		for (std::string base = path; bases.size() < kMaxIniLayers && !(base = iniBaseOf(base)).empty();) bases.push_back(base);
 	}
 	catch (const std::exception&)
 	{
@@ -57,6 +62,9 @@ LayeredIni readLayeredIni(const std::string& path)
 				throw std::runtime_error(file + ": its bases lead back to it");
 		requireNoRepeatedKeys(file);
 		ini.files.push_back(file);
+		// Ours go two or three deep; thousands would take minutes to read.
+		if (ini.files.size() > kMaxIniLayers)
+			throw std::runtime_error(path + ": more than " + std::to_string(kMaxIniLayers) + " inis deep in 'base =' lines");
 	}
 	std::reverse(ini.files.begin(), ini.files.end());
 	// Sections in first-seen order, keys in each, later files replacing values.

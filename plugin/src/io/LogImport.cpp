@@ -156,7 +156,7 @@ LogImportSummary importLogs(const LogImportOptions& o)
 {
 	require(o.laser_fov > 0 && o.laser_fov <= 2 * M_PI, "the laser's field of view must be within (0, 360] degrees");
 	require(o.laser_max_range > 0, "the laser's max range must be > 0 m");
-	requireRawlogOutputAllowed(o.output, {o.image_list, o.images_dir, o.laser_csv, o.odometry_csv, o.carmen_log}, o.force);
+	requireRawlogOutputAllowed(o.output, kImportProgram, {o.image_list, o.images_dir, o.laser_csv, o.odometry_csv, o.carmen_log}, o.force);
 	require(o.carmen_log.empty() || (o.laser_csv.empty() && o.odometry_csv.empty()),
 			"a CARMEN log gives the laser and the odometry: not with laser or odometry CSVs too");
 	// 1. Read and check everything before writing anything.
@@ -164,7 +164,7 @@ LogImportSummary importLogs(const LogImportOptions& o)
 	// The output's image folder is replaced at the end: it must hold no input.
 	std::vector<std::string> image_files;
 	for (const TimedImage& im : images) image_files.push_back(im.file);
-	requireRawlogOutputAllowed(o.output, image_files, o.force);
+	requireRawlogOutputAllowed(o.output, kImportProgram, image_files, o.force);
 	std::vector<LaserRow> scans = o.laser_csv.empty() ? std::vector<LaserRow>{} : readLaserCsv(o.laser_csv);
 	std::vector<OdometryRow> odometry =
 		o.odometry_csv.empty() ? std::vector<OdometryRow>{} : readOdometryCsv(o.odometry_csv);
@@ -205,7 +205,7 @@ LogImportSummary importLogs(const LogImportOptions& o)
 	//    first: icp-slam and the guarded matcher take the motion up to an
 	//    instant from the odometry before the scans taken at it (as the
 	//    simulator writes them), so odometry after them would come a frame late.
-	RawlogWriter out(o.output);
+	RawlogWriter out(o.output, kImportProgram);
 	if (o.force) out.replaceAnyImagesFolder();
 	std::size_t i = 0, j = 0, k = 0;
 	const auto time = [](auto& v, std::size_t n) { return n < v.size() ? v[n].time : INFINITY; };

@@ -205,6 +205,10 @@ void forEachIniLine(const std::string& path,
 					const std::function<void(const std::string&, const std::string&, int)>& visit)
 {
 	requireRegularFile(path, "ini file");
+	std::error_code ec;
+	if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxIniBytes)
+		throw std::runtime_error("ini file '" + path + "' is larger than " + std::to_string(kMaxIniBytes >> 20) +
+								 " MB: is it the ini meant?");
 	std::ifstream f(path);
 	if (!f) throw std::runtime_error("cannot open ini file '" + path + "'");
 	std::string section;

@@ -154,6 +154,9 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	const std::string output = outputPath(output_as_given);
 	if (output.empty()) return;
 	requireApartFromInputs(output, kind, inputs);
+	// A file output's temporaries that killed runs left (a folder's are its
+	// writer's to recover: StagedFolder, RawlogWriter).
+	if (kind != OutputKind::Folder) recoverLeftoversOf(output, kind);
 	const fs::path p(output);
 	std::error_code ec;
 	// A link is the user's: replaced (not what it names) only when they say so.

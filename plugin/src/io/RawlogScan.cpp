@@ -135,14 +135,14 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, Progress* progress)
 {
 	if (o.threads < 1 || o.threads > 256) throw std::invalid_argument("threads must be within [1, 256]");
-	if (!o.decode_only) requireRawlogOutputAllowed(o.output, {o.input, imagesDirFor(o.input)}, o.force);
+	if (!o.decode_only) requireRawlogOutputAllowed(o.output, kScanProgram, {o.input, imagesDirFor(o.input)}, o.force);
 	cv::setNumThreads(o.threads);
 
 	RawlogProcessor loop(o.input);
 	std::optional<RawlogWriter> writer;
 	if (!o.decode_only)
 	{
-		writer.emplace(o.output);
+		writer.emplace(o.output, kScanProgram);
 		writer->linkImagesTo(imagesDirFor(o.input));
 		if (o.force) writer->replaceAnyImagesFolder();
 	}

@@ -40,23 +40,28 @@ bool imagesLinkOf(const std::string& rawlog, const std::string& images)
 }
 }  // namespace
 
-void requireRawlogOutputAllowed(const std::string& rawlog, const std::vector<std::string>& inputs, bool force)
+std::string rawlogImagesOwner(const std::string& program) { return program; }
+
+void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& program,
+								const std::vector<std::string>& inputs, bool force)
 {
 	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
 	// The images go beside the file written (through a link, the file it names).
 	const std::string file = replacedFileOf(outputPath(rawlog)), images = imagesDirFor(file);
-	requireOutputAllowed(images, OutputKind::Folder, kRawlogImagesOwner, inputs, force || imagesLinkOf(file, images));
+	requireOutputAllowed(images, OutputKind::Folder, rawlogImagesOwner(program), inputs,
+						 force || imagesLinkOf(file, images));
 }
 
-RawlogWriter::RawlogWriter(const std::string& path, int gz_level)
+RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, int gz_level)
 	: path_(replacedFileOf(path)),
+	  owner_(rawlogImagesOwner(program)),
 	  tmp_path_(path_ + ".tmp-" + std::to_string(::getpid())),
 	  images_(imagesDirFor(path_)),  // beside the file written, where a reader of it looks
 	  tmp_images_(images_ + ".tmp-" + std::to_string(::getpid())),
 	  out_(std::make_unique<mrpt::io::CFileGZOutputStream>())
 {
 	recoverLeftoversOf(path_, OutputKind::Rawlog);  // what killed runs of this output left
-	recoverLeftoversOf(images_, OutputKind::Folder, kRawlogImagesOwner);
+	recoverLeftoversOf(images_, OutputKind::Folder, owner_);
 	temporaries::add(tmp_path_);
 	temporaries::add(tmp_images_);
 	if (!out_->open(tmp_path_, gz_level))
@@ -95,7 +100,7 @@ void RawlogWriter::startImages()
 	if (has_images_) return;
 	fs::remove_all(tmp_images_);
 	fs::create_directories(tmp_images_);
-	markOutputFolder(tmp_images_, kRawlogImagesOwner);
+	markOutputFolder(tmp_images_, owner_);
 	has_images_ = true;
 }
 
@@ -141,7 +146,7 @@ void RawlogWriter::commit()
 	// all three moves succeeded is the old folder removed.
 	// The rule the programs check before they start, checked again here for
 	// every writer (a library user need not have called it).
-	requireOutputAllowed(images_, OutputKind::Folder, kRawlogImagesOwner, {}, replace_any_ || imagesLinkOf(path_, images_));
+	requireOutputAllowed(images_, OutputKind::Folder, owner_, {}, replace_any_ || imagesLinkOf(path_, images_));
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
 	const std::string old = images_ + ".old-" + std::to_string(::getpid());
 	if (had_old) fs::rename(images_, old);

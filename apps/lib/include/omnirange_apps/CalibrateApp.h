@@ -24,6 +24,7 @@ class CalibrateApp : public mrpt::system::COutputLogger
 		std::string ini, section{"rangefinder"}, histogram;
 		MirrorCalibrationOptions calibration;
 		std::vector<std::string> checkerboards;  ///< images: calibrate the intrinsics instead
+		std::string checkerboard_dir;  ///< --checkerboard-dir: an input folder, never an output's place
 		CheckerboardOptions board;
 		std::string intrinsics_output;  ///< OpenCV YAML; empty: print only
 		std::vector<std::string> rim_images;  ///< images: find the mirror's disc instead

@@ -23,6 +23,9 @@
 
 namespace omnirange
 {
+/** The program whose outputs (a rawlog, its images) these are (OutputRule.h). */
+inline constexpr char kImportProgram[] = "omnirange-import";
+
 struct TimedImage
 {
 	double time{0};  ///< [s]

@@ -63,6 +63,9 @@ std::string trimmed(const std::string& s);
  * read without end. A missing file is left to the reader's own message. */
 void requireRegularFile(const std::string& path, const std::string& what);
 
+/** [bytes] The largest ini read (MRPT's reader holds it whole; ours are a few kB). */
+inline constexpr std::uintmax_t kMaxIniBytes = std::uintmax_t(1) << 20;
+
 /** [bytes] The longest line a text file of ours may have (1 MB: a laser row of
  * 10,000 ranges is about 100 kB). */
 inline constexpr std::size_t kMaxLineBytes = std::size_t(1) << 20;

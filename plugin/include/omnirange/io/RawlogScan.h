@@ -12,6 +12,9 @@
 
 namespace omnirange
 {
+/** The program whose outputs (a rawlog, its images) these are (OutputRule.h). */
+inline constexpr char kScanProgram[] = "omnirange-scan";
+
 class Progress;
 
 struct RawlogScanOptions

@@ -21,19 +21,23 @@ namespace omnirange
 /** NAME_Images beside NAME.rawlog (the folder MRPT's programs look in). */
 std::string imagesDirFor(const std::string& rawlog_path);
 
-/** What the marker of a NAME_Images folder written by RawlogWriter names (OutputRule.h). */
-inline constexpr const char* kRawlogImagesOwner = "omnirange rawlog images";
+/** What the marker of a NAME_Images folder that `program`'s RawlogWriter
+ * wrote names (OutputRule.h): the program, as for any folder it writes. */
+std::string rawlogImagesOwner(const std::string& program);
 
-/** The output rule (OutputRule.h) for a rawlog this writer is to write and
+/** The output rule (OutputRule.h) for a rawlog `program` is to write and
  * its NAME_Images: the rawlog may replace only a rawlog, the folder only
- * images a writer of ours made (or a link); neither may be, hold or sit in
- * an input. Throws std::runtime_error naming the path, before any work. */
-void requireRawlogOutputAllowed(const std::string& rawlog, const std::vector<std::string>& inputs, bool force);
+ * images the same program wrote (or a link beside a rawlog); neither may be,
+ * hold or sit in an input. Throws std::runtime_error naming the path, before
+ * any work. */
+void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& program,
+								const std::vector<std::string>& inputs, bool force);
 
 class RawlogWriter
 {
    public:
-	explicit RawlogWriter(const std::string& path, int gz_level = 1);
+	/** A rawlog `program` writes (its images folder is marked with its name). */
+	RawlogWriter(const std::string& path, const std::string& program, int gz_level = 1);
 	~RawlogWriter();
 	RawlogWriter(const RawlogWriter&) = delete;
 	RawlogWriter& operator=(const RawlogWriter&) = delete;
@@ -64,7 +68,7 @@ class RawlogWriter
    private:
 	void startImages();
 
-	std::string path_, tmp_path_, images_, tmp_images_, link_to_;
+	std::string path_, owner_, tmp_path_, images_, tmp_images_, link_to_;
 	std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
 	bool has_images_{false}, committed_{false}, replace_any_{false};
 	std::size_t count_{0};
