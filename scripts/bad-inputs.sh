@@ -345,6 +345,13 @@ fi
 printf 'OMNIHIST' > left.hist.tmp-999999999
 "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o left.hist
 [ ! -e left.hist.tmp-999999999 ] || { echo "| | PROBLEM: a killed run's left.hist.tmp-PID was not cleaned |"; problems=$((problems + 1)); }
+cp s.rawlog users_log.rawlog && ln -sfn users_log.rawlog gz_truemap.gridmap.gz
+run_case "sim: its true map through a link onto a user's rawlog" "error:is not a grid map" gz.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o gz.rawlog
+cmp -s users_log.rawlog s.rawlog || { echo "| | PROBLEM: the user's rawlog behind gz_truemap.gridmap.gz was changed |"; problems=$((problems + 1)); }
+{ head -10 w.world; printf "box x=0 y=0 w=1 d=1 z1=1 material=concrete x=5\n"; } > dupkey.world
+run_case "sim: a key twice on one world line" "error:given twice" dk.rawlog -- "$apps/omnirange-sim" -q -w dupkey.world -r w.route -n 2 -o dk.rawlog
+sed 's/^yaw_drift_deg *=.*/yaw_drift_deg = 1e300/' "$src/ini/robot-omnip2dx.ini" > robot_drift.ini
+run_case "sim: robot [odometry] yaw_drift_deg = 1e300" "error:yaw_drift_deg" r4.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -c robot_drift.ini -n 2 -o r4.rawlog
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

@@ -137,6 +137,7 @@ void RobotParams::validate() const
 	require(laser.sigma >= 0 && laser.sigma <= 10, "[laser] sigma must be within [0, 10] m");
 	require(odometry.sigma_dist >= 0 && odometry.sigma_dist <= 1 && odometry.sigma_turn >= 0 && odometry.sigma_turn <= 1,
 			"[odometry] sigma_dist and sigma_turn must be within [0, 1]");
+	require(std::abs(odometry.yaw_drift) <= M_PI, "[odometry] yaw_drift_deg must be within [-180, 180] deg/m");
 	const auto& r = robot;
 	// A robot that creeps or films too often makes millions of frames: bounded so
 	// that a typo fails here, not after memory runs out.

@@ -52,7 +52,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	const std::string base = stemOf(o.output);
 	const std::vector<std::string> inputs{o.world_file, o.route_file, o.robot_ini};
 	requireRawlogOutputAllowed(o.output, kProgram, inputs, o.force);
-	requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::Rawlog}},
+	requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::GridMap}},
 						  kProgram, inputs, o.force);
 	RobotParams robot;
 	if (!o.robot_ini.empty()) robot = RobotParams::loadFile(o.robot_ini);
@@ -66,7 +66,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	std::vector<std::string> with_maps = inputs;
 	with_maps.insert(with_maps.end(), world.maps.begin(), world.maps.end());
 	requireRawlogOutputAllowed(o.output, kProgram, with_maps, o.force);
-	requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::Rawlog}},
+	requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::GridMap}},
 						  kProgram, with_maps, o.force);
 	const Route route = loadRoute(o.route_file);
 	checkRouteClear(route, world, robot.robot.clearance, robot.omnicam.camera.h);

@@ -24,7 +24,9 @@ class Fields
 			const auto eq = t.find('=');
 			if (eq == std::string::npos || eq == 0)
 				throw error("expected key=value, got '" + t + "'");
-			kv_[t.substr(0, eq)] = t.substr(eq + 1);
+			// The second would win silently: a typo's copy of a key, not a choice.
+			if (!kv_.emplace(t.substr(0, eq), t.substr(eq + 1)).second)
+				throw error("key '" + t.substr(0, eq) + "' given twice");
 		}
 	}
 	std::runtime_error error(const std::string& what) const

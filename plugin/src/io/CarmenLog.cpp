@@ -135,6 +135,7 @@ CarmenLog readCarmenLog(const std::string& path)
 			f.need(3, "expected ipc_timestamp, ipc_hostname, logger_timestamp");
 			row.time = pose.time = f.time("ipc_timestamp");
 			if (!(fov > 0 && fov <= 2 * M_PI)) throw std::invalid_argument(kind + ": field_of_view must be within (0, 2 pi]");
+			if (!(std::abs(start) <= 2 * M_PI)) throw std::invalid_argument(kind + ": start_angle must be within [-2 pi, 2 pi]");
 			if (!(max_range > 0)) throw std::invalid_argument(kind + ": maximum_range must be > 0");
 			addScan(kind, start, fov, max_range, std::move(row));
 			if (kind == "ROBOTLASER1") laser_poses.push_back(pose);

@@ -7,6 +7,7 @@
 #include "omnirange/io/Temporaries.h"
 
 #include <signal.h>
+#include <zlib.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -46,6 +47,19 @@ std::string firstBytes(const std::string& path, std::size_t n)
 
 bool isText(const std::string& bytes) { return bytes.find('\0') == std::string::npos; }
 
+/** The first `n` bytes of the gzip file `path`, uncompressed ("" if it is
+ * not one): an MRPT object's class name is in them. */
+std::string unzippedHead(const std::string& path, unsigned n)
+{
+	gzFile f = ::gzopen(path.c_str(), "rb");
+	if (!f) return "";
+	std::string b(n, '\0');
+	const int got = ::gzread(f, b.data(), n);
+	::gzclose_r(f);
+	b.resize(got > 0 ? static_cast<std::size_t>(got) : 0);
+	return b;
+}
+
 bool isIni(const std::string& path)
 {
 	const std::string head = firstBytes(path, 4096);
@@ -66,6 +80,7 @@ const char* kindName(OutputKind kind)
 	switch (kind)
 	{
 		case OutputKind::Rawlog: return "a rawlog";
+		case OutputKind::GridMap: return "a grid map";
 		case OutputKind::Histogram: return "a colour model";
 		case OutputKind::Ini: return "an ini file";
 		case OutputKind::Text: return "a text file";
@@ -313,6 +328,7 @@ bool isOfKind(const std::string& path, OutputKind kind)
 	switch (kind)
 	{
 		case OutputKind::Rawlog: return head.size() >= 2 && head[0] == '\x1f' && head[1] == '\x8b';
+		case OutputKind::GridMap: return unzippedHead(path, 64).find("COccupancyGridMap2D") != std::string::npos;
 		case OutputKind::Histogram: return head == "OMNIHIST";
 		case OutputKind::Ini: return isIni(path);
 		case OutputKind::Text: return isText(firstBytes(path, 4096));

@@ -19,6 +19,7 @@ inline constexpr const char* kOutputMarker = ".omnirange-output";
 enum class OutputKind
 {
 	Rawlog,  ///< a gzip file (MRPT's rawlogs as we write them)
+	GridMap,  ///< a gzip file holding an MRPT COccupancyGridMap2D (.gridmap.gz)
 	Histogram,  ///< a colour model (ColourHistogram's "OMNIHIST" magic)
 	Ini,  ///< text whose first line that is not blank is a comment, a section or a key
 	Text,  ///< text (CSV, Markdown): no NUL byte
