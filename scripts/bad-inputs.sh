@@ -352,6 +352,13 @@ cmp -s users_log.rawlog s.rawlog || { echo "| | PROBLEM: the user's rawlog behin
 run_case "sim: a key twice on one world line" "error:given twice" dk.rawlog -- "$apps/omnirange-sim" -q -w dupkey.world -r w.route -n 2 -o dk.rawlog
 sed 's/^yaw_drift_deg *=.*/yaw_drift_deg = 1e300/' "$src/ini/robot-omnip2dx.ini" > robot_drift.ini
 run_case "sim: robot [odometry] yaw_drift_deg = 1e300" "error:yaw_drift_deg" r4.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -c robot_drift.ini -n 2 -o r4.rawlog
+{ head -10 w.world; printf "gridmap file=none.gz z1=2 material=concrete\n"; } > nomap.world
+run_case "sim: a world's grid map that is missing" "error:grid map 'none.gz' is missing" nm.rawlog -- "$apps/omnirange-sim" -q -w nomap.world -r w.route -n 2 -o nm.rawlog
+cp s.rawlog selflink.rawlog && ln -sfn selflink_Images selflink_Images
+run_case "scan: an input's images folder that links to itself" "error:leads back to itself" sl.rawlog -- "$apps/omnirange-scan" -q -i selflink.rawlog -c f.ini -H floor.hist -o sl.rawlog
+run_case "sim: -f bmp" "error:must be png or jpg, not" fb.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -f bmp -o fb.rawlog
+printf 'P5\n3 2\n255\n\x01\x02\x03\x04\x05\x06' > tiny.pgm
+run_case "calibrate: a 3 x 2 px checkerboard image" "error:too small to show a board" none.out -- "$apps/omnirange-calibrate" -q --checkerboard tiny.pgm --board 8x6
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

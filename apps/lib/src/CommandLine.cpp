@@ -30,14 +30,18 @@ std::string oneLine(std::string s)
 std::string mrptMessages(const std::string& text)
 {
 	std::istringstream in(text);
-	std::string messages;
+	std::string messages, location;
 	for (std::string line; std::getline(in, line);)
-		if (line.rfind("Message:", 0) == 0)
-		{
-			const auto from = line.find_first_not_of(' ', 8);
-			if (from != std::string::npos) messages += (messages.empty() ? "" : "; ") + line.substr(from);
-		}
-	return messages;
+		for (const std::string tag : {"Message:", "Location:"})
+			if (line.rfind(tag, 0) == 0)
+			{
+				const auto from = line.find_first_not_of(' ', tag.size());
+				if (from == std::string::npos) continue;
+				std::string& to = tag == "Message:" ? messages : location;
+				to += (to.empty() ? "" : "; ") + line.substr(from);
+			}
+	// Some of MRPT's errors carry their text in the location line only.
+	return messages.empty() ? location : messages;
 }
 
 /** TCLAP output whose failure message is one line instead of the usage. */

@@ -25,6 +25,8 @@ SimApp::Options SimApp::parse(int argc, const char* const* argv)
 	s.world_file = world.getValue(), s.route_file = route.getValue(), s.robot_ini = robot.getValue();
 	s.output = requiredPath(out), s.max_frames = frames.getValue(), s.threads = threads.getValue();
 	s.image_format = format.getValue();
+	if (!s.image_format.empty() && s.image_format != "jpg" && s.image_format != "png")
+		throw std::invalid_argument("-f must be png or jpg, not '" + s.image_format + "'");
 	o.verbosity = verbosity.level();
 	return o;
 }

@@ -148,6 +148,10 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 	for (const auto& in : inputs)
 	{
 		if (in.empty()) continue;
+		// A link that leads back to itself names no place: every path would seem inside it.
+		(void)fs::canonical(fs::absolute(outputPath(in)), ec);
+		if (ec == std::errc::too_many_symbolic_link_levels)
+			throw std::runtime_error("the input '" + in + "' is a link that leads back to itself");
 		const fs::path input = fs::weakly_canonical(fs::absolute(outputPath(in)), ec);
 		const fs::path input_as_written = asWritten(outputPath(in));
 		// A link replaced as a link is its own path, not the folder it names.

@@ -117,9 +117,9 @@ void measureCentreSpread(const Boards3d& object, const Boards2d& image, const st
 
 CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string>& files, const CheckerboardOptions& o)
 {
-	if (o.columns < 2 || o.rows < 2 || o.columns > kMaxBoardCorners || o.rows > kMaxBoardCorners || !(o.square > 0))
+	if (o.columns < 2 || o.rows < 2 || o.columns > kMaxBoardCorners || o.rows > kMaxBoardCorners || !(o.square > 0 && o.square <= 10))
 		throw std::invalid_argument("the board needs 2 to " + std::to_string(kMaxBoardCorners) +
-									" inner corners each way and a square > 0 m");
+									" inner corners each way and a square within (0, 10] m");
 	// One photograph given twice would count as two boards and look like agreement.
 	for (std::size_t i = 0; i < files.size(); ++i)
 		for (std::size_t j = i + 1; j < files.size(); ++j)
@@ -142,6 +142,11 @@ CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string
 		if (out.image_size.empty()) out.image_size = gray.size();
 		if (gray.size() != out.image_size)
 			throw std::runtime_error("image '" + file + "' has another size than the first image");
+		// Fewer than a few pixels a square cannot show a board (and OpenCV's detectors assert on it).
+		if (gray.cols < 4 * (o.columns + 1) || gray.rows < 4 * (o.rows + 1))
+			throw std::runtime_error("image '" + file + "' is " + std::to_string(gray.cols) + "x" + std::to_string(gray.rows) +
+									 " px: too small to show a board of " + std::to_string(o.columns) + "x" +
+									 std::to_string(o.rows) + " inner corners");
 		CheckerboardImage info;
 		info.file = file;
 		std::vector<cv::Point2f> corners;

@@ -7,6 +7,7 @@
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +20,7 @@ template <class T>
 T readGzObject(const std::string& path, const std::string& what)
 {
 	requireRegularFile(path, what);
+	if (!std::filesystem::exists(path)) throw std::runtime_error(what + " '" + path + "' is missing");
 	mrpt::io::CFileGZInputStream f;
 	if (!f.open(path)) throw std::runtime_error("cannot open " + what + " '" + path + "'");
 	T object;
