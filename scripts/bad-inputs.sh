@@ -359,6 +359,9 @@ run_case "scan: an input's images folder that links to itself" "error:leads back
 run_case "sim: -f bmp" "error:must be png or jpg, not" fb.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -f bmp -o fb.rawlog
 printf 'P5\n3 2\n255\n\x01\x02\x03\x04\x05\x06' > tiny.pgm
 run_case "calibrate: a 3 x 2 px checkerboard image" "error:too small to show a board" none.out -- "$apps/omnirange-calibrate" -q --checkerboard tiny.pgm --board 8x6
+"$apps/omnirange-slam" -q -i s.rawlog -c "$src/ini/icp-slam-omniscan.ini" --label LASER -o slam_notes && echo mine > slam_notes/notes.txt
+run_case "slam: -o its own earlier output, with a file the user added" "error:is not something omnirange-slam wrote" none.out -- "$apps/omnirange-slam" -q -i s.rawlog -c "$src/ini/icp-slam-omniscan.ini" --label LASER -o slam_notes
+kept slam_notes/notes.txt
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

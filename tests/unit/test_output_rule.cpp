@@ -309,3 +309,20 @@ TEST(OutputRule, ATextFileIsReplacedOnlyIfItBeginsAsTheProgramsOwnAndALinkToNoth
 	EXPECT_NE(refusal(d + "/dangling.rawlog", OutputKind::Rawlog).find("which does not exist"), std::string::npos);
 	EXPECT_TRUE(fs::is_symlink(d + "/dangling.rawlog"));
 }
+
+TEST(OutputRule, AFileAUserAddedToAnOutputFolderIsNotReplacedWithIt)
+{
+	const std::string d = fresh("added");
+	{
+		StagedFolder staged(d + "/report", "omnirange-test", {}, false);
+		write(staged.path() + "/report.md", "ours");
+		fs::create_directories(staged.path() + "/maps");
+		write(staged.path() + "/maps/a.png", "ours");
+		staged.commit();
+	}
+	EXPECT_EQ(refusal(d + "/report", OutputKind::Folder), "");  // only what it wrote: replaced again
+	write(d + "/report/maps/notes.txt", "mine");
+	EXPECT_NE(refusal(d + "/report", OutputKind::Folder).find("maps/notes.txt' is not something omnirange-test wrote"),
+			  std::string::npos);
+	EXPECT_EQ(refusal(d + "/report", OutputKind::Folder, {}, true), "");  // --force
+}

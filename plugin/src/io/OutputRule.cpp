@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -195,9 +196,15 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	{
 		if (!fs::is_directory(status))
 			throw std::runtime_error("the output folder '" + output + "' is a file" + (force ? "" : " (give another output)"));
-		if (force || fs::is_empty(p, ec) || isOutputFolderOf(output, program)) return;
-		throw std::runtime_error("'" + output + "' is a folder " + program + " did not write (no " + kOutputMarker +
-								 " naming it)" + hint);
+		if (force || fs::is_empty(p, ec)) return;
+		if (!isOutputFolderOf(output, program))
+			throw std::runtime_error("'" + output + "' is a folder " + program + " did not write (no " + kOutputMarker +
+									 " naming it)" + hint);
+		// The folder is the program's, but what a user put in it since is not.
+		if (const std::string added = firstUnlistedIn(output); !added.empty())
+			throw std::runtime_error("'" + (p / added).string() + "' is not something " + program +
+									 " wrote into its output '" + output + "' (move it out, or --force)");
+		return;
 	}
 	if (!fs::is_regular_file(status))
 		throw std::runtime_error("the output '" + output + "' exists and is not a file");
@@ -301,6 +308,7 @@ StagedFolder::~StagedFolder()
 
 void StagedFolder::commit()
 {
+	listOutputFolder(staging_);
 	temporaries::forget(staging_);
 	done_ = true;
 	replaceFolder(target_, staging_);
@@ -310,6 +318,38 @@ void StagedFolder::keep()
 {
 	temporaries::forget(staging_);
 	done_ = true;
+}
+
+void listOutputFolder(const std::string& dir)
+{
+	std::vector<std::string> entries;
+	std::error_code walking, ec;
+	for (auto it = fs::recursive_directory_iterator(dir, walking); !walking && it != fs::recursive_directory_iterator();
+		 it.increment(walking))
+		if (it->is_symlink(ec) || !it->is_directory(ec)) entries.push_back(fs::relative(it->path(), dir, ec).string());
+	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
+	for (const auto& e : entries)
+		if (e != kOutputMarker) f << "file " << e << "\n";
+	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
+}
+
+std::string firstUnlistedIn(const std::string& dir)
+{
+	std::ifstream f(fs::path(dir) / kOutputMarker);
+	std::set<std::string> listed;
+	bool has_list = false;
+	for (std::string line; std::getline(f, line);)
+		if (line.rfind("file ", 0) == 0) listed.insert(line.substr(5)), has_list = true;
+	if (!has_list) return "";  // a marker from before the listing: nothing to compare
+	std::error_code walking, ec;
+	for (auto it = fs::recursive_directory_iterator(dir, walking); !walking && it != fs::recursive_directory_iterator();
+		 it.increment(walking))
+	{
+		if (!it->is_symlink(ec) && it->is_directory(ec)) continue;
+		const std::string rel = fs::relative(it->path(), dir, ec).string();
+		if (rel != kOutputMarker && !listed.count(rel)) return rel;
+	}
+	return "";
 }
 
 void markOutputFolder(const std::string& dir, const std::string& program)

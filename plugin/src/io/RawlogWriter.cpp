@@ -147,6 +147,7 @@ void RawlogWriter::commit()
 	// The rule the programs check before they start, checked again here for
 	// every writer (a library user need not have called it).
 	requireOutputAllowed(images_, OutputKind::Folder, owner_, {}, replace_any_ || imagesLinkOf(path_, images_));
+	if (has_images_) listOutputFolder(tmp_images_);
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
 	const std::string old = images_ + ".old-" + std::to_string(::getpid());
 	if (had_old) fs::rename(images_, old);
@@ -154,7 +155,8 @@ void RawlogWriter::commit()
 	try
 	{
 		if (has_images_) fs::rename(tmp_images_, images_);
-		else fs::create_directory_symlink(fs::absolute(link_to_), images_);
+		// Relative, so that a folder holding both can be moved (a report's staging renamed into place).
+		else fs::create_directory_symlink(fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path()), images_);
 		moved_in = true;
 		fs::rename(tmp_path_, path_);
 	}

@@ -54,6 +54,12 @@ struct Output
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force = false);
 
+/** Adds to the marker of the finished folder `dir` every file in it: what
+ * the program wrote, so that a file a user adds later is not replaced with it. */
+void listOutputFolder(const std::string& dir);
+/** A file in the marked folder `dir` (relative) that its marker does not
+ * list, or "" (also for a marker without a list). */
+std::string firstUnlistedIn(const std::string& dir);
 /** Writes the marker into the folder `dir` (being made) naming `program`. */
 void markOutputFolder(const std::string& dir, const std::string& program);
 
