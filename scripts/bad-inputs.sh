@@ -362,6 +362,8 @@ run_case "calibrate: a 3 x 2 px checkerboard image" "error:too small to show a b
 "$apps/omnirange-slam" -q -i s.rawlog -c "$src/ini/icp-slam-omniscan.ini" --label LASER -o slam_notes && echo mine > slam_notes/notes.txt
 run_case "slam: -o its own earlier output, with a file the user added" "error:is not something omnirange-slam wrote" none.out -- "$apps/omnirange-slam" -q -i s.rawlog -c "$src/ini/icp-slam-omniscan.ini" --label LASER -o slam_notes
 kept slam_notes/notes.txt
+mkdir -p negpgm && printf 'P5\n-5 10\n255\n' > negpgm/1700000000.0.pgm
+run_case "import: a PGM whose header gives a negative width" "error:does not give a width and a height" negp.rawlog -- "$apps/omnirange-import" -q --images negpgm --laser imp_laser.csv -o negp.rawlog
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

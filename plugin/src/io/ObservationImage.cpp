@@ -96,8 +96,13 @@ std::string imageProblem(Bytes b)
 		const long h = static_cast<std::int32_t>(le32(b, 22));  // negative: stored top-down
 		height = static_cast<unsigned long>(h < 0 ? -h : h);
 	}
-	else if (bool cut = false; pnmSize(b, width, height, cut) && cut && width * height <= kMaxImagePixels)
-		why = "truncated: fewer pixels than its header says";
+	else if (bool cut = false; pnmSize(b, width, height, cut))
+	{
+		if (cut && width * height <= kMaxImagePixels) why = "truncated: fewer pixels than its header says";
+	}
+	// "P5" and a blank: a PGM or PPM whose size is not two whole numbers (OpenCV would print its own lines).
+	else if (b.size() >= 3 && b[0] == 'P' && b[1] >= '1' && b[1] <= '6' && std::isspace(static_cast<unsigned char>(b[2])))
+		why = "malformed: its PGM/PPM header does not give a width and a height";
 	if (why.empty() && width * height > kMaxImagePixels)
 		why = std::to_string(width) + "x" + std::to_string(height) + ": more than " +
 			  std::to_string(kMaxImagePixels / 1000000) + " megapixels";
