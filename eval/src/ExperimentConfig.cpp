@@ -6,7 +6,7 @@
 #include <omnirange_sim/World.h>
 
 #include <omnirange/io/LayeredIni.h>
-#include <omnirange/train/HistogramTrainer.h>
+#include <omnirange/train/RawlogTraining.h>
 
 #include <filesystem>
 #include <sstream>
@@ -80,8 +80,17 @@ void validate(ExperimentConfig& c)
 	require(c.train_every >= 1, "[experiment] train_every must be >= 1");
 	require(c.train_fraction > 0 && c.train_fraction < 1, "[experiment] train_fraction must be within (0, 1)");
 	require(c.bins >= 1 && c.bins <= 64, "[experiment] bins must be within [1, 64]");
-	// Checked here too, so that a bad value fails before the simulation, not after it.
-	require(c.obstacle_band >= 0 && c.obstacle_band <= kMaxObstacleBand, "[experiment] obstacle_band must be within [0, 5] m");
+	// The training's own checks, now: a bad value fails before the simulation, not after it.
+	RawlogTrainingOptions training;
+	training.every = c.train_every, training.training.bins = c.bins, training.training.obstacle_band = c.obstacle_band;
+	try
+	{
+		training.validate();
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument(std::string("[experiment] ") + e.what());
+	}
 	require(c.match_tolerance >= 0, "[experiment] match_tolerance must be >= 0 m");
 	if (!c.hasCheckRegion()) return;
 	std::istringstream in(c.check_region);

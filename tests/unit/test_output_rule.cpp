@@ -249,7 +249,7 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 	EXPECT_FALSE(fs::exists(d + "/log.rawlog"));
 	writeOne(true);  // --force
 	EXPECT_TRUE(fs::exists(d + "/log_Images/0.png"));
-	EXPECT_TRUE(isOutputFolderOf(d + "/log_Images", rawlogImagesOwner("omnirange-test")));
+	EXPECT_TRUE(isOutputFolderOf(d + "/log_Images", "omnirange-test"));
 	writeOne(false);  // now ours: replaced again without asking
 	EXPECT_TRUE(fs::exists(d + "/log.rawlog"));
 	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 2);  // no .old or .tmp left

@@ -8,6 +8,7 @@
 #include <omnirange/io/OptionsTable.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace omnirange::app
 {
@@ -16,12 +17,9 @@ mrpt::poses::CPose3D poseFromText(const std::string& option, const std::string& 
 	std::vector<double> v;
 	try
 	{
-		v = parseDoubles(text);
+		std::istringstream in(text);
+		for (std::string value; in >> value;) v.push_back(parseWithin(value, v.size() < 3 ? kMaxMountOffset : kMaxMountAngle));
 		if (v.size() != 4 && v.size() != 6) throw std::invalid_argument("not 'x y z yaw_deg' or 'x y z yaw_deg pitch_deg roll_deg'");
-		for (std::size_t k = 0; k < v.size(); ++k)
-			if (std::abs(v[k]) > (k < 3 ? kMaxMountOffset : kMaxMountAngle))
-				throw std::invalid_argument(k < 3 ? "an offset beyond " + formatDouble(kMaxMountOffset) + " m"
-												  : "an angle beyond " + formatDouble(kMaxMountAngle) + " deg");
 	}
 	catch (const std::invalid_argument& e)
 	{

@@ -320,16 +320,26 @@ void StagedFolder::keep()
 	done_ = true;
 }
 
-void listOutputFolder(const std::string& dir)
+namespace
 {
-	std::vector<std::string> entries;
+/** Every file and link under `dir` but its marker, relative to it. */
+std::vector<std::string> filesIn(const std::string& dir)
+{
+	std::vector<std::string> files;
 	std::error_code walking, ec;
 	for (auto it = fs::recursive_directory_iterator(dir, walking); !walking && it != fs::recursive_directory_iterator();
 		 it.increment(walking))
-		if (it->is_symlink(ec) || !it->is_directory(ec)) entries.push_back(fs::relative(it->path(), dir, ec).string());
+		if (it->is_symlink(ec) || !it->is_directory(ec))
+			if (std::string rel = fs::relative(it->path(), dir, ec).string(); rel != kOutputMarker) files.push_back(rel);
+	return files;
+}
+}  // namespace
+
+void listOutputFolder(const std::string& dir)
+{
+	const std::vector<std::string> files = filesIn(dir);
 	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
-	for (const auto& e : entries)
-		if (e != kOutputMarker) f << "file " << e << "\n";
+	for (const auto& e : files) f << "file " << e << "\n";
 	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
 }
 
@@ -341,14 +351,8 @@ std::string firstUnlistedIn(const std::string& dir)
 	for (std::string line; std::getline(f, line);)
 		if (line.rfind("file ", 0) == 0) listed.insert(line.substr(5)), has_list = true;
 	if (!has_list) return "";  // a marker from before the listing: nothing to compare
-	std::error_code walking, ec;
-	for (auto it = fs::recursive_directory_iterator(dir, walking); !walking && it != fs::recursive_directory_iterator();
-		 it.increment(walking))
-	{
-		if (!it->is_symlink(ec) && it->is_directory(ec)) continue;
-		const std::string rel = fs::relative(it->path(), dir, ec).string();
-		if (rel != kOutputMarker && !listed.count(rel)) return rel;
-	}
+	for (const auto& rel : filesIn(dir))
+		if (!listed.count(rel)) return rel;
 	return "";
 }
 

@@ -40,21 +40,19 @@ bool imagesLinkOf(const std::string& rawlog, const std::string& images)
 }
 }  // namespace
 
-std::string rawlogImagesOwner(const std::string& program) { return program; }
-
 void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& program,
 								const std::vector<std::string>& inputs, bool force)
 {
 	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
 	// The images go beside the file written (through a link, the file it names).
 	const std::string file = replacedFileOf(outputPath(rawlog)), images = imagesDirFor(file);
-	requireOutputAllowed(images, OutputKind::Folder, rawlogImagesOwner(program), inputs,
+	requireOutputAllowed(images, OutputKind::Folder, program, inputs,
 						 force || imagesLinkOf(file, images));
 }
 
 RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, int gz_level)
 	: path_(replacedFileOf(path)),
-	  owner_(rawlogImagesOwner(program)),
+	  owner_(program),  // its NAME_Images folder's marker names the program, as any folder of its
 	  tmp_path_(path_ + ".tmp-" + std::to_string(::getpid())),
 	  images_(imagesDirFor(path_)),  // beside the file written, where a reader of it looks
 	  tmp_images_(images_ + ".tmp-" + std::to_string(::getpid())),

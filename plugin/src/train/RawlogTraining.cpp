@@ -16,7 +16,7 @@ void RawlogTrainingOptions::validate() const
 	require(figures_frame >= 0, "figures_frame must be >= 0");
 	require(training.bins >= 1 && training.bins <= 256, "bins must be within [1, 256]");
 	require(training.laser_margin >= 0, "laser_margin must be >= 0 m");
-	require(training.obstacle_band >= 0 && training.obstacle_band <= kMaxObstacleBand, "obstacle_band must be within [0, 5] m");
+	require(training.obstacle_band >= 0 && training.obstacle_band <= 5, "obstacle_band must be within [0, 5] m");
 	require(training.light_change >= 0 && training.light_change < 1, "light_change must be within [0, 1)");
 }
 

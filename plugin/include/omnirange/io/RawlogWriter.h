@@ -21,10 +21,6 @@ namespace omnirange
 /** NAME_Images beside NAME.rawlog (the folder MRPT's programs look in). */
 std::string imagesDirFor(const std::string& rawlog_path);
 
-/** What the marker of a NAME_Images folder that `program`'s RawlogWriter
- * wrote names (OutputRule.h): the program, as for any folder it writes. */
-std::string rawlogImagesOwner(const std::string& program);
-
 /** The output rule (OutputRule.h) for a rawlog `program` is to write and
  * its NAME_Images: the rawlog may replace only a rawlog, the folder only
  * images the same program wrote (or a link beside a rawlog); neither may be,

@@ -15,9 +15,6 @@
 namespace omnirange
 {
 /** What a user chooses about training (omnirange-train's options). */
-/** [m] The largest obstacle_band taken (beyond it a band crosses rooms). */
-inline constexpr double kMaxObstacleBand = 5.0;
-
 struct TrainingParams
 {
 	double resolution{0.02};  ///< [m/px] of the bird's-eye view
