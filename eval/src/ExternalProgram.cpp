@@ -4,6 +4,7 @@
 #include <omnirange/io/Temporaries.h>
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -27,8 +28,12 @@ std::string lastLine(const std::string& file)
 }
 
 /** In the child: redirect, change folder, exec; never returns. */
-[[noreturn]] void execIn(const std::vector<char*>& args, const std::string& dir, const std::string& log_path)
+[[noreturn]] void execIn(const std::vector<char*>& args, const std::string& dir, const std::string& log_path,
+						 pid_t parent)
 {
+	// A run killed outright (kill -9) cannot end its program itself: the
+	// kernel does, so no observations2map or icp-slam is left running.
+	if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || ::getppid() != parent) ::_exit(125);
 	// The run blocks SIGINT and SIGTERM (Temporaries.h); the program must not inherit that.
 	sigset_t none;
 	sigemptyset(&none);
@@ -53,9 +58,10 @@ void runProgram(const std::vector<std::string>& argv, const std::string& dir, co
 	for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
 	args.push_back(nullptr);
 	const std::string log_path = dir + "/" + log;
+	const pid_t parent = ::getpid();
 	const pid_t pid = ::fork();
 	if (pid < 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(errno));
-	if (pid == 0) execIn(args, dir, log_path);
+	if (pid == 0) execIn(args, dir, log_path, parent);
 	temporaries::setChild(pid);  // an interrupt ends it before removing its folder
 	int status = 0;
 	while (::waitpid(pid, &status, 0) < 0)

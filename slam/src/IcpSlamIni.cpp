@@ -2,6 +2,7 @@
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/maps/TMetricMapInitializer.h>
 #include <mrpt/slam/CICP.h>
 
 #include <omnirange/io/OptionsTable.h>
@@ -60,6 +61,26 @@ void requireLikeMrptsDefault(const std::string& key, const std::string& model, d
 	if (model[0] != '-' && v < 0) throw std::invalid_argument("must be >= 0");
 	if (std::abs(v) > kMaxIcpValue) throw std::invalid_argument("must be within [-1e4, 1e4]");
 }
+
+/** The keys MRPT 2.5.8 reads from icp-slam's [MappingApplication]: the app's
+ * own (libs/apps/src/ICP_SLAM_App.cpp), the map builder's
+ * (CMetricMapBuilderICP::TConfigParams) and one `NAME_count` per map kind
+ * MRPT has registered (TSetOfMetricMapInitializers). */
+bool mrptReadsMappingKey(const std::string& key)
+{
+	static const char* const known[] = {
+		"rawlog_file", "rawlog_offset", "logOutput_dir", "LOG_FREQUENCY", "SAVE_POSE_LOG", "SAVE_3D_SCENE",
+		"CAMERA_3DSCENE_FOLLOWS_ROBOT", "SHOW_PROGRESS_3D_REAL_TIME", "SHOW_PROGRESS_3D_REAL_TIME_DELAY_MS",
+		"SHOW_LASER_SCANS_3D", "verbosity", "alwaysInsertByClass", "matchAgainstTheGrid", "insertionLinDistance",
+		"insertionAngDistance", "localizationLinDistance", "localizationAngDistance", "verbosity_level",
+		"minICPgoodnessToAccept"};
+	for (const char* k : known)
+		if (key == k) return true;
+	const std::string suffix = "_count";
+	if (key.size() <= suffix.size() || key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
+	const auto& kinds = mrpt::maps::internal::TMetricMapTypesRegistry::Instance().getAllRegistered();
+	return kinds.count(key.substr(0, key.size() - suffix.size())) > 0;
+}
 }  // namespace
 
 void requireStrictIcpSection(const std::string& file, const std::string& section)
@@ -75,6 +96,11 @@ void requireStrictIcpSection(const std::string& file, const std::string& section
 				s != "odometry_guard" && s != "loop_closure")
 				throw std::invalid_argument("unknown section [" + s + "] (an icp-slam ini has [MappingApplication] and "
 											"its map sections, [" + section + "], [odometry_guard] and [loop_closure])");
+		std::vector<std::string> mapping_keys;
+		mrpt::config::CConfigFile(file).getAllKeys("MappingApplication", mapping_keys);
+		for (const auto& k : mapping_keys)
+			if (!mrptReadsMappingKey(k))
+				throw std::invalid_argument("[MappingApplication] " + k + ": not a key icp-slam reads (misspelt?)");
 		if (!mrpt::config::CConfigFile(file).sectionExists(section)) return;  // every option at MRPT's default
 		for (const auto& k : icpKeysMrptIgnores(file, section))
 			throw std::invalid_argument("[" + section + "] " + k + ": not a key MRPT reads (it would keep its default)");

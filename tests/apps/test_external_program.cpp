@@ -5,7 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
 #include <filesystem>
+#include <thread>
 #include <fstream>
 #include <sstream>
 
@@ -43,4 +49,48 @@ TEST(ExternalProgram, FailureNamesTheProgramAndTheLogsLastLine)
 		EXPECT_NE(what.find("the reason"), std::string::npos) << what;
 	}
 	EXPECT_THROW(runProgram({"no-such-program-here"}, dir.string(), "x.log"), std::runtime_error);
+}
+
+TEST(ExternalProgram, ARunKilledOutrightTakesItsProgramWithIt)
+{
+	const fs::path dir = fs::temp_directory_path() / "omnirange_apps" / "orphan";
+	fs::remove_all(dir);
+	fs::create_directories(dir);
+	// The child stands for a run: it starts a program that writes its pid and
+	// sleeps, and is then killed with SIGKILL, so no handler of its runs.
+	const pid_t run = ::fork();
+	ASSERT_GE(run, 0);
+	if (run == 0)
+	{
+		try
+		{
+			runProgram({"sh", "-c", "echo $$ > pid.txt; exec sleep 60"}, dir.string(), "sleep.log");
+		}
+		catch (...)
+		{
+		}
+		::_exit(0);
+	}
+	const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+	pid_t program = 0;
+	while (program == 0 && std::chrono::steady_clock::now() < deadline)
+	{
+		std::ifstream f(dir / "pid.txt");
+		if (!(f >> program)) program = 0;
+		std::this_thread::sleep_for(std::chrono::milliseconds(20));
+	}
+	ASSERT_GT(program, 0) << "the program never started";
+	::kill(run, SIGKILL);
+	::waitpid(run, nullptr, 0);
+	bool gone = false;
+	while (!gone && std::chrono::steady_clock::now() < deadline)
+	{
+		// Gone, or a zombie no one has reaped yet (its state in /proc is Z).
+		std::ifstream stat("/proc/" + std::to_string(program) + "/stat");
+		std::string pid, name, state;
+		gone = !(stat >> pid >> name >> state) || state == "Z";
+		if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+	}
+	EXPECT_TRUE(gone) << "pid " << program << " outlived the run";
+	if (!gone) ::kill(program, SIGKILL);
 }

@@ -87,4 +87,13 @@ TEST(IcpSlamIni, TheIcpSectionIsReadStrictlyNamingFileSectionAndKey)
 		EXPECT_NE(why.find("[ICP] " + bad.substr(0, bad.find(' '))), std::string::npos) << bad << ": " << why;
 	}
 	EXPECT_NE(refusal("[ICP]\nmaxIterations = 80\nmaxIterations = 90\n").find("repeats"), std::string::npos);
+	// [MappingApplication]: the keys icp-slam and its map builder read, and a
+	// count per map kind MRPT knows; a misspelt key would keep its default.
+	EXPECT_EQ(refusal("[MappingApplication]\nlogOutput_dir = out\npointsMap_count = 1\nCSimplePointsMap_count = 0\n"
+					  "localizationAngDistance = 5\n"),
+			  "");
+	for (const std::string bad : {"insertionLinDistnce = 0.5", "likelihoodMapSelection = -1", "pointMap_count = 1"})
+		EXPECT_NE(refusal("[MappingApplication]\n" + bad + "\n").find("[MappingApplication] " + bad.substr(0, bad.find(' '))),
+				  std::string::npos)
+			<< bad;
 }
