@@ -4,7 +4,7 @@
 #include "FuzzInput.h"
 
 #include <omnirange/core/Rangefinder.h>
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <mrpt/config/CConfigFile.h>
 

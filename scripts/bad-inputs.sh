@@ -342,6 +342,25 @@ if [ -d "$real" ]; then
   mkdir -p boards && cp "$real/img_para_001.pgm" "$real/img_para_003.pgm" "$real/img_para_004.pgm" boards/
   run_case "calibrate: -o inside its --checkerboard-dir" "error:inside the input" boards/intr.yaml -- "$apps/omnirange-calibrate" -q --checkerboard-dir boards --board 8x6 --square 0.042 -o boards/intr.yaml --accept
 fi
+# After a sixth: damaged data that decodes, values without a bound, copies of one view.
+mkdir -p midcut && cp s.rawlog midcut.rawlog && cp s_Images/* midcut/ && f=$(ls midcut | sort | sed -n 3p)
+size=$(stat -c %s "midcut/$f") && { head -c $((size / 3)) "midcut/$f"; tail -c $((size / 3)) "midcut/$f"; } > midcut.jpg
+mkdir -p midcut_Images && cp s_Images/* midcut_Images/ && cp midcut.jpg "midcut_Images/$f"
+run_case "scan: a JPEG cut in the middle (its end marker kept)" "error:is damaged" mc.rawlog -- "$apps/omnirange-scan" -q -i midcut.rawlog -c f.ini -H floor.hist -o mc.rawlog
+run_case "train: --laser-margin 1e6" "error:laser_margin must be within" lm.hist -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o lm.hist --laser-margin 1e6
+variant azimuth_huge 'forward_azimuth_deg = 1e308'
+run_case "scan: forward_azimuth_deg = 1e308" "error:forward_azimuth_deg = '1e308'" az.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c azimuth_huge.ini -H floor.hist -o az.rawlog
+run_case "import: --laser-max-range 1e308" "error:max range" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --laser-max-range 1e308 -o imp.rawlog
+printf '1000.0, 1, 2, 3\n1000.4, 1, 2, 3\n' > imp_far.csv
+run_case "import: a laser log with no time in common with the images" "error:no time in common" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_far.csv -o imp.rawlog
+printf '[rangefinder]\nthresold = 0.1\n' > typo_save.ini && cp typo_save.ini typo_save.ini.orig
+printf '#direct\n3 -96 0 0.0026\n#inverse\n2 1 1\n#center\n380 515\n#affine\n1 0 0\n#size\n768 1024\n' > good_calib.txt
+run_case "calibrate: --save-to an ini with a misspelt key" "error:unknown key 'thresold'" none.out -- "$apps/omnirange-calibrate" -q --ocamcalib good_calib.txt --save-to typo_save.ini
+cmp -s typo_save.ini typo_save.ini.orig || { echo "| | PROBLEM: keys were added to an ini every program refuses |"; problems=$((problems + 1)); }
+if [ -d "$real" ]; then
+  mkdir -p same_view && for i in 1 2 3 4 5; do cp "$real/img_para_001.pgm" "same_view/copy$i.pgm"; done
+  run_case "calibrate: five copies of one board image" "error:found in 1 of 5" same.yaml -- "$apps/omnirange-calibrate" -q --checkerboard-dir same_view --board 8x6 --square 0.042 -o same.yaml
+fi
 printf 'OMNIHIST' > left.hist.tmp-999999999
 "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o left.hist
 [ ! -e left.hist.tmp-999999999 ] || { echo "| | PROBLEM: a killed run's left.hist.tmp-PID was not cleaned |"; problems=$((problems + 1)); }
@@ -362,7 +381,7 @@ run_case "calibrate: a 3 x 2 px checkerboard image" "error:too small to show a b
 "$apps/omnirange-slam" -q -i s.rawlog -c "$src/ini/icp-slam-omniscan.ini" --label LASER -o slam_notes && echo mine > slam_notes/notes.txt
 run_case "slam: -o its own earlier output, with a file the user added" "error:is not something omnirange-slam wrote" none.out -- "$apps/omnirange-slam" -q -i s.rawlog -c "$src/ini/icp-slam-omniscan.ini" --label LASER -o slam_notes
 kept slam_notes/notes.txt
-mkdir -p negpgm && printf 'P5\n-5 10\n255\n' > negpgm/1700000000.0.pgm
+mkdir -p negpgm && printf 'P5\n-5 10\n255\n' > negpgm/100.0.pgm
 run_case "import: a PGM whose header gives a negative width" "error:does not give a width and a height" negp.rawlog -- "$apps/omnirange-import" -q --images negpgm --laser imp_laser.csv -o negp.rawlog
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt

@@ -9,7 +9,7 @@
 
 #include <omnirange_apps/CommandLine.h>
 
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 #include <omnirange/io/OutputRule.h>
 
 #include <wx/button.h>
@@ -30,7 +30,6 @@ namespace
 {
 constexpr int kImageWidth = 768;  // the omnicam image is shown at this width
 constexpr int kPlotSize = 340, kSmall = 168;
-constexpr double kDeg = 57.29577951308232;
 
 wxBitmap toBitmap(const cv::Mat& bgr, int width)
 {
@@ -41,26 +40,34 @@ wxBitmap toBitmap(const cv::Mat& bgr, int width)
 	return *b;
 }
 
-/** The text of a spin control as typed, parsed strictly and checked against
- * its range; throws std::invalid_argument saying why it is refused. */
-template <class Spin>
-double typedValue(const Spin& c, const char* name)
+/** "N [px]": a key and its unit, as a control's label. */
+std::string labelOf(const FieldInfo& f)
 {
-	const std::string text = c.GetTextValue().ToStdString();
-	double v = 0;
-	try
+	return f.unit == "-" || f.unit == "bool" ? f.key : f.key + " [" + f.unit + "]";
+}
+
+/** The key's meaning and range, as its tooltip (the table's text, as in the docs). */
+wxString tooltipOf(const FieldInfo& f)
+{
+	std::string tip = f.doc;
+	if (f.range) tip += " (" + f.range->text() + ")";
+	if (!f.choices.empty())
 	{
-		v = omnirange::parseDouble(text);
+		tip += " (";
+		for (std::size_t i = 0; i < f.choices.size(); ++i) tip += (i ? ", " : "") + f.choices[i];
+		tip += ")";
 	}
-	catch (const std::invalid_argument& e)
-	{
-		throw std::invalid_argument(std::string(name) + " '" + text + "': " + e.what());
-	}
-	if (v < c.GetMin() || v > c.GetMax())
-		throw std::invalid_argument(
-			(wxString::Format("%s '%s' is outside [%g, %g]", name, text, double(c.GetMin()), double(c.GetMax())))
-				.ToStdString());
-	return v;
+	return wxString::FromUTF8(tip);
+}
+
+/** The text a control shows for its key: typed text not yet committed (no
+ * Enter, focus not left) counts, as it is what the user sees. */
+template <class KeyControl>
+std::string shownText(const KeyControl& c)
+{
+	if (c.number) return trimmed(c.number->GetTextValue().ToStdString());
+	if (c.choice) return c.choice->GetStringSelection().ToStdString();
+	return c.check->GetValue() ? "true" : "false";
 }
 }  // namespace
 
@@ -146,51 +153,51 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 {
 	auto* grid = new wxFlexGridSizer(4, 4, 4);
-	const auto label = [&](const char* text) { grid->Add(new wxStaticText(p, wxID_ANY, text), 0, wxALIGN_CENTER_VERTICAL); };
-	const auto spin = [&](const char* text, int lo, int hi) {
-		label(text);
-		auto* c = new wxSpinCtrl(p, wxID_ANY, "", wxDefaultPosition, wxSize(130, -1), wxSP_ARROW_KEYS, lo, hi);
-		grid->Add(c);
-		bindGuarded(c, wxEVT_SPINCTRL, [this](wxSpinEvent&) { onParamsChanged(); });
-		return c;
+	const auto& table = RangefinderParams::table();
+	const auto add = [&](const std::string& key, wxWindow* control, KeyControl c) {
+		const FieldInfo& f = table.field(key).info;
+		auto* label = new wxStaticText(p, wxID_ANY, wxString::FromUTF8(labelOf(f)));
+		label->SetToolTip(tooltipOf(f)), control->SetToolTip(tooltipOf(f));
+		grid->Add(label, 0, wxALIGN_CENTER_VERTICAL), grid->Add(control);
+		c.key = key;
+		controls_.push_back(c);
 	};
-	const auto real = [&](const char* text, double lo, double hi, double inc, int digits) {
-		label(text);
+	// A number's arrows step within its range; `shown` bounds those a range leaves open.
+	const auto number = [&](const std::string& key, double inc, int digits, Range shown = Range::finite()) {
+		const Range r = table.field(key).info.range.value_or(shown);
+		const double lo = std::isfinite(r.lo) ? r.lo : shown.lo, hi = std::isfinite(r.hi) ? r.hi : shown.hi;
 		auto* c = new wxSpinCtrlDouble(p, wxID_ANY, "", wxDefaultPosition, wxSize(130, -1), wxSP_ARROW_KEYS, lo, hi,
 									   lo, inc);
 		c->SetDigits(digits);
-		grid->Add(c);
 		bindGuarded(c, wxEVT_SPINCTRLDOUBLE, [this](wxSpinDoubleEvent&) { onParamsChanged(); });
+		add(key, c, {"", c, nullptr, nullptr});
 		return c;
 	};
-	n_ = spin("N [px]", 1, 200);
-	k_ = spin("K [px]", 0, 50);
-	threshold_ = real("threshold", 0.0, 1.0, 0.0025, 4);
-	step_ = real("brightness step", 0.0, 5.0, 0.05, 2);
-	label("boundary");
-	boundary_ = new wxChoice(p, wxID_ANY);
-	boundary_->Append("midpoint"), boundary_->Append("subpixel");
-	grid->Add(boundary_);
-	label("outlier filter");
-	outliers_ = new wxChoice(p, wxID_ANY);
-	outliers_->Append("none"), outliers_->Append("spike");
-	grid->Add(outliers_);
-	cx_ = real("cx [px]", 0, 20000, 0.5, 1);
-	cy_ = real("cy [px]", 0, 20000, 0.5, 1);
-	r_ = real("R [px]", 1, 20000, 0.5, 1);
-	azimuth_ = real("forward [deg]", -360, 360, 1, 1);
-	const auto check = [&](const char* text) {
-		label(text);
+	const auto choice = [&](const std::string& key) {
+		auto* c = new wxChoice(p, wxID_ANY);
+		for (const auto& name : table.field(key).info.choices) c->Append(wxString::FromUTF8(name));
+		bindGuarded(c, wxEVT_CHOICE, [this](wxCommandEvent&) { onParamsChanged(); });
+		add(key, c, {"", nullptr, c, nullptr});
+	};
+	const auto check = [&](const std::string& key) {
 		auto* c = new wxCheckBox(p, wxID_ANY, "");
-		grid->Add(c);
 		bindGuarded(c, wxEVT_CHECKBOX, [this](wxCommandEvent&) { onParamsChanged(); });
-		return c;
+		add(key, c, {"", nullptr, nullptr, c});
 	};
-	mirrored_ = check("mirrored");
-	walls_ = check("thin walls");
-	exposure_ = check("exposure comp.");
-	for (wxChoice* c : {boundary_, outliers_}) bindGuarded(c, wxEVT_CHOICE, [this](wxCommandEvent&) { onParamsChanged(); });
+	const Range pixels = Range::closed(0, kMaxImageSide);
+	number("N", 1, 0), number("K", 1, 0);
+	threshold_ = number("threshold", 0.0025, 4);
+	number("step_threshold", 0.05, 2), choice("step_sign");
+	choice("boundary_model"), choice("outlier_filter");
+	number("cx", 0.5, 1, pixels), number("cy", 0.5, 1, pixels);
+	number("R", 0.5, 1), number("forward_azimuth_deg", 1, 1, Range::closed(-360, 360));
+	check("mirrored"), check("wall_fit"), check("exposure_compensation");
 	sizer->Add(grid, 0, wxALL, 4);
+	buildShowsAndActions(p, sizer);
+}
+
+void TunerFrame::buildShowsAndActions(wxWindow* p, wxSizer* sizer)
+{
 
 	auto* shows = new wxBoxSizer(wxHORIZONTAL);
 	const std::vector<std::pair<const char*, bool*>> boxes = {
@@ -228,19 +235,13 @@ void TunerFrame::controlsFromParams()
 {
 	updating_ = true;
 	const RangefinderParams& p = s_.params();
-	n_->SetValue(p.scanner.filter.N);
-	k_->SetValue(p.scanner.filter.K);
-	threshold_->SetValue(p.threshold);
-	step_->SetValue(p.scanner.step_threshold);
-	boundary_->SetSelection(p.scanner.boundary_model == BoundaryModel::Midpoint ? 0 : 1);
-	outliers_->SetSelection(p.outliers.outlier_filter == OutlierFilterKind::None ? 0 : 1);
-	cx_->SetValue(p.camera.cx);
-	cy_->SetValue(p.camera.cy);
-	r_->SetValue(p.camera.R);
-	azimuth_->SetValue(p.camera.forward_azimuth * kDeg);
-	mirrored_->SetValue(p.camera.mirrored);
-	walls_->SetValue(p.walls.wall_fit);
-	exposure_->SetValue(p.exposure_compensation);
+	for (const auto& c : controls_)
+	{
+		const std::string value = RangefinderParams::table().field(c.key).print(p);
+		if (c.number) c.number->SetValue(parseDouble(value));
+		if (c.choice) c.choice->SetStringSelection(wxString::FromUTF8(value));
+		if (c.check) c.check->SetValue(value == "true");
+	}
 	updating_ = false;
 }
 
@@ -249,20 +250,20 @@ bool TunerFrame::applyControls()
 	RangefinderParams p = s_.params();
 	try
 	{
-		// Text typed but not yet committed (no Enter, focus not left) counts: it is what the user sees.
-		p.scanner.filter.N = static_cast<int>(typedValue(*n_, "N"));
-		p.scanner.filter.K = static_cast<int>(typedValue(*k_, "K"));
-		p.threshold = typedValue(*threshold_, "threshold");
-		p.scanner.step_threshold = typedValue(*step_, "brightness step");
-		p.camera.cx = typedValue(*cx_, "cx");
-		p.camera.cy = typedValue(*cy_, "cy");
-		p.camera.R = typedValue(*r_, "R");
-		p.camera.forward_azimuth = typedValue(*azimuth_, "forward") / kDeg;
-		p.scanner.boundary_model = boundary_->GetSelection() == 0 ? BoundaryModel::Midpoint : BoundaryModel::Subpixel;
-		p.outliers.outlier_filter = outliers_->GetSelection() == 0 ? OutlierFilterKind::None : OutlierFilterKind::Spike;
-		p.camera.mirrored = mirrored_->GetValue();
-		p.walls.wall_fit = walls_->GetValue();
-		p.exposure_compensation = exposure_->GetValue();
+		// Each key parsed and range-checked as an ini's value is, then validated as a whole.
+		for (const auto& c : controls_)
+		{
+			const auto& field = RangefinderParams::table().field(c.key);
+			const std::string text = shownText(c);
+			try
+			{
+				field.set(p, text);
+			}
+			catch (const std::invalid_argument& e)
+			{
+				throw std::invalid_argument(c.key + " '" + text + "': " + e.what());
+			}
+		}
 		s_.setParams(p);
 	}
 	catch (const std::exception& e)

@@ -32,7 +32,10 @@ class TunerFrame : public wxFrame
 	/** Binds `handler` to `type` on `source` so that what it throws is shown, not fatal. */
 	template <class Event, class Handler>
 	void bindGuarded(wxEvtHandler* source, const wxEventTypeTag<Event>& type, Handler handler);
+	/** A control per tunable key, then buildShowsAndActions(). */
 	void buildControls(wxWindow* parent, wxSizer* sizer);
+	/** The overlays' switches, the buttons and the keys' legend. */
+	void buildShowsAndActions(wxWindow* parent, wxSizer* sizer);
 	void controlsFromParams();
 	/** Takes the controls' values, typed text not yet committed included;
 	 * a refused value puts every control back to the value in force. */
@@ -59,10 +62,17 @@ class TunerFrame : public wxFrame
 	wxStaticBitmap *image_{}, *plot_{}, *birdseye_{}, *colours_{};
 	wxSlider* slider_{};
 	wxStaticText *frame_label_{}, *frame_score_{};
-	wxSpinCtrl *n_{}, *k_{};
-	wxSpinCtrlDouble *threshold_{}, *step_{}, *cx_{}, *cy_{}, *r_{}, *azimuth_{};
-	wxChoice *boundary_{}, *outliers_{};
-	wxCheckBox *mirrored_{}, *walls_{}, *exposure_{};
+	/** A control for one key of the rangefinder's options table, which gives
+	 * its label, unit, tooltip, range and an enum's names. */
+	struct KeyControl
+	{
+		std::string key;
+		wxSpinCtrlDouble* number{};
+		wxChoice* choice{};
+		wxCheckBox* check{};
+	};
+	std::vector<KeyControl> controls_;
+	wxSpinCtrlDouble* threshold_{};  // the keys [, ] and Ctrl+T act on it
 	wxTimer play_;
 	// What depends on the rangefinder only, not on the frame: rebuilt when it changes.
 	std::unique_ptr<omnirange::BirdsEyeView> view_;

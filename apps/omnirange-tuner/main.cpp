@@ -6,7 +6,7 @@
 
 #include <omnirange_apps/CommandLine.h>
 
-#include <omnirange/io/LayeredIni.h>
+#include <omnirange/config/LayeredIni.h>
 #include <omnirange/io/OutputRule.h>
 
 #include <wx/app.h>
@@ -94,6 +94,7 @@ int main(int argc, char** argv)
 		std::vector<std::string> inputs{in.rawlog, in.histogram};
 		for (const auto& base : omnirange::iniBasesOf(in.ini)) inputs.push_back(base);
 		omnirange::requireOutputAllowed(g_options.save_to, omnirange::OutputKind::Ini, "omnirange-tuner", inputs);
+		omnirange::RangefinderParams::requireWritable(g_options.save_to, in.section);
 		if (g_options.frame >= g_session->frames())
 			throw std::invalid_argument("frame " + std::to_string(g_options.frame) + " is past the rawlog's " +
 										std::to_string(g_session->frames()) + " frames");

@@ -7,7 +7,7 @@
 #include <omnirange_slam/IcpSlamIni.h>
 #include "omnirange_eval/SensoryFrameFormat.h"
 
-#include <omnirange/io/AtomicWrite.h>
+#include <omnirange/config/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/Progress.h>
 #include <omnirange/io/RawlogScan.h>

@@ -5,7 +5,7 @@
 #include <omnirange_sim/RobotParams.h>
 #include <omnirange_sim/World.h>
 
-#include <omnirange/io/LayeredIni.h>
+#include <omnirange/config/LayeredIni.h>
 #include <omnirange/train/RawlogTraining.h>
 
 #include <filesystem>
@@ -31,7 +31,8 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 		.add("learn", "bool", "learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser",
 			 [](C& c) -> auto& { return c.learn; })
 		.addEnum("colour_space", "the histogram's colour space: RGB (the paper's), HSV or CHROMA",
-				 [](C& c) -> auto& { return c.colour_space; }, colourSpaceFromString)
+				 [](C& c) -> auto& { return c.colour_space; }, colourSpaceFromString,
+				 {ColourSpace::RGB, ColourSpace::HSV, ColourSpace::Chroma})
 		.add("bins", "-", "histogram bins per colour channel", [](C& c) -> auto& { return c.bins; })
 		.add("obstacle_band", "m", "obstacle colours counted this far beyond the laser's hits (0: floor only)",
 			 [](C& c) -> auto& { return c.obstacle_band; })

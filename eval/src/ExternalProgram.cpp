@@ -1,7 +1,7 @@
 #include "omnirange_eval/ExternalProgram.h"
 
 #include <omnirange/io/MemoryLimit.h>
-#include <omnirange/io/Temporaries.h>
+#include <omnirange/config/Temporaries.h>
 
 #include <fcntl.h>
 #include <sys/prctl.h>

@@ -1,6 +1,6 @@
 #include "omnirange_eval/Suite.h"
 
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <algorithm>
 #include <sstream>

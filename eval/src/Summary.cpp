@@ -2,7 +2,7 @@
 
 #include "omnirange_eval/Trajectory.h"
 
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <mrpt/config/CConfigFile.h>
 

@@ -1,7 +1,7 @@
 #include "omnirange_sim/FloorTruth.h"
 
 #include <omnirange/core/PolarScanner.h>
-#include <omnirange/io/SensorLabels.h>
+#include <omnirange/config/SensorLabels.h>
 
 #include <cmath>
 #include <limits>

@@ -1,6 +1,6 @@
 #include "omnirange_sim/Route.h"
 
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <cmath>
 #include <fstream>

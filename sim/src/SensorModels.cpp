@@ -1,6 +1,6 @@
 #include "omnirange_sim/SensorModels.h"
 
-#include <omnirange/io/SensorLabels.h>
+#include <omnirange/config/SensorLabels.h>
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // The world file reader. Syntax: docs/worlds.md. Every error names the file
 // and the line.
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 #include "WorldFields.h"
 
 #include "omnirange_sim/World.h"
@@ -22,6 +22,15 @@ namespace omnirange::sim
 {
 namespace
 {
+/** A character as a message shows it: 'x', or a control character by its code. */
+std::string shown(char c)
+{
+	if (c == '\t') return "'\\t'";
+	if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) >= 127)
+		return "byte " + std::to_string(static_cast<unsigned char>(c));
+	return std::string("'") + c + "'";
+}
+
 struct LegendEntry
 {
 	int material;
@@ -57,6 +66,7 @@ class Parser
 			else if (tokens[0] == "name")
 			{
 				if (tokens.size() != 2) throw error("expected 'name NAME'");
+				if (!w_.name.empty()) throw error("a second 'name' line (the first said '" + w_.name + "')");
 				w_.name = tokens[1];
 			}
 			else
@@ -278,6 +288,7 @@ class Parser
 		while (readCappedLine(in, row, path_, line_ + 1, "world file"))
 		{
 			++line_;
+			if (!row.empty() && row.back() == '\r') row.pop_back();  // a file saved with CRLF line ends
 			if (row == "end") return;
 			// Merge runs of one character into one box per row.
 			for (std::size_t c = 0; c < row.size();)
@@ -289,7 +300,7 @@ class Parser
 				{
 					const auto it = legend_.find(ch);
 					if (it == legend_.end())
-						throw error(std::string("plan character '") + ch + "' has no legend");
+						throw error("plan character " + shown(ch) + " has no legend");
 					const LegendEntry& L = it->second;
 					const Footprint fp = Footprint::box(
 						{x0 + cell * 0.5 * (c + e), y0 - cell * (r + 0.5)}, cell * (e - c), cell, 0.0);

@@ -5,7 +5,7 @@
 #include <mrpt/maps/TMetricMapInitializer.h>
 #include <mrpt/slam/CICP.h>
 
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <algorithm>
 #include <cmath>

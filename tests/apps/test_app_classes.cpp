@@ -8,10 +8,10 @@
 #include <omnirange_apps/TrainApp.h>
 #include <omnirange_eval/ExperimentConfig.h>
 #include <omnirange_eval/Suite.h>
-#include <omnirange/io/LayeredIni.h>
+#include <omnirange/config/LayeredIni.h>
 
 #include <omnirange/io/RawlogReader.h>
-#include <omnirange/io/Temporaries.h>
+#include <omnirange/config/Temporaries.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>

@@ -187,6 +187,28 @@ TEST(RealParaboloidFewBoards, BoardsThatDoNotPinTheCentreAreDoubtedAndNothingIsS
 	EXPECT_NE(test::readText(ini).find("mirror_model = mei"), std::string::npos);
 }
 
+TEST(RealParaboloidFewBoards, CopiesOfOneViewCountOnceAndSaveNothing)
+{
+	if (!std::filesystem::exists(kRealDir)) GTEST_SKIP() << "no " << kRealDir;
+	const std::string dir = std::filesystem::temp_directory_path() / "omnirange_calib_copies";
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	// Two views, each copied three times under other names (a still camera's
+	// burst): a fit of two views with a small RMS and a centre that "moves 0 px".
+	std::vector<std::string> args{"-o", dir + "/intr.yaml"};
+	for (const auto& f : realImages({1, 2}))
+		for (int copy = 0; copy < 3; ++copy)
+		{
+			const std::string name = dir + "/" + std::filesystem::path(f).stem().string() + "_" + std::to_string(copy) + ".pgm";
+			std::filesystem::copy_file(f, name);
+			args.insert(args.end(), {"--checkerboard", name});
+		}
+	const std::string why = calibrateFails(args);
+	EXPECT_NE(why.find("found in 2 of 6 images (views of the same board position counted once)"), std::string::npos)
+		<< why;
+	EXPECT_FALSE(std::filesystem::exists(dir + "/intr.yaml"));
+}
+
 TEST(MirrorRim, ADiscFarFromTheCalibratedCentreIsDoubted)
 {
 	if (!std::filesystem::exists(kRealDir)) GTEST_SKIP() << "no " << kRealDir;

@@ -7,7 +7,7 @@
 
 #include "../common/DrawnScans.h"
 
-#include <omnirange/io/SensorLabels.h>
+#include <omnirange/config/SensorLabels.h>
 
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>

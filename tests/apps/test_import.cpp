@@ -275,7 +275,7 @@ TEST(Import, BadLogsAreNamedByFileAndLineAndNothingIsWritten)
 	// An image that is not one, and one without a time in its name.
 	o = importOf(u, out);
 	std::ofstream(u.images + "/1767225699.000000.jpg") << "not a jpeg";
-	EXPECT_NE(errorOf(o).find("1767225699.000000.jpg' cannot be read as an image"), std::string::npos) << errorOf(o);
+	EXPECT_NE(errorOf(o).find("1767225699.000000.jpg' of OMNICAM cannot be decoded"), std::string::npos) << errorOf(o);
 	fs::remove(u.images + "/1767225699.000000.jpg");
 	// A camera's JPEG cut short (it would decode, with grey rows and only a warning).
 	{

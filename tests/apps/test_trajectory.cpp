@@ -2,7 +2,7 @@
 // absolute trajectory error of paths whose error is known by construction.
 #include <omnirange_eval/Trajectory.h>
 
-#include <omnirange/io/SensorLabels.h>
+#include <omnirange/config/SensorLabels.h>
 
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservationOdometry.h>

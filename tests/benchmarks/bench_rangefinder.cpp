@@ -117,6 +117,32 @@ void BM_FrameToScanCompensated(benchmark::State& state)
 }
 BENCHMARK(BM_FrameToScanCompensated)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// The compensated frame's stages, as shares of the whole [%]: where a faster
+// frame must come from.
+void BM_StageShares(benchmark::State& state)
+{
+	const Scene& scene = ::scene(false);
+	ColourModel model(scene.histogram);
+	const OmniCameraModel cam{scene.params.camera};
+	model.reference = FloorRing(cam, cam.distanceFromRho(scene.params.scanner.base_radius) + 0.05).medianColour(scene.frame);
+	for (double& c : model.reference) c *= 1.05;
+	const Rangefinder rf(scene.params, model);
+	StageTimes sum;
+	for (auto _ : state)
+	{
+		StageTimes t;
+		const RangeScan scan = rf.process(scene.frame, nullptr, &t);
+		benchmark::DoNotOptimize(scan.rays.data());
+		sum.light += t.light, sum.scan += t.scan, sum.outliers += t.outliers, sum.walls += t.walls;
+	}
+	const double all = sum.light + sum.scan + sum.outliers + sum.walls;
+	state.counters["light_%"] = 100 * sum.light / all;
+	state.counters["scan_%"] = 100 * sum.scan / all;
+	state.counters["outliers_%"] = 100 * sum.outliers / all;
+	state.counters["walls_%"] = 100 * sum.walls / all;
+}
+BENCHMARK(BM_StageShares)->Unit(benchmark::kMillisecond);
+
 // The room with the brightness step on (learning switches it on where it
 // helps): each scanline is read again for steps up to the colour's hit.
 void BM_FrameToScanWithBrightnessStep(benchmark::State& state)

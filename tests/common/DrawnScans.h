@@ -3,7 +3,7 @@
 // geometry, and rawlogs of drives through them: the matcher's and the
 // keyframe graph's tests, and icp-slam's corridor.
 #include <omnirange/core/PolarScanner.h>
-#include <omnirange/io/SensorLabels.h>
+#include <omnirange/config/SensorLabels.h>
 
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>

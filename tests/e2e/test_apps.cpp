@@ -68,7 +68,7 @@ TEST(Apps, ScanWithMissingImagesOrTheWrongSizeFails)
 	fs::copy_file(kSample, dir + "/noimages.rawlog");
 	RunResult r = run(app("omnirange-scan") + " -q -i " + q(dir + "/noimages.rawlog") + " -c " + q(kIni) + " -H " + q(hist) +
 				" -o " + q(dir + "/out.rawlog"));
-	expectCleanFailure(r, "missing or unreadable");
+	expectCleanFailure(r, "of OMNICAM is missing");
 	EXPECT_FALSE(fs::exists(dir + "/out.rawlog"));
 
 	std::ofstream(dir + "/small.ini") << "[rangefinder]\nimage_width = 640\nimage_height = 480\ncx = 320\ncy = 240\n";
@@ -84,7 +84,7 @@ TEST(Apps, ImpossibleParametersAndMissingFiles)
 	const std::string hist = histogram(dir);
 	std::ofstream(dir + "/n0.ini") << "[rangefinder]\nN = 0\n";
 	RunResult r = run(app("omnirange-scan") + " -q -i " + q(kSample) + " -c " + q(dir + "/n0.ini") + " -H " + q(hist) + " -o " + q(dir + "/o.rawlog"));
-	expectCleanFailure(r, "[rangefinder] N (false-positive filter) must be within");
+	expectCleanFailure(r, "[rangefinder] N = '0': must be within [1, 10000] px");
 	std::ofstream(dir + "/typo.ini") << "[rangefinder]\nthreshhold = 0.1\n";
 	r = run(app("omnirange-scan") + " -q -i " + q(kSample) + " -c " + q(dir + "/typo.ini") + " -H " + q(hist) + " -o " + q(dir + "/o.rawlog"));
 	expectCleanFailure(r, "unknown key 'threshhold'");

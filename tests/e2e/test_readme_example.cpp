@@ -5,7 +5,7 @@
 
 #include "../common/FactorySample.h"
 
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>

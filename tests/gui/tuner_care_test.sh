@@ -67,7 +67,7 @@ key ctrl+t; key ctrl+a; xdotool type --window "$win" "0.2"; sleep 0.5; key ctrl+
 check "typed text is what Save writes" [ "$(saved_threshold)" = "0.2" ]
 check "saved: no unsaved mark" bash -c "[[ '$(title)' != '*'* ]]"
 key ctrl+t; key ctrl+a; xdotool type --window "$win" "5"; sleep 0.5; key ctrl+s
-check "a value out of range is refused and said" grep -q "refused: threshold '5' is outside" "$work/tuner.log"
+check "a value out of range is refused and said" grep -q "refused: threshold '5': must be within \[0, 1\]" "$work/tuner.log"
 check "a refused value is not saved" [ "$(saved_threshold)" = "0.2" ]
 
 key ctrl+h

@@ -93,6 +93,12 @@ TEST(WorldFile, ErrorsNameTheFileAndLine)
 	EXPECT_NE(worldError("box x=zero y=0 w=1 d=1 z1=1 material=metal").find("not a number"), std::string::npos);
 	EXPECT_NE(worldError("plan x0=0 y0=0 cell=1\nX\nend").find(":3: plan character 'X' has no legend"),
 			  std::string::npos);
+	EXPECT_NE(worldError("plan x0=0 y0=0 cell=1\n\x01\nend").find("plan character byte 1 has no legend"),
+			  std::string::npos);
+	EXPECT_NE(worldError("name a\nname b").find(":3: a second 'name' line (the first said 'a')"), std::string::npos);
+	// A plan saved with CRLF line ends reads as with LF ones.
+	const auto crlf = test::writeFile("crlf.world", "omnirange-world 1\r\nlegend char=# material=hedge z1=1.8\r\nplan x0=0 y0=0 cell=1\r\n#.#\r\nend\r\n");
+	EXPECT_EQ(errorOf([&] { loadWorld(crlf); }), "");
 	EXPECT_NE(worldError("polygon points=0,0;1,0;1,1;0.9,0.2 z1=1 material=metal").find("not convex"),
 			  std::string::npos);
 	EXPECT_NE(worldError("gridmap file=nowhere.gridmap.gz z1=1 material=brick").find("cannot read grid map"),

@@ -4,7 +4,7 @@
 // is not decimal seconds within MRPT's clock.
 #include <omnirange/core/ColourModel.h>
 #include <omnirange/io/ObservationImage.h>
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 #include <omnirange/core/Rangefinder.h>
 
 #include "../common/FactorySample.h"
@@ -75,6 +75,32 @@ TEST(BadFiles, AJpegIsJudgedByItsMarkersSoATrailerIsFineAndACutIsNot)
 	// A cut inside the headers, before the scan.
 	std::ofstream(d + "/head.jpg", std::ios::binary) << whole.substr(0, 30);
 	EXPECT_NE(errorOf([&] { decodeImageFile(d + "/head.jpg", "OMNICAM"); }), "");
+}
+
+TEST(BadFiles, AJpegDamagedInsideIsRefusedThoughItsEndMarkerIsThere)
+{
+	const std::string d = dir("jpeg_inside");
+	cv::Mat img(240, 320, CV_8UC3);
+	cv::randu(img, 0, 255);  // texture: coded data much longer than the headers
+	std::vector<uchar> buf;
+	cv::imencode(".jpg", img, buf);
+	const std::string whole(buf.begin(), buf.end());
+	const std::size_t n = whole.size();
+	// Its middle third cut out: libjpeg meets the end marker early, fills grey and only warns.
+	std::ofstream(d + "/midcut.jpg", std::ios::binary) << whole.substr(0, n / 3) + whole.substr(2 * n / 3);
+	for (const int flags : {cv::IMREAD_COLOR, cv::IMREAD_GRAYSCALE})
+	{
+		const std::string why = errorOf([&] { decodeImageFile(d + "/midcut.jpg", "OMNICAM", flags); });
+		EXPECT_NE(why.find("midcut.jpg' of OMNICAM is damaged: Corrupt JPEG data"), std::string::npos) << why;
+	}
+	// Padding before the end marker, as webcams write, leaves the pixels whole.
+	std::ofstream(d + "/padded.jpg", std::ios::binary) << whole.substr(0, n - 2) + std::string("\0\0\0", 3) + whole.substr(n - 2);
+	const cv::Mat padded = decodeImageFile(d + "/padded.jpg", "OMNICAM");
+	const cv::Mat reference = cv::imdecode(buf, cv::IMREAD_COLOR);
+	ASSERT_EQ(padded.size(), reference.size());
+	EXPECT_EQ(cv::norm(padded, reference, cv::NORM_INF), 0.0) << "decoded unlike OpenCV";
+	const cv::Mat grey = decodeImageFile(d + "/padded.jpg", "OMNICAM", cv::IMREAD_GRAYSCALE);
+	EXPECT_EQ(cv::norm(grey, cv::imdecode(buf, cv::IMREAD_GRAYSCALE), cv::NORM_INF), 0.0);
 }
 
 TEST(BadFiles, AnImageWhoseHeaderAsksForTooManyPixelsIsRefusedBeforeDecoding)

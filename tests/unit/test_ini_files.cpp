@@ -3,7 +3,7 @@
 #include "SyntheticOmni.h"
 
 #include <omnirange/core/Rangefinder.h>
-#include <omnirange/io/LayeredIni.h>
+#include <omnirange/config/LayeredIni.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -130,12 +130,13 @@ TEST(IniFiles, AnExperimentIniRepeatsNoKeyOfItsBaseAndTheBaseNoDefault)
 
 TEST(IniFiles, DocsListEveryKeyWithTheCodesUnitAndDefault)
 {
-	const std::regex row(R"(^\|\s*`([A-Za-z_][A-Za-z0-9_]*)`\s*\|\s*([^|]*?)\s*\|\s*([^|]*?)\s*\|)");
+	const std::regex row(R"(^\|\s*`([A-Za-z_][A-Za-z0-9_]*)`\s*\|\s*([^|]*?)\s*\|\s*([^|]*?)\s*\|\s*((?:[^|\\]|\\.)*?)\s*\|)");
 	std::map<std::string, std::pair<std::string, std::string>> documented;  // key -> unit, default
+	std::map<std::string, std::string> values;  // key -> the values column
 	for (const auto& l : lines(kSource + "/docs/parameters.md"))
 	{
 		std::smatch m;
-		if (std::regex_search(l, m, row)) documented[m[1]] = {m[2], m[3]};
+		if (std::regex_search(l, m, row)) documented[m[1]] = {m[2], m[3]}, values[m[1]] = m[4];
 	}
 	const RangefinderParams defaults;
 	const auto& fields = RangefinderParams::table().fields();
@@ -151,6 +152,18 @@ TEST(IniFiles, DocsListEveryKeyWithTheCodesUnitAndDefault)
 			EXPECT_NEAR(dv, std::stod(code), 1e-5 * std::max(1.0, std::abs(dv))) << f.info.key;
 		else
 			EXPECT_EQ(doc, code) << f.info.key;
+		// The values: the table's range (the docs may add what other keys bound), an enum's every name.
+		if (f.info.range)
+		{
+			EXPECT_EQ(values[f.info.key].rfind(f.info.range->text(), 0), 0u)
+				<< f.info.key << ": '" << values[f.info.key] << "' should begin with '" << f.info.range->text() << "'";
+		}
+		std::string names;
+		for (const auto& c : f.info.choices) names += (names.empty() ? "" : ", ") + c;
+		if (!names.empty())
+		{
+			EXPECT_EQ(values[f.info.key], names) << f.info.key;
+		}
 	}
 	EXPECT_EQ(documented.size(), fields.size());
 }

@@ -1,7 +1,7 @@
 // Writing one section into a person's ini: values replaced in place, new
 // keys at the section's end, every comment and other section kept.
 #include <omnirange/core/Rangefinder.h>
-#include <omnirange/io/IniSectionWriter.h>
+#include <omnirange/config/IniSectionWriter.h>
 
 #include <gtest/gtest.h>
 
@@ -32,6 +32,14 @@ TEST(IniSectionWriter, ReplacesInPlaceAddsAtTheSectionsEndAndKeepsTheRest)
 	EXPECT_EQ(read(path),
 			  "; my robot\n[experiment]\nname = x\nN = 99\n\n[rangefinder]\n; [px] filter\n  N = 10\n"
 			  "threshold = 0.01\nK = 4\n\n; the end of rangefinder\n[other]\nK = 7\n");
+}
+
+TEST(IniSectionWriter, AFileWithCrlfLineEndsKeepsThemOnEveryLine)
+{
+	const std::string path = tmp("crlf.ini");
+	std::ofstream(path, std::ios::binary) << "; mine\r\n[rangefinder]\r\nN = 20\r\n\r\n[other]\r\nK = 7\r\n";
+	writeIniSection(path, "rangefinder", {{"N", "10"}, {"K", "4"}});
+	EXPECT_EQ(read(path), "; mine\r\n[rangefinder]\r\nN = 10\r\nK = 4\r\n\r\n[other]\r\nK = 7\r\n");
 }
 
 TEST(IniSectionWriter, AppendsAMissingSectionAndCreatesAMissingFile)

@@ -1,6 +1,6 @@
 // An ini over a base: the file's keys replace the base's, bases chain, and a
 // missing base or a cycle is an error that names the file.
-#include <omnirange/io/LayeredIni.h>
+#include <omnirange/config/LayeredIni.h>
 
 #include <gtest/gtest.h>
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 using namespace omnirange;
@@ -44,10 +45,21 @@ TEST(OptionsTable, ValuesAreParsedStrictly)
 
 TEST(OptionsTable, ImpossibleValuesNameTheUsersSection)
 {
-	EXPECT_NE(loadError("N = 0").find("[rangefinder] N (false-positive filter)"), std::string::npos);
-	EXPECT_NE(loadError("N = 2147483647").find("N (false-positive filter) must be within"), std::string::npos);
+	EXPECT_NE(loadError("N = 0").find("[rangefinder] N = '0': must be within [1, 10000] px"), std::string::npos);
+	EXPECT_NE(loadError("N = 2147483647").find("N = '2147483647': must be within [1, 10000] px"), std::string::npos);
 	EXPECT_NE(loadError("outlier_max_width = 2147483647").find("outlier_max_width"), std::string::npos);
-	EXPECT_NE(loadError("scanlines = 1000000000").find("scanlines must be within"), std::string::npos);
+	EXPECT_NE(loadError("scanlines = 1000000000").find("scanlines = '1000000000': must be within [2, 36000]"),
+			  std::string::npos);
+	// Ranges with an open end, and a list's every element.
+	EXPECT_NE(loadError("wall_fit_tolerance = 0").find("must be within (0, 100] sigma"), std::string::npos);
+	EXPECT_NE(loadError("exposure_deadband = 1").find("must be within [0, 1)"), std::string::npos);
+	EXPECT_NE(loadError("edge_bias = 0.1 0.6").find("edge_bias = '0.1 0.6': must be within [-0.5, 0.5] m"),
+			  std::string::npos);
+	EXPECT_EQ(loadError("exposure_deadband = 0\nwall_fit_tolerance = 100\nedge_bias = -0.5 0.5"), "");
+	// Keys whose nonsense was once taken: a turn of 1e308 degrees, a float's max range overflowing.
+	EXPECT_NE(loadError("forward_azimuth_deg = 1e308").find("must be within [-360, 360] deg"), std::string::npos);
+	EXPECT_NE(loadError("max_range = 1e308").find("must be within (0, 1000] m"), std::string::npos);
+	EXPECT_NE(loadError("h = 1e308").find("must be within (0, 100] m"), std::string::npos);
 }
 
 TEST(OptionsTable, OldAndUnknownKeysAreNamed)
@@ -122,4 +134,32 @@ TEST(OptionsTable, AnUnknownSectionIsAnErrorNamingTheLine)
 	}
 	std::ofstream(path) << "[laser]\nfov_deg = 1\n";
 	EXPECT_NO_THROW(requireOnlySections(path, {"omnicam", "laser"}));
+}
+
+TEST(OptionsTable, KeysAreWrittenOnlyIntoAnIniEveryProgramReads)
+{
+	const std::string path = (std::filesystem::temp_directory_path() / "omnirange_writable.ini").string();
+	const auto refusal = [&](const std::string& text) {
+		std::ofstream(path) << text;
+		try
+		{
+			RangefinderParams::requireWritable(path, "rangefinder");
+			return std::string();
+		}
+		catch (const std::runtime_error& e)
+		{
+			return std::string(e.what());
+		}
+	};
+	EXPECT_EQ(refusal("[rangefinder]\nthreshold = 0.1\n"), "");
+	EXPECT_EQ(refusal("[other]\nx = 1\n"), "");  // the section is about to be written
+	EXPECT_EQ(refusal("[rangefinder]\nR = 5000\n"), "");  // bounded by other keys (the image) only once whole
+	for (const std::string bad : {"thresold = 0.1", "threshold = 0,1", "N = 0"})
+	{
+		const std::string why = refusal("[rangefinder]\n" + bad + "\n");
+		EXPECT_EQ(why.rfind(path + ": ", 0), 0u) << why;
+		EXPECT_NE(why.find(bad.substr(0, bad.find(' '))), std::string::npos) << why;
+	}
+	std::filesystem::remove(path);
+	EXPECT_NO_THROW(RangefinderParams::requireWritable(path, "rangefinder"));  // a new file
 }

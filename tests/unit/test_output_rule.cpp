@@ -2,7 +2,7 @@
 // before, never an input or a folder or file of anyone else's (unless
 // --force, and then never an input); a multi-file output commits all or
 // nothing, and what a killed run left is cleared by the next.
-#include <omnirange/io/AtomicWrite.h>
+#include <omnirange/config/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 

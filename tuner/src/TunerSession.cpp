@@ -1,8 +1,8 @@
 #include "omnirange_tuner/TunerSession.h"
 
-#include <omnirange/io/IniSectionWriter.h>
+#include <omnirange/config/IniSectionWriter.h>
 #include <omnirange/io/ObservationImage.h>
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 #include <omnirange/io/Progress.h>
 #include <omnirange/io/RawlogProcessor.h>
 
@@ -197,7 +197,9 @@ void TunerSession::saveIni(const std::string& ini)
 {
 	std::vector<std::pair<std::string, std::string>> values;
 	for (const auto& f : RangefinderParams::table().fields()) values.emplace_back(f.info.key, f.print(params_));
-	writeIniSection(ini.empty() ? o_.ini : ini, o_.section, values, RangefinderParams::table().comments());
+	const std::string target = ini.empty() ? o_.ini : ini;
+	RangefinderParams::requireWritable(target, o_.section);  // the file may have changed since the start
+	writeIniSection(target, o_.section, values, RangefinderParams::table().comments());
 	saved_ = params_;
 }
 

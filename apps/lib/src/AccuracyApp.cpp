@@ -4,7 +4,7 @@
 
 #include <omnirange_eval/Figures.h>
 
-#include <omnirange/io/AtomicWrite.h>
+#include <omnirange/config/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
 
 #include <filesystem>

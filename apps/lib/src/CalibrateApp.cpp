@@ -2,13 +2,13 @@
 
 #include "omnirange_apps/CommandLine.h"
 
-#include <omnirange/io/AtomicWrite.h>
+#include <omnirange/config/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
-#include <omnirange/io/IniSectionWriter.h>
-#include <omnirange/io/LayeredIni.h>
+#include <omnirange/config/IniSectionWriter.h>
+#include <omnirange/config/LayeredIni.h>
 #include <omnirange/io/ObservationImage.h>
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 #include <omnirange/io/Progress.h>
 
 #include <algorithm>
@@ -51,7 +51,11 @@ void addImagesOf(const std::string& dir, std::vector<std::string>& files)
 	if (!fs::is_directory(dir)) throw std::runtime_error("--checkerboard-dir: no folder '" + dir + "'");
 	std::vector<std::string> found;
 	for (const auto& e : fs::directory_iterator(dir))
-		if (isImageFileName(e.path().string()) && e.is_regular_file()) found.push_back(e.path().string());
+		if (isImageFileName(e.path().string()))
+		{
+			requireRegularFile(e.path().string(), "checkerboard image");  // a FIFO would block; said, not skipped
+			found.push_back(e.path().string());
+		}
 	if (found.empty()) throw std::runtime_error("--checkerboard-dir: no image in '" + dir + "'");
 	std::sort(found.begin(), found.end());
 	files.insert(files.end(), found.begin(), found.end());
@@ -123,6 +127,7 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 		for (const auto& base : iniBasesOf(o_.ini)) inputs.push_back(base);
 	requireOutputsAllowed({{o_.save_to, OutputKind::Ini}, {o_.intrinsics_output, OutputKind::Text, kOpenCvYamlBegins}},
 						  "omnirange-calibrate", inputs);
+	if (!o_.save_to.empty()) RangefinderParams::requireWritable(o_.save_to, o_.section);
 }
 
 MirrorCalibration CalibrateApp::run()
@@ -196,7 +201,8 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 							   " inner corners found")
 								  .c_str(),
 					i.used ? (", reprojection " + std::to_string(i.rms).substr(0, 5) + " px").c_str()
-						   : (i.found ? ", not used: cv::omnidir could not start its fit from it" : ""));
+					: !i.same_view_as.empty() ? (", not used: the board lies as in " + i.same_view_as).c_str()
+					: (i.found ? ", not used: cv::omnidir could not start its fit from it" : ""));
 	std::printf("boards found in %d of %zu images, %d used; RMS reprojection error %.3f px\n", c.found(),
 				c.images.size(), c.used(), c.rms);
 	std::printf("fx %.2f  fy %.2f  skew %.3f  cx %.2f  cy %.2f px;  xi %.4f;  k1 %.4f  k2 %.4f  p1 %.5f  p2 %.5f\n",
@@ -224,13 +230,25 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 						 " px when a group of boards is left out (over " + formatDouble(kMaxCentreSpread) +
 						 " px): the boards do not pin it down; add boards spread around the mirror");
 	requireSure(doubts);
-	if (!o_.intrinsics_output.empty()) writeFileAtomically(o_.intrinsics_output, c.yaml());
+	// Both outputs or neither: the model is checked first, the YAML is staged
+	// and renamed into place only once the ini has its keys.
+	const CameraParams cam = meiCamera(c);
 	if (!o_.save_to.empty())
-	{
-		const CameraParams cam = meiCamera(c);
-		OmniCameraModel{cam};  // refuses a model whose radius does not grow up to the horizon
+		try
+		{
+			OmniCameraModel{cam};  // refuses a model whose radius does not grow up to the horizon
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw std::runtime_error("the checkerboards' calibration is no camera the rangefinder takes (" +
+									 std::string(e.what()) + "); nothing saved");
+		}
+	std::optional<StagedFile> yaml;
+	if (!o_.intrinsics_output.empty())
+		yaml.emplace(o_.intrinsics_output, [&](const std::string& tmp) { writeFileAtomically(tmp, c.yaml()); });
+	if (!o_.save_to.empty())
 		saveCameraKeys(o_.save_to, o_.section, cam, {"xi", "gamma", "aspect", "skew", "k1", "k2", "p1", "p2"});
-	}
+	if (yaml) yaml->commit();
 	return c;
 }
 

@@ -3,7 +3,7 @@
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/io/MemoryLimit.h>
 #include <omnirange/io/OutputRule.h>
-#include <omnirange/io/Temporaries.h>
+#include <omnirange/config/Temporaries.h>
 
 
 #include <opencv2/core.hpp>

@@ -5,7 +5,7 @@
 #include <omnirange/io/RawlogWriter.h>
 
 #include <omnirange/core/Rangefinder.h>
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <cmath>
 #include <sstream>

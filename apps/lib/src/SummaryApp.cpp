@@ -4,8 +4,8 @@
 
 #include <omnirange_eval/Summary.h>
 
-#include <omnirange/io/AtomicWrite.h>
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/OptionsTable.h>
 #include <omnirange/io/OutputRule.h>
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 // exclusions counted, and every pair for a CSV.
 
 #include <omnirange/io/ObservationPairer.h>
-#include <omnirange/io/SensorLabels.h>
+#include <omnirange/config/SensorLabels.h>
 #include <omnirange/train/LaserComparison.h>
 #include <omnirange_eval/TruthComparison.h>
 

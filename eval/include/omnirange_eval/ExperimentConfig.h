@@ -4,7 +4,7 @@
 
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/train/HistogramTrainer.h>
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <array>
 #include <string>

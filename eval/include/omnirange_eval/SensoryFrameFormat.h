@@ -5,7 +5,7 @@
 // actions' increments. Each odometry reading starts a new frame; the frame
 // holds the observations that follow it. The images stay where they are (a link).
 
-#include <omnirange/io/SensorLabels.h>
+#include <omnirange/config/SensorLabels.h>
 
 #include <string>
 

@@ -3,7 +3,7 @@
 // motion. Read from a robot ini (ini/robot-omnip2dx.ini documents every key).
 
 #include <omnirange/core/CameraModel.h>
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 #include <omnirange_sim/CameraEffects.h>
 
 #include <mrpt/poses/CPose3D.h>

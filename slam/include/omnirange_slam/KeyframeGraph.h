@@ -8,7 +8,7 @@
 // (the correction the paper names and never built).
 // docs/method.md ("Closing loops") has the why and the limits.
 
-#include <omnirange/io/OptionsTable.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/graphs/CNetworkOfPoses.h>

@@ -1,0 +1,146 @@
+#include "omnirange/config/AtomicWrite.h"
+
+#include "omnirange/config/Temporaries.h"
+
+#include <fcntl.h>
+#include <opencv2/imgcodecs.hpp>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+namespace omnirange
+{
+std::string replacedFileOf(const std::string& given)
+{
+	namespace fs = std::filesystem;
+	std::error_code ec;
+	const std::string path = fs::is_symlink(given, ec) ? fs::weakly_canonical(given, ec).string() : given;
+	if (fs::is_regular_file(path, ec))
+	{
+		const auto mode = fs::status(path, ec).permissions();
+		if (::access(path.c_str(), W_OK) != 0 || (mode & fs::perms::owner_write) == fs::perms::none)
+			throw std::runtime_error("'" + given + "' is read-only: refusing to replace it");
+	}
+	return path;
+}
+
+void keepModeOf(const std::string& target, const std::string& tmp)
+{
+	namespace fs = std::filesystem;
+	std::error_code ec;
+	if (fs::is_regular_file(target, ec)) fs::permissions(tmp, fs::status(target, ec).permissions());
+}
+
+StagedFile::StagedFile(const std::string& given, const std::function<void(const std::string&)>& write)
+	: path_(replacedFileOf(given)), tmp_(path_ + ".tmp-" + std::to_string(static_cast<long>(::getpid())))
+{
+	temporaries::add(tmp_);
+	try
+	{
+		write(tmp_);
+		keepModeOf(path_, tmp_);
+		syncToDisk(tmp_, path_);
+	}
+	catch (...)
+	{
+		std::remove(tmp_.c_str());
+		temporaries::forget(tmp_);
+		throw;
+	}
+}
+
+StagedFile::~StagedFile()
+{
+	if (committed_) return;
+	std::remove(tmp_.c_str());
+	temporaries::forget(tmp_);
+}
+
+void StagedFile::commit()
+{
+	if (committed_) return;
+	committed_ = true;
+	temporaries::forget(tmp_);
+	if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
+	{
+		std::remove(tmp_.c_str());
+		throw std::runtime_error("cannot rename temporary file to '" + path_ + "'");
+	}
+}
+
+void writeAtomically(
+	const std::string& given, const std::function<void(const std::string&)>& write)
+{
+	StagedFile(given, write).commit();
+}
+
+void syncToDisk(const std::string& path, const std::string& what)
+{
+	const int fd = ::open(path.c_str(), O_RDONLY);
+	const bool ok = fd >= 0 && ::fsync(fd) == 0;
+	if (fd >= 0) ::close(fd);
+	if (!ok) throw std::runtime_error("cannot write '" + what + "' to disk: " + std::strerror(errno));
+}
+
+void requireWholeGzipFile(const std::string& path, const std::string& what)
+{
+	gzFile f = ::gzopen(path.c_str(), "rb");
+	if (!f) throw std::runtime_error("cannot read back '" + what + "'");
+	std::vector<char> buf(1 << 16);
+	int n = 0;
+	while ((n = ::gzread(f, buf.data(), static_cast<unsigned>(buf.size()))) > 0)
+	{
+	}
+	int err = Z_OK;
+	::gzerror(f, &err);
+	const bool closed = ::gzclose_r(f) == Z_OK;
+	const bool whole = n == 0 && (err == Z_OK || err == Z_STREAM_END) && closed;
+	if (!whole) throw std::runtime_error("'" + what + "' did not reach the disk whole (is the disk full?)");
+}
+
+namespace
+{
+std::function<void(const std::string&)> writerOf(const std::string& path, const std::string& bytes)
+{
+	return [&path, &bytes](const std::string& tmp) {
+		std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+		if (!f) throw std::runtime_error("cannot write '" + path + "'");
+		f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+		f.close();
+		if (!f) throw std::runtime_error("error while writing '" + path + "'");
+	};
+}
+
+std::string encoded(const std::string& path, const cv::Mat& image)
+{
+	const auto dot = path.rfind('.');
+	std::vector<uchar> buf;
+	if (dot == std::string::npos || !cv::imencode(path.substr(dot), image, buf))
+		throw std::runtime_error("cannot encode image '" + path + "'");
+	return std::string(buf.begin(), buf.end());
+}
+}  // namespace
+
+void writeFileAtomically(const std::string& path, const std::string& bytes)
+{
+	writeAtomically(path, writerOf(path, bytes));
+}
+
+void writeImageAtomically(const std::string& path, const cv::Mat& image)
+{
+	writeFileAtomically(path, encoded(path, image));
+}
+
+StagedFile stageImage(const std::string& path, const cv::Mat& image)
+{
+	const std::string bytes = encoded(path, image);
+	return StagedFile(path, writerOf(path, bytes));
+}
+}  // namespace omnirange

@@ -1,0 +1,151 @@
+#include "omnirange/config/Temporaries.h"
+
+#include <pthread.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <csignal>
+#include <filesystem>
+#include <mutex>
+#include <set>
+#include <thread>
+
+namespace omnirange::temporaries
+{
+namespace
+{
+// Never destroyed: the exit() handler below may run after the statics'
+// destructors would have.
+std::mutex& lock()
+{
+	static auto* m = new std::mutex;
+	return *m;
+}
+std::set<std::string>& paths()
+{
+	static auto* p = new std::set<std::string>;
+	return *p;
+}
+std::atomic<pid_t> child{0};
+std::atomic<bool> interrupting{false};
+std::string& program()
+{
+	static auto* p = new std::string;
+	return *p;
+}
+std::string& activity()
+{
+	static auto* a = new std::string;
+	return *a;
+}
+
+/** Other threads may still be adding files (a folder is not empty when its
+ * last entry goes): try again a few times. */
+void removeWhileOthersWrite(const std::string& p)
+{
+	std::error_code ec;
+	for (int attempt = 0; attempt < 20 && std::filesystem::exists(p, ec); ++attempt) std::filesystem::remove_all(p, ec);
+}
+
+/** With the lock held: removes every remembered path. */
+void removeAllHeld()
+{
+	for (const auto& p : paths()) removeWhileOthersWrite(p);
+	paths().clear();
+}
+
+void atExit()
+{
+	// Another thread may hold the lock while exit() runs: do not wait for it long.
+	std::unique_lock<std::mutex> g(lock(), std::defer_lock);
+	for (int i = 0; i < 100 && !g.try_lock(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+	if (!g.owns_lock() || paths().empty()) return;  // a normal exit: everything was committed or removed
+	removeAllHeld();
+	std::fprintf(stderr, "%s: error: ended by a library (its message is above) while %s; its unfinished outputs were removed\n",
+				 program().c_str(), activity().empty() ? "running" : activity().c_str());
+}
+}  // namespace
+
+void add(const std::string& path)
+{
+	const std::lock_guard<std::mutex> g(lock());
+	paths().insert(path);
+}
+
+void forget(const std::string& path)
+{
+	const std::lock_guard<std::mutex> g(lock());
+	paths().erase(path);
+}
+
+void setChild(int pid) { child.store(pid); }
+
+void removeAtExit(const std::string& name)
+{
+	program() = name;
+	static const bool registered = (std::atexit(atExit), true);
+	(void)registered;
+}
+
+void setActivity(const std::string& what)
+{
+	const std::lock_guard<std::mutex> g(lock());
+	activity() = what;
+}
+
+std::string currentActivity()
+{
+	const std::lock_guard<std::mutex> g(lock());
+	return activity();
+}
+
+void removeAll()
+{
+	const std::lock_guard<std::mutex> g(lock());
+	removeAllHeld();
+}
+
+void removeOnInterrupt()
+{
+	// The signals are blocked in every thread (threads started later inherit
+	// the mask) and taken by one thread of ours with sigwait(): the cleanup
+	// then runs as ordinary code, not inside a signal handler that may have
+	// interrupted malloc.
+	sigset_t set;
+	sigemptyset(&set);
+	sigaddset(&set, SIGINT);
+	sigaddset(&set, SIGTERM);
+	if (pthread_sigmask(SIG_BLOCK, &set, nullptr) != 0) return;
+	std::thread([set] {
+		int sig = 0;
+		if (sigwait(&set, &sig) != 0) return;
+		interrupting.store(true);
+		// A program still writing into a temporary folder ends first.
+		if (const pid_t c = child.load(); c > 0)
+		{
+			::kill(c, SIGTERM);
+			::waitpid(c, nullptr, 0);
+		}
+		removeAll();
+		// End the way the signal would have ended the run.
+		std::signal(sig, SIG_DFL);
+		sigset_t one;
+		sigemptyset(&one);
+		sigaddset(&one, sig);
+		pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
+		std::raise(sig);
+	}).detach();
+}
+
+bool interrupted() { return interrupting.load(); }
+
+void waitForInterrupt()
+{
+	for (;;) ::pause();
+}
+
+}  // namespace omnirange::temporaries

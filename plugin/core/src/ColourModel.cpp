@@ -1,0 +1,63 @@
+#include "omnirange/core/ColourModel.h"
+
+#include "omnirange/config/AtomicWrite.h"
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace omnirange
+{
+ColourModel::ColourModel(ColourHistogram floor_histogram, ColourHistogram obstacle_histogram)
+	: floor(std::move(floor_histogram)), obstacles(std::move(obstacle_histogram))
+{
+	if (obstacles.space() != floor.space() || obstacles.binsPerChannel() != floor.binsPerChannel())
+		throw std::invalid_argument("the floor and obstacle histograms differ in colour space or bins");
+}
+
+namespace
+{
+constexpr char kReferenceTag[8] = {'O', 'M', 'N', 'I', 'R', 'E', 'F', '1'};
+}
+
+void ColourModel::save(const std::string& path) const
+{
+	std::string bytes = floor.serialize() + (hasObstacles() ? obstacles.serialize() : std::string());
+	if (hasReference())
+	{
+		bytes.append(kReferenceTag, sizeof(kReferenceTag));
+		for (double v : reference) bytes.append(reinterpret_cast<const char*>(&v), sizeof v);  // little-endian hosts
+	}
+	writeFileAtomically(path, bytes);
+}
+
+ColourModel ColourModel::load(const std::string& path)
+{
+	// Only regular files: a device or a pipe would be read without end.
+	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open histogram file '" + path + "'");
+	std::ifstream f(path, std::ios::binary);
+	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "'");
+	std::ostringstream ss;
+	ss << f.rdbuf();
+	const std::string bytes = ss.str();
+	std::size_t at = ColourHistogram::serializedSize(bytes, path);
+	ColourModel m(ColourHistogram::deserialize(bytes.substr(0, at), path));
+	const auto starts = [&](const char* tag) { return bytes.compare(at, 8, tag, 8) == 0; };
+	if (at < bytes.size() && starts("OMNIHIST"))
+	{
+		const std::size_t n = ColourHistogram::serializedSize(bytes.substr(at), path);
+		m = ColourModel(std::move(m.floor), ColourHistogram::deserialize(bytes.substr(at, n), path + " (obstacles)"));
+		at += n;
+	}
+	if (at < bytes.size())
+	{
+		if (!starts(kReferenceTag) || bytes.size() != at + 8 + 3 * sizeof(double))
+			throw std::runtime_error("histogram file '" + path + "': unreadable data after the histograms");
+		for (int c = 0; c < 3; ++c) std::memcpy(&m.reference[c], bytes.data() + at + 8 + c * sizeof(double), sizeof(double));
+	}
+	return m;
+}
+
+}  // namespace omnirange

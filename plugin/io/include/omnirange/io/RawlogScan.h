@@ -1,0 +1,55 @@
+#pragma once
+// omnirange-scan's job as a library function: stream a rawlog, add a range
+// scan right after every omnicam image, write the result atomically. Images
+// are decoded and scanned on several threads in batches, so memory does not
+// grow with the rawlog's length.
+
+#include <omnirange/core/Rangefinder.h>
+#include <omnirange/config/SensorLabels.h>
+
+#include <string>
+#include <vector>
+
+namespace omnirange
+{
+/** The program whose outputs (a rawlog, its images) these are (OutputRule.h). */
+inline constexpr char kScanProgram[] = "omnirange-scan";
+
+class Progress;
+
+struct RawlogScanOptions
+{
+	std::string input;  ///< rawlog with the images
+	std::string output;  ///< rawlog to write (not the input)
+	std::string omni_label{kOmnicamLabel};  ///< label of the images to scan
+	int threads{2};  ///< threads decoding and scanning
+	/** Read and decode only: no scan, nothing written (the baseline the
+	 * benchmark compares against). */
+	bool decode_only{false};
+	/** A missing, cut or undecodable image is skipped (no scan for it, counted
+	 * in the summary and named in `skipped_names`) instead of stopping the run. */
+	bool skip_bad_images{false};
+	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; OutputRule.h). */
+	bool force{false};
+};
+
+struct RawlogScanSummary
+{
+	std::size_t images{0};  ///< images scanned (or decoded)
+	std::size_t objects{0};  ///< objects written
+	std::size_t rays{0}, hits{0};  ///< rays produced, and of them valid
+	/** Of the rays, those without a hit: free to the max range (no_hit), ended
+	 * at once or inside min range (too_close), rejected by the outlier filter. */
+	std::size_t no_hit{0}, too_close{0}, outliers{0};
+	std::size_t skipped{0};  ///< bad images skipped (skip_bad_images only)
+	std::vector<std::string> skipped_reasons;  ///< why, one line per skipped image
+};
+
+/** In the observations-only format each scan is written right after its
+ * image; in the actions/sensory-frames format it goes into the image's frame,
+ * so the output keeps the input's format. Throws std::runtime_error naming
+ * the file or image on any bad input; the output then does not exist. `progress` counts the objects read. */
+RawlogScanSummary scanRawlog(const Rangefinder& rangefinder, const RawlogScanOptions& options,
+							 Progress* progress = nullptr);
+
+}  // namespace omnirange

@@ -1,0 +1,18 @@
+#pragma once
+// A JPEG decoded with libjpeg directly, so that its warnings are heard: a
+// JPEG whose coded data is cut or damaged in the middle still ends with its
+// end-of-image marker, and libjpeg then fills the rest with grey and only
+// prints "Corrupt JPEG data" on stderr, which OpenCV's imdecode lets pass.
+
+#include <opencv2/core.hpp>
+
+#include <string>
+
+namespace omnirange
+{
+/** Decodes the JPEG `bytes` into 8-bit BGR, or grey if `grey`. Returns why
+ * its data is damaged ("Corrupt JPEG data: premature end of data segment"),
+ * or "" with `image` set; leaves `image` empty where OpenCV must decode it
+ * (CMYK, or an Exif orientation OpenCV applies) after this check passed. */
+std::string decodeJpeg(const unsigned char* bytes, std::size_t size, bool grey, cv::Mat& image);
+}  // namespace omnirange

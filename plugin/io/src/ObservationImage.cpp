@@ -1,0 +1,182 @@
+#include "omnirange/io/ObservationImage.h"
+
+#include "JpegDecoder.h"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string_view>
+#include <vector>
+#include <stdexcept>
+
+namespace omnirange
+{
+namespace
+{
+using Bytes = std::string_view;
+
+unsigned be16(Bytes b, std::size_t at) { return (static_cast<unsigned char>(b[at]) << 8) | static_cast<unsigned char>(b[at + 1]); }
+unsigned long be32(Bytes b, std::size_t at) { return (static_cast<unsigned long>(be16(b, at)) << 16) | be16(b, at + 2); }
+
+/** A JPEG's size from its frame header, walking the markers; whether its
+ * entropy-coded data reaches the end-of-image marker. Bytes after that
+ * marker (a camera's trailer) are allowed. Returns why it is not whole, or "". */
+std::string jpegProblem(Bytes b, unsigned long& width, unsigned long& height)
+{
+	std::size_t at = 2;
+	while (at + 4 <= b.size())
+	{
+		if (static_cast<unsigned char>(b[at]) != 0xFF) return "not a JPEG: no marker at byte " + std::to_string(at);
+		const unsigned char m = static_cast<unsigned char>(b[at + 1]);
+		if (m == 0xFF) { ++at; continue; }  // fill byte
+		if (m == 0xD9) return "";  // end of image before any scan: nothing to decode, imdecode says so
+		const std::size_t length = be16(b, at + 2);
+		if (length < 2 || at + 2 + length > b.size()) return "truncated: a JPEG segment runs past the file's end";
+		const bool frame = m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC;
+		if (frame && length >= 7) height = be16(b, at + 5), width = be16(b, at + 7);
+		if (m == 0xDA)  // start of scan: in the coded data 0xFF is followed by 0 or a restart, so this is the end
+			return b.find("\xFF\xD9", at + 2 + length) == std::string::npos ? "truncated: no JPEG end-of-image marker" : "";
+		at += 2 + length;
+	}
+	return "truncated: no JPEG end-of-image marker";
+}
+
+unsigned long le32(Bytes b, std::size_t at)
+{
+	unsigned long v = 0;
+	for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(b[at + i]);
+	return v;
+}
+
+/** A PGM's, PPM's or PBM's size from its header ("P5 # comment\n W H MAX\n");
+ * false if it is not one. For the binary grey and colour kinds (P5, P6),
+ * `cut` says whether the pixels the header promises run past the file's end. */
+bool pnmSize(Bytes b, unsigned long& width, unsigned long& height, bool& cut)
+{
+	if (b.size() < 3 || b[0] != 'P' || b[1] < '1' || b[1] > '6') return false;
+	const bool binary = b[1] == '5' || b[1] == '6';
+	std::size_t at = 2;
+	unsigned long values[3] = {0, 0, 0};  // width, height, maximum (none for P1, P4)
+	const int count = (b[1] == '1' || b[1] == '4') ? 2 : 3;
+	for (int k = 0; k < count; ++k)
+	{
+		while (at < b.size() && (std::isspace(static_cast<unsigned char>(b[at])) || b[at] == '#'))
+			if (b[at] == '#') at = b.find('\n', at) == std::string::npos ? b.size() : b.find('\n', at);
+			else ++at;
+		if (at >= b.size() || !std::isdigit(static_cast<unsigned char>(b[at]))) return false;
+		for (; at < b.size() && std::isdigit(static_cast<unsigned char>(b[at])) && values[k] < 1000000000UL; ++at)
+			values[k] = values[k] * 10 + static_cast<unsigned long>(b[at] - '0');
+	}
+	width = values[0], height = values[1];
+	const unsigned long per_pixel = (b[1] == '6' ? 3 : 1) * (values[2] > 255 ? 2 : 1);
+	cut = binary && b.size() < at + 1 + width * height * per_pixel;  // one blank after the maximum
+	return true;
+}
+
+/** Why the bytes of an image file cannot be decoded whole (cut, or too many
+ * pixels to decode), or "". A cut file would otherwise decode with grey rows
+ * and only a libjpeg warning; a huge one would take minutes and gigabytes. */
+std::string imageProblem(Bytes b)
+{
+	unsigned long width = 0, height = 0;
+	std::string why;
+	if (b.size() >= 2 && static_cast<unsigned char>(b[0]) == 0xFF && static_cast<unsigned char>(b[1]) == 0xD8)
+		why = jpegProblem(b, width, height);
+	else if (b.size() >= 24 && b.substr(1, 3) == "PNG")
+	{
+		width = be32(b, 16), height = be32(b, 20);
+		const std::size_t from = b.size() > 16 ? b.size() - 16 : 0;
+		if (b.find("IEND", from) == std::string::npos) why = "truncated: no PNG end chunk";
+	}
+	else if (b.size() >= 26 && b.substr(0, 2) == "BM")
+	{
+		width = le32(b, 18);
+		const long h = static_cast<std::int32_t>(le32(b, 22));  // negative: stored top-down
+		height = static_cast<unsigned long>(h < 0 ? -h : h);
+	}
+	else if (bool cut = false; pnmSize(b, width, height, cut))
+	{
+		if (cut && width * height <= kMaxImagePixels) why = "truncated: fewer pixels than its header says";
+	}
+	// "P5" and a blank: a PGM or PPM whose size is not two whole numbers (OpenCV would print its own lines).
+	else if (b.size() >= 3 && b[0] == 'P' && b[1] >= '1' && b[1] <= '6' && std::isspace(static_cast<unsigned char>(b[2])))
+		why = "malformed: its PGM/PPM header does not give a width and a height";
+	if (why.empty() && width * height > kMaxImagePixels)
+		why = std::to_string(width) + "x" + std::to_string(height) + ": more than " +
+			  std::to_string(kMaxImagePixels / 1000000) + " megapixels";
+	return why;
+}
+}  // namespace
+
+bool isImageFileName(const std::string& file)
+{
+	std::string ext = std::filesystem::path(file).extension().string();
+	for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+	for (const char* kind : {".jpg", ".jpeg", ".png", ".pgm", ".ppm", ".bmp"})
+		if (ext == kind) return true;
+	return false;
+}
+
+cv::Mat decodeImageFile(const std::string& file, const std::string& label, int flags)
+{
+	const std::string what = "image '" + file + "'" + (label.empty() ? "" : " of " + label);
+	if (!std::filesystem::is_regular_file(file))  // a FIFO or a device would block or never end
+		throw std::runtime_error(what + (std::filesystem::exists(file) ? " is not a regular file" : " is missing"));
+	std::ifstream f(file, std::ios::binary | std::ios::ate);
+	std::vector<unsigned char> bytes(f ? static_cast<std::size_t>(f.tellg()) : 0);
+	f.seekg(0);
+	if (!f || !f.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
+		throw std::runtime_error(what + " is unreadable");
+	if (bytes.empty()) throw std::runtime_error(what + " is empty");
+	if (const std::string why = imageProblem(Bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+		!why.empty())
+		throw std::runtime_error(what + " is " + why);
+	cv::Mat image;
+	if (bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8 &&
+		(flags == cv::IMREAD_COLOR || flags == cv::IMREAD_GRAYSCALE))
+		if (const std::string why = decodeJpeg(bytes.data(), bytes.size(), flags == cv::IMREAD_GRAYSCALE, image);
+			!why.empty())
+			throw std::runtime_error(what + " is damaged: " + why);
+	if (image.empty()) image = cv::imdecode(bytes, flags);
+	if (image.empty()) throw std::runtime_error(what + " cannot be decoded: damaged, or not an image of its kind");
+	return image;
+}
+
+cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
+{
+	cv::Mat img;
+	if (obs.image.isExternallyStored())
+	{
+		// Read the file ourselves: CImage's lazy loading shares state between
+		// threads and reports a missing file with a stack trace.
+		return decodeImageFile(obs.image.getExternalStorageFileAbsolutePath(), obs.sensorLabel);
+	}
+	img = obs.image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+	if (img.empty()) throw std::runtime_error("an empty " + obs.sensorLabel + " image");
+	if (img.channels() == 1) cv::cvtColor(img, img, cv::COLOR_GRAY2BGR);
+	return img.clone();
+}
+
+cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& cam)
+{
+	cv::Mat img = decodeImage(obs);
+	requireCameraSize(img, obs, cam);
+	return img;
+}
+
+void requireCameraSize(const cv::Mat& img, const mrpt::obs::CObservationImage& obs, const CameraParams& cam)
+{
+	if (img.cols != cam.image_width || img.rows != cam.image_height)
+		throw std::runtime_error(
+			(obs.image.isExternallyStored() ? "image '" + obs.image.getExternalStorageFile() + "'"
+											: "an embedded " + obs.sensorLabel + " image") +
+			" is " + std::to_string(img.cols) + "x" +
+			std::to_string(img.rows) + " but the camera is " + std::to_string(cam.image_width) + "x" +
+			std::to_string(cam.image_height));
+}
+
+}  // namespace omnirange

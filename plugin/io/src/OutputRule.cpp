@@ -1,0 +1,389 @@
+#include "omnirange/io/OutputRule.h"
+
+#include "omnirange/config/AtomicWrite.h"
+#include "omnirange/config/LayeredIni.h"
+#include "omnirange/config/OptionsTable.h"
+#include "omnirange/io/RawlogWriter.h"
+#include "omnirange/config/Temporaries.h"
+
+#include <signal.h>
+#include <zlib.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace omnirange
+{
+std::string outputPath(const std::string& path)
+{
+	if (path.empty()) return path;
+	// Only trailing slashes and '.' go: "a/link/.." is where the link leads, so
+	// '..' is left for the system to resolve, as it will when the file is opened.
+	std::string p = path;
+	for (bool changed = true; changed;)
+	{
+		changed = false;
+		while (p.size() > 1 && p.back() == '/') p.pop_back(), changed = true;
+		if (p.size() > 2 && p.compare(p.size() - 2, 2, "/.") == 0) p.resize(p.size() - 2), changed = true;
+	}
+	return p;
+}
+
+namespace
+{
+std::string firstBytes(const std::string& path, std::size_t n)
+{
+	std::ifstream f(path, std::ios::binary);
+	std::string b(n, '\0');
+	f.read(b.data(), static_cast<std::streamsize>(n));
+	b.resize(static_cast<std::size_t>(f.gcount()));
+	return b;
+}
+
+bool isText(const std::string& bytes) { return bytes.find('\0') == std::string::npos; }
+
+/** The first `n` bytes of the gzip file `path`, uncompressed ("" if it is
+ * not one): an MRPT object's class name is in them. */
+std::string unzippedHead(const std::string& path, unsigned n)
+{
+	gzFile f = ::gzopen(path.c_str(), "rb");
+	if (!f) return "";
+	std::string b(n, '\0');
+	const int got = ::gzread(f, b.data(), n);
+	::gzclose_r(f);
+	b.resize(got > 0 ? static_cast<std::size_t>(got) : 0);
+	return b;
+}
+
+bool isIni(const std::string& path)
+{
+	const std::string head = firstBytes(path, 4096);
+	if (!isText(head)) return false;
+	std::ifstream f(path);
+	for (std::string line; std::getline(f, line);)
+	{
+		const std::string t = trimmed(line);
+		if (t.empty()) continue;
+		return t[0] == ';' || t[0] == '#' || t[0] == '[' || parseIniLine(t).kind == IniLine::Kind::Key;
+	}
+	return true;  // blank: nothing to lose
+}
+
+
+const char* kindName(OutputKind kind)
+{
+	switch (kind)
+	{
+		case OutputKind::Rawlog: return "a rawlog";
+		case OutputKind::GridMap: return "a grid map";
+		case OutputKind::Histogram: return "a colour model";
+		case OutputKind::Ini: return "an ini file";
+		case OutputKind::Text: return "a text file";
+		case OutputKind::Image: return "an image";
+		case OutputKind::Folder: return "a folder";
+	}
+	return "";
+}
+
+/** `path` as written, made absolute, without its "." parts; ".." is kept (through a link it is not the parent as written). */
+fs::path asWritten(const std::string& path)
+{
+	fs::path out;
+	for (const auto& part : fs::absolute(path))
+		if (part != "." && !part.empty()) out /= part;
+	return out;
+}
+
+/** `inner` is `outer` or lies somewhere below it. */
+bool within(const fs::path& inner, const fs::path& outer)
+{
+	auto i = inner.begin(), o = outer.begin();
+	for (; o != outer.end(); ++i, ++o)
+		if (i == inner.end() || *i != *o) return false;
+	return true;
+}
+
+/** The inputs and what each brings with it: an ini's bases (`base = FILE`,
+ * followed down the chain) and a rawlog's images folder (NAME_Images), which
+ * are read as surely as the file named. */
+std::vector<std::string> withWhatInputsBring(const std::vector<std::string>& inputs)
+{
+	std::vector<std::string> all;
+	std::error_code ec;
+	for (const auto& in : inputs)
+	{
+		if (in.empty()) continue;
+		all.push_back(in);
+		if (!fs::is_regular_file(in, ec)) continue;
+		if (isOfKind(in, OutputKind::Rawlog) || fs::path(in).extension() == ".rawlog")
+			all.push_back(imagesDirFor(in));
+		else if (isIni(in))
+			for (const auto& base : iniBasesOf(in)) all.push_back(base);
+	}
+	return all;
+}
+
+/** The same file or folder: by path through links, or by device and inode (a hard link). */
+bool same(const fs::path& a, const fs::path& b)
+{
+	std::error_code ec;
+	return a == b || (fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec));
+}
+
+void requireApartFromInputs(const std::string& output, OutputKind kind, const std::vector<std::string>& given)
+{
+	const std::vector<std::string> inputs = withWhatInputsBring(given);
+	std::error_code ec;
+	// A linked folder is replaced as a link (nothing it points to is lost); a
+	// linked file is written through, so the file it names is the output.
+	const fs::path abs = asWritten(output);
+	const bool link_itself = kind == OutputKind::Folder && fs::is_symlink(abs, ec);
+	const fs::path out = link_itself ? fs::weakly_canonical(abs.parent_path(), ec) / abs.filename()
+									 : fs::weakly_canonical(abs, ec);
+	for (const auto& in : inputs)
+	{
+		if (in.empty()) continue;
+		// A link that leads back to itself names no place: every path would seem inside it.
+		(void)fs::canonical(fs::absolute(outputPath(in)), ec);
+		if (ec == std::errc::too_many_symbolic_link_levels)
+			throw std::runtime_error("the input '" + in + "' is a link that leads back to itself");
+		const fs::path input = fs::weakly_canonical(fs::absolute(outputPath(in)), ec);
+		const fs::path input_as_written = asWritten(outputPath(in));
+		// A link replaced as a link is its own path, not the folder it names.
+		if ((link_itself ? out == input : same(out, input)) || input_as_written == abs)
+			throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
+		// Also as written: a folder that reaches an input through a link holds it too.
+		const bool holds_as_written = within(input_as_written, abs);
+		if (within(input, out) || holds_as_written)
+			throw std::runtime_error("the output '" + output + "' holds the input '" + in + "': refusing to replace it");
+		if (within(out, input))
+			throw std::runtime_error("the output '" + output + "' is inside the input '" + in + "': write it elsewhere");
+	}
+}
+}  // namespace
+
+void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, const std::string& program,
+						  const std::vector<std::string>& inputs, bool force, const std::string& begins_with)
+{
+	const std::string output = outputPath(output_as_given);
+	if (output.empty()) return;
+	requireApartFromInputs(output, kind, inputs);
+	// A file output's temporaries that killed runs left (a folder's are its
+	// writer's to recover: StagedFolder, RawlogWriter).
+	if (kind != OutputKind::Folder) recoverLeftoversOf(output, kind);
+	const fs::path p(output);
+	std::error_code ec;
+	// A link is the user's: replaced (not what it names) only when they say so.
+	if (kind == OutputKind::Folder && fs::is_symlink(p, ec))
+	{
+		if (force) return;
+		throw std::runtime_error("the output folder '" + output + "' is a symbolic link (remove it, or give another output)");
+	}
+	const auto status = fs::status(p, ec);  // through symlinks
+	// A link that names nothing would be replaced by a file: the link is the user's.
+	if (!fs::exists(status) && fs::is_symlink(p, ec))
+		throw std::runtime_error("the output '" + output + "' is a symbolic link to '" + fs::read_symlink(p, ec).string() +
+								 "', which does not exist (remove the link, or give another output)");
+	if (!fs::exists(status)) return;
+	const std::string hint = force ? "" : " (remove it, or give another output)";
+	if (kind == OutputKind::Folder)
+	{
+		if (!fs::is_directory(status))
+			throw std::runtime_error("the output folder '" + output + "' is a file" + (force ? "" : " (give another output)"));
+		if (force || fs::is_empty(p, ec)) return;
+		if (!isOutputFolderOf(output, program))
+			throw std::runtime_error("'" + output + "' is a folder " + program + " did not write (no " + kOutputMarker +
+									 " naming it)" + hint);
+		// The folder is the program's, but what a user put in it since is not.
+		if (const std::string added = firstUnlistedIn(output); !added.empty())
+			throw std::runtime_error("'" + (p / added).string() + "' is not something " + program +
+									 " wrote into its output '" + output + "' (move it out, or --force)");
+		return;
+	}
+	if (!fs::is_regular_file(status))
+		throw std::runtime_error("the output '" + output + "' exists and is not a file");
+	replacedFileOf(output);  // a read-only file is refused before any work, --force or not
+	if (!force && isOfKind(output, kind) && firstBytes(output, begins_with.size()) != begins_with)
+		throw std::runtime_error("'" + output + "' exists and is not what " + program + " writes there (it begins '" +
+								 begins_with.substr(0, begins_with.find('\n')) + "')" + hint);
+	if (force || isOfKind(output, kind)) return;
+	throw std::runtime_error("'" + output + "' exists and is not " + kindName(kind) + hint);
+}
+
+void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
+						   const std::vector<std::string>& inputs, bool force)
+{
+	// Two outputs in one place: the second would replace the first.
+	for (std::size_t i = 0; i < outputs.size(); ++i)
+		for (std::size_t j = i + 1; j < outputs.size(); ++j)
+		{
+			const std::string a = outputPath(outputs[i].path), b = outputPath(outputs[j].path);
+			if (a.empty() || b.empty()) continue;
+			std::error_code ec;
+			const fs::path pa = fs::weakly_canonical(fs::absolute(a), ec), pb = fs::weakly_canonical(fs::absolute(b), ec);
+			if (same(pa, pb) || within(pa, pb) || within(pb, pa))
+				throw std::runtime_error("the outputs '" + outputs[i].path + "' and '" + outputs[j].path +
+										 "' are in the same place: one would replace the other");
+		}
+	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
+}
+
+void replaceFolder(const std::string& target, const std::string& fresh)
+{
+	const std::string old = target + ".old-" + std::to_string(::getpid());
+	std::error_code ec;
+	const bool had_old = fs::exists(fs::symlink_status(target, ec));
+	if (had_old) fs::rename(target, old);
+	try
+	{
+		fs::rename(fresh, target);
+	}
+	catch (const std::exception& e)
+	{
+		if (had_old) fs::rename(old, target, ec);
+		throw std::runtime_error("cannot move '" + fresh + "' to '" + target + "' (" + e.what() + "); '" + target +
+								 "' is as it was");
+	}
+	if (had_old) fs::remove_all(old, ec);
+}
+
+void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::string& program)
+{
+	const fs::path t(target);
+	const fs::path dir = t.parent_path().empty() ? fs::path(".") : t.parent_path();
+	std::error_code ec;
+	if (!fs::is_directory(dir, ec)) return;
+	const std::string name = t.filename().string();
+	// Only what our runs leave: a folder holding the marker; a file of the
+	// output's kind, or empty (killed before it wrote). A user's file that
+	// merely has such a name is left alone.
+	const auto ours = [&](const fs::path& p) {
+		if (fs::is_directory(fs::symlink_status(p, ec)))
+			return program.empty() ? fs::exists(p / kOutputMarker, ec) : isOutputFolderOf(p.string(), program);
+		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
+			   (fs::file_size(p, ec) == 0 || isOfKind(p.string(), kind));
+	};
+	for (const auto& e : fs::directory_iterator(dir, ec))
+	{
+		const std::string other = e.path().filename().string();
+		for (const std::string suffix : {".staging-", ".tmp-", ".old-"})
+		{
+			if (other.rfind(name + suffix, 0) != 0) continue;
+			const std::string pid = other.substr(name.size() + suffix.size());
+			if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+			const long id = std::stol(pid);
+			if (id == ::getpid() || ::kill(static_cast<pid_t>(id), 0) == 0 || errno != ESRCH) continue;  // alive
+			if (!ours(e.path())) continue;
+			if (suffix == ".old-" && !fs::exists(fs::symlink_status(t, ec))) fs::rename(e.path(), t, ec);
+			else fs::remove_all(e.path(), ec);
+		}
+	}
+}
+
+StagedFolder::StagedFolder(const std::string& target, const std::string& program,
+						   const std::vector<std::string>& inputs, bool force)
+	: target_(target), staging_(target + ".staging-" + std::to_string(::getpid()))
+{
+	recoverLeftoversOf(target_, OutputKind::Folder, program);
+	requireOutputAllowed(target_, OutputKind::Folder, program, inputs, force);
+	fs::remove_all(staging_);
+	temporaries::add(staging_);
+	fs::create_directories(staging_);
+	markOutputFolder(staging_, program);
+}
+
+StagedFolder::~StagedFolder()
+{
+	if (done_) return;
+	temporaries::forget(staging_);
+	std::error_code ec;
+	fs::remove_all(staging_, ec);
+}
+
+void StagedFolder::commit()
+{
+	listOutputFolder(staging_);
+	temporaries::forget(staging_);
+	done_ = true;
+	replaceFolder(target_, staging_);
+}
+
+void StagedFolder::keep()
+{
+	temporaries::forget(staging_);
+	done_ = true;
+}
+
+namespace
+{
+/** Every file and link under `dir` but its marker, relative to it. */
+std::vector<std::string> filesIn(const std::string& dir)
+{
+	std::vector<std::string> files;
+	std::error_code walking, ec;
+	for (auto it = fs::recursive_directory_iterator(dir, walking); !walking && it != fs::recursive_directory_iterator();
+		 it.increment(walking))
+		if (it->is_symlink(ec) || !it->is_directory(ec))
+			if (std::string rel = fs::relative(it->path(), dir, ec).string(); rel != kOutputMarker) files.push_back(rel);
+	return files;
+}
+}  // namespace
+
+void listOutputFolder(const std::string& dir)
+{
+	const std::vector<std::string> files = filesIn(dir);
+	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
+	for (const auto& e : files) f << "file " << e << "\n";
+	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
+}
+
+std::string firstUnlistedIn(const std::string& dir)
+{
+	std::ifstream f(fs::path(dir) / kOutputMarker);
+	std::set<std::string> listed;
+	bool has_list = false;
+	for (std::string line; std::getline(f, line);)
+		if (line.rfind("file ", 0) == 0) listed.insert(line.substr(5)), has_list = true;
+	if (!has_list) return "";  // a marker from before the listing: nothing to compare
+	for (const auto& rel : filesIn(dir))
+		if (!listed.count(rel)) return rel;
+	return "";
+}
+
+void markOutputFolder(const std::string& dir, const std::string& program)
+{
+	std::ofstream f(fs::path(dir) / kOutputMarker);
+	f << program << "\n";
+	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
+}
+
+bool isOutputFolderOf(const std::string& dir, const std::string& program)
+{
+	std::ifstream f(fs::path(dir) / kOutputMarker);
+	std::string name;
+	return f && std::getline(f, name) && trimmed(name) == program;
+}
+
+bool isOfKind(const std::string& path, OutputKind kind)
+{
+	const std::string head = firstBytes(path, 8);
+	switch (kind)
+	{
+		case OutputKind::Rawlog: return head.size() >= 2 && head[0] == '\x1f' && head[1] == '\x8b';
+		case OutputKind::GridMap: return unzippedHead(path, 64).find("COccupancyGridMap2D") != std::string::npos;
+		case OutputKind::Histogram: return head == "OMNIHIST";
+		case OutputKind::Ini: return isIni(path);
+		case OutputKind::Text: return isText(firstBytes(path, 4096));
+		case OutputKind::Image: return head.rfind("\x89PNG", 0) == 0 || head.rfind("\xff\xd8\xff", 0) == 0;
+		case OutputKind::Folder: return false;
+	}
+	return false;
+}
+
+}  // namespace omnirange

@@ -1,0 +1,81 @@
+#include "omnirange/io/RawlogReader.h"
+
+#include "omnirange/io/RawlogWriter.h"
+#include "omnirange/config/Temporaries.h"
+
+#include <mrpt/img/CImage.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace omnirange
+{
+RawlogReader::RawlogReader(const std::string& path)
+	: path_(path), in_(std::make_unique<mrpt::io::CFileGZInputStream>())
+{
+	if (!std::filesystem::is_regular_file(path) || !in_->open(path))
+		throw std::runtime_error("cannot open rawlog '" + path + "'");
+	mrpt::img::CImage::setImagesPathBase(imagesDirFor(path));
+	temporaries::setActivity("reading rawlog '" + path + "'");
+}
+
+RawlogReader::~RawlogReader() = default;
+
+namespace
+{
+/** The informative line of an MRPT exception, whose text is a framed stack. */
+std::string gist(const std::exception& e)
+{
+	std::istringstream in(e.what());
+	std::string best;
+	for (std::string line; std::getline(in, line);)
+	{
+		if (line.find("Message:") != std::string::npos) return line.substr(line.find("Message:") + 8);
+		if (line.find("====") == std::string::npos && line.find(" at ") == std::string::npos &&
+			line.find_first_not_of(" \t") != std::string::npos && best.empty())
+			best = line;
+	}
+	return best.empty() ? "unreadable data" : best;
+}
+}  // namespace
+
+mrpt::serialization::CSerializable::Ptr RawlogReader::next()
+{
+	const auto before = in_->getPosition();
+	const auto fail = [&](const std::string& why) {
+		return std::runtime_error(
+			"rawlog '" + path_ + "' is truncated or corrupt after " + std::to_string(count_) +
+			" objects (" + why + ")");
+	};
+	mrpt::serialization::CSerializable::Ptr obj;
+	try
+	{
+		obj = mrpt::serialization::archiveFrom(*in_).ReadObject();
+	}
+	catch (const mrpt::serialization::CExceptionEOF&)
+	{
+		// Nothing at all read: the file ended between two objects.
+		if (in_->getPosition() == before) return nullptr;
+		throw fail("it ends inside an object");
+	}
+	catch (const std::bad_alloc&)
+	{
+		// MRPT sizes a string or vector from the file before reading it.
+		throw fail("a length in it asks for more memory than there is");
+	}
+	catch (const std::exception& e)
+	{
+		const std::string what = e.what();
+		if (what.find("EOF") != std::string::npos) throw fail("it ends inside an object");
+		throw fail(gist(e));
+	}
+	if (!obj) throw fail("a null object");
+	++count_;
+	return obj;
+}
+
+
+}  // namespace omnirange

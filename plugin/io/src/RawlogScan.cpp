@@ -1,0 +1,188 @@
+#include "omnirange/io/RawlogScan.h"
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include "omnirange/core/FloorAdaptation.h"
+#include "omnirange/config/AtomicWrite.h"
+#include "omnirange/io/ObservationImage.h"
+#include "omnirange/io/RawlogProcessor.h"
+#include "omnirange/io/RawlogWriter.h"
+
+#include <mrpt/obs/CSensoryFrame.h>
+
+#include <opencv2/core/utility.hpp>
+
+#include <array>
+#include <exception>
+#include <filesystem>
+#include <optional>
+
+namespace omnirange
+{
+namespace
+{
+/** Objects read but not yet written, with the images among them and their scans. */
+struct Batch
+{
+	std::vector<mrpt::serialization::CSerializable::Ptr> objects;
+	std::vector<std::size_t> after;  // per image: the index of the object that holds it
+	std::vector<mrpt::obs::CObservationImage::Ptr> images;
+	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;  // one per image
+	std::vector<std::array<int, 4>> statuses;  // per image: its rays by RayStatus (Hit, NoHit, TooClose, Outlier)
+	std::vector<std::exception_ptr> errors;
+};
+
+/** Decodes (and scans) the batch's images in parallel. With `adaptation`,
+ * the floor is learned from each decoded image in file order first, and each
+ * image is scanned with what was learned up to and including it: the result
+ * does not depend on the number of threads. */
+void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdaptation* adaptation)
+{
+	const int n = static_cast<int>(b.images.size());
+	b.scans.assign(n, nullptr);
+	b.statuses.assign(n, {0, 0, 0, 0});
+	b.errors.assign(n, nullptr);
+	std::vector<cv::Mat> decoded(n);
+	const auto& cam = rf.params().camera;
+	const auto scan = [&](int k, const PixelClassifier* classifier) {
+		const RangeScan scan = rf.process(decoded[k], classifier);
+		for (const Ray& ray : scan.rays) ++b.statuses[k][static_cast<std::size_t>(ray.status)];
+		b.scans[k] = rf.toObservation(scan, b.images[k]->timestamp);
+	};
+	cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& r) {
+		for (int k = r.start; k < r.end; ++k) try
+			{
+				decoded[k] = decodeImage(*b.images[k], cam);
+				if (!decode_only && !adaptation) scan(k, nullptr);
+			}
+			catch (...)
+			{
+				b.errors[k] = std::current_exception();
+			}
+	});
+	if (decode_only || !adaptation) return;
+	std::vector<std::optional<FreeSpaceClassifier>> classifiers(n);
+	for (int k = 0; k < n; ++k)
+		if (!b.errors[k]) adaptation->learn(decoded[k]), classifiers[k] = adaptation->classifier();
+	cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& r) {
+		for (int k = r.start; k < r.end; ++k) try
+			{
+				if (!b.errors[k]) scan(k, &*classifiers[k]);
+			}
+			catch (...)
+			{
+				b.errors[k] = std::current_exception();
+			}
+	});
+}
+
+/** The message of a stored exception. */
+std::string messageOf(const std::exception_ptr& error)
+{
+	try
+	{
+		std::rethrow_exception(error);
+	}
+	catch (const std::exception& e)
+	{
+		return e.what();
+	}
+	catch (...)
+	{
+		return "an error without a message";
+	}
+}
+
+/** Writes the batch's objects with each image's scan: inside the image's
+ * sensory frame, or right after the image in the observations-only format. */
+void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanSummary& sum)
+{
+	std::size_t k = 0;
+	for (std::size_t i = 0; i < b.objects.size(); ++i)
+	{
+		std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
+		for (; k < b.images.size() && b.after[k] == i; ++k)
+		{
+			if (b.errors[k])
+			{
+				if (!skip_bad) std::rethrow_exception(b.errors[k]);
+				++sum.skipped;
+				sum.skipped_reasons.push_back(messageOf(b.errors[k]));
+				continue;
+			}
+			++sum.images;
+			if (!b.scans[k]) continue;  // decode only
+			const auto& n = b.statuses[k];
+			const auto of = [&](RayStatus s) { return static_cast<std::size_t>(n[static_cast<std::size_t>(s)]); };
+			sum.hits += of(RayStatus::Hit), sum.no_hit += of(RayStatus::NoHit);
+			sum.too_close += of(RayStatus::TooClose), sum.outliers += of(RayStatus::Outlier);
+			sum.rays += b.scans[k]->getScanSize();
+			scans.push_back(b.scans[k]);
+		}
+		if (!writer) continue;
+		if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(b.objects[i]))
+		{
+			for (const auto& scan : scans) sf->insert(scan);
+			writer->write(*sf);
+			continue;
+		}
+		writer->write(*b.objects[i]);
+		for (const auto& scan : scans) writer->write(*scan);
+	}
+}
+}  // namespace
+
+RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, Progress* progress)
+{
+	if (o.threads < 1 || o.threads > 256) throw std::invalid_argument("threads must be within [1, 256]");
+	if (!o.decode_only) requireRawlogOutputAllowed(o.output, kScanProgram, {o.input, imagesDirFor(o.input)}, o.force);
+	cv::setNumThreads(o.threads);
+
+	RawlogProcessor loop(o.input);
+	std::optional<RawlogWriter> writer;
+	if (!o.decode_only)
+	{
+		writer.emplace(o.output, kScanProgram);
+		writer->linkImagesTo(imagesDirFor(o.input));
+		if (o.force) writer->replaceAnyImagesFolder();
+	}
+	const std::size_t batch_images = 8 * static_cast<std::size_t>(o.threads);
+	std::optional<FloorAdaptation> adaptation;
+	if (rf.params().floor_adaptation) adaptation.emplace(rf, rf.params().adaptation_memory);
+	RawlogScanSummary sum;
+	Batch b;
+	const auto flush = [&] {
+		processBatch(b, rf, o.decode_only, adaptation ? &*adaptation : nullptr);
+		writeBatch(b, writer ? &*writer : nullptr, o.skip_bad_images, sum);
+		b = Batch{};
+	};
+	// A batch ends only between objects: a sensory frame may hold several images.
+	loop.onObject([&](const mrpt::serialization::CSerializable::Ptr& obj) {
+		if (b.images.size() >= batch_images) flush();
+		b.objects.push_back(obj);
+	});
+	loop.on<mrpt::obs::CObservationImage>(o.omni_label, [&](const mrpt::obs::CObservationImage::Ptr& image) {
+		b.after.push_back(b.objects.size() - 1);
+		b.images.push_back(image);
+	});
+	// Scans of this label already in the input would sit beside the new ones, two per frame.
+	loop.on<mrpt::obs::CObservation2DRangeScan>(rf.params().sensor_label, [&](const auto&) {
+		throw std::runtime_error("'" + o.input + "' already holds " + rf.params().sensor_label +
+								 " scans: scan the rawlog they were made from, or give the new ones another sensor_label");
+	});
+	loop.run(progress);
+	flush();
+	if (sum.images == 0 && sum.skipped > 0)
+		throw std::runtime_error("every " + o.omni_label + " image in '" + o.input + "' was bad; the first: " +
+								 sum.skipped_reasons.front());
+	if (sum.images == 0)
+		throw std::runtime_error("no " + o.omni_label + " image in '" + o.input + "' (" + loop.describeLabels() + ")");
+	if (writer)
+	{
+		writer->commit();
+		sum.objects = writer->objectsWritten();
+	}
+	return sum;
+}
+
+}  // namespace omnirange

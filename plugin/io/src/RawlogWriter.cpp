@@ -1,0 +1,180 @@
+#include "omnirange/io/RawlogWriter.h"
+
+#include "omnirange/config/AtomicWrite.h"
+#include "omnirange/io/OutputRule.h"
+#include "omnirange/config/Temporaries.h"
+
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
+#include <opencv2/imgcodecs.hpp>
+#include <unistd.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace omnirange
+{
+std::string imagesDirFor(const std::string& rawlog_path)
+{
+	fs::path p(rawlog_path);
+	std::string stem = p.filename().string();
+	for (const std::string ext : {".rawlog.gz", ".rawlog"})
+		if (stem.size() > ext.size() && stem.compare(stem.size() - ext.size(), ext.size(), ext) == 0)
+		{
+			stem.resize(stem.size() - ext.size());
+			break;
+		}
+	return (p.parent_path() / (stem + "_Images")).string();
+}
+
+namespace
+{
+/** `images` is the link a scan wrote beside `rawlog` to its input's images:
+ * a link to a NAME_Images folder, beside a rawlog of ours. Only then may a
+ * link be replaced unasked (a user's own link to a folder of theirs is not). */
+bool imagesLinkOf(const std::string& rawlog, const std::string& images)
+{
+	std::error_code ec;
+	if (!fs::is_symlink(images, ec)) return false;
+	const std::string target = fs::read_symlink(images, ec).lexically_normal().filename().string();
+	const std::string suffix = "_Images";
+	const bool to_images = target.size() > suffix.size() &&
+						   target.compare(target.size() - suffix.size(), suffix.size(), suffix) == 0;
+	return to_images && fs::is_regular_file(rawlog, ec) && isOfKind(rawlog, OutputKind::Rawlog);
+}
+}  // namespace
+
+void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& program,
+								const std::vector<std::string>& inputs, bool force)
+{
+	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
+	// The images go beside the file written (through a link, the file it names).
+	const std::string file = replacedFileOf(outputPath(rawlog)), images = imagesDirFor(file);
+	requireOutputAllowed(images, OutputKind::Folder, program, inputs,
+						 force || imagesLinkOf(file, images));
+}
+
+RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, int gz_level)
+	: path_(replacedFileOf(path)),
+	  owner_(program),  // its NAME_Images folder's marker names the program, as any folder of its
+	  tmp_path_(path_ + ".tmp-" + std::to_string(::getpid())),
+	  images_(imagesDirFor(path_)),  // beside the file written, where a reader of it looks
+	  tmp_images_(images_ + ".tmp-" + std::to_string(::getpid())),
+	  out_(std::make_unique<mrpt::io::CFileGZOutputStream>())
+{
+	recoverLeftoversOf(path_, OutputKind::Rawlog);  // what killed runs of this output left
+	recoverLeftoversOf(images_, OutputKind::Folder, owner_);
+	temporaries::add(tmp_path_);
+	temporaries::add(tmp_images_);
+	if (!out_->open(tmp_path_, gz_level))
+	{
+		temporaries::forget(tmp_path_), temporaries::forget(tmp_images_);
+		throw std::runtime_error("cannot write rawlog '" + path + "'");
+	}
+}
+
+RawlogWriter::~RawlogWriter()
+{
+	temporaries::forget(tmp_path_), temporaries::forget(tmp_images_);
+	if (committed_) return;
+	out_.reset();
+	std::error_code ec;
+	fs::remove(tmp_path_, ec);
+	fs::remove_all(tmp_images_, ec);
+}
+
+void RawlogWriter::write(const mrpt::serialization::CSerializable& obj)
+{
+	try
+	{
+		mrpt::serialization::archiveFrom(*out_) << obj;
+	}
+	catch (const std::exception&)
+	{
+		// MRPT's message is a stack trace that does not name the file.
+		throw std::runtime_error("cannot write rawlog '" + path_ + "' (is the disk full?)");
+	}
+	++count_;
+}
+
+void RawlogWriter::startImages()
+{
+	if (has_images_) return;
+	fs::remove_all(tmp_images_);
+	fs::create_directories(tmp_images_);
+	markOutputFolder(tmp_images_, owner_);
+	has_images_ = true;
+}
+
+mrpt::img::CImage RawlogWriter::externalImageCopy(const std::string& source, const std::string& name)
+{
+	startImages();
+	std::error_code ec;
+	fs::copy_file(source, fs::path(tmp_images_) / name, fs::copy_options::overwrite_existing, ec);
+	if (ec) throw std::runtime_error("cannot copy image '" + source + "': " + ec.message());
+	mrpt::img::CImage img;
+	img.setExternalStorage(name);
+	return img;
+}
+
+mrpt::img::CImage RawlogWriter::externalImage(
+	const cv::Mat& bgr, const std::string& name, int jpeg_quality)
+{
+	startImages();
+	const std::string file = (fs::path(tmp_images_) / name).string();
+	if (!cv::imwrite(file, bgr, {cv::IMWRITE_JPEG_QUALITY, jpeg_quality}))
+		throw std::runtime_error("cannot write image '" + file + "'");
+	mrpt::img::CImage img;
+	img.setExternalStorage(name);
+	return img;
+}
+
+void RawlogWriter::commit()
+{
+	out_->close();
+	// CFileGZOutputStream::close() reports nothing: read the file back, so a
+	// flush that failed (a full disk) is found before the file is renamed.
+	requireWholeGzipFile(tmp_path_, path_);
+	keepModeOf(path_, tmp_path_);
+	syncToDisk(tmp_path_, path_);
+	const bool link = !has_images_ && !link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_);
+	if (!has_images_ && !link)
+	{
+		fs::rename(tmp_path_, path_);
+		committed_ = true;
+		return;
+	}
+	// The old images go aside, the new ones in, then the rawlog; only when
+	// all three moves succeeded is the old folder removed.
+	// The rule the programs check before they start, checked again here for
+	// every writer (a library user need not have called it).
+	requireOutputAllowed(images_, OutputKind::Folder, owner_, {}, replace_any_ || imagesLinkOf(path_, images_));
+	if (has_images_) listOutputFolder(tmp_images_);
+	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
+	const std::string old = images_ + ".old-" + std::to_string(::getpid());
+	if (had_old) fs::rename(images_, old);
+	bool moved_in = false;
+	try
+	{
+		if (has_images_) fs::rename(tmp_images_, images_);
+		// Relative, so that a folder holding both can be moved (a report's staging renamed into place).
+		else fs::create_directory_symlink(fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path()), images_);
+		moved_in = true;
+		fs::rename(tmp_path_, path_);
+	}
+	catch (const std::exception& e)
+	{
+		std::error_code ec;
+		if (moved_in) fs::remove_all(images_, ec);  // ours, just moved in (a link: only the link)
+		if (had_old) fs::rename(old, images_, ec);
+		throw std::runtime_error("cannot move '" + path_ + "' and its images into place (" + e.what() +
+								 "); the old ones are as they were");
+	}
+	committed_ = true;
+	std::error_code ec;
+	if (had_old) fs::remove_all(old, ec);
+}
+
+}  // namespace omnirange

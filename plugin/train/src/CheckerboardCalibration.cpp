@@ -1,0 +1,248 @@
+#include "omnirange/train/CheckerboardCalibration.h"
+#include "omnirange/io/ObservationImage.h"
+#include "omnirange/config/Temporaries.h"
+
+#include <mrpt/img/CImage.h>
+#include <mrpt/vision/chessboard_find_corners.h>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/ccalib/omnidir.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace omnirange
+{
+bool findCheckerboardCorners(const cv::Mat& gray, const cv::Size& pattern, const std::string& detector,
+							 std::vector<cv::Point2f>& corners)
+{
+	if (detector == "classic")
+	{
+		if (!cv::findChessboardCorners(gray, pattern, corners, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE))
+			return false;
+		cv::cornerSubPix(gray, corners, cv::Size(5, 5), cv::Size(-1, -1),
+						 cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 30, 0.01));
+		return true;
+	}
+	if (detector == "sector-based")
+		return cv::findChessboardCornersSB(gray, pattern, corners, cv::CALIB_CB_EXHAUSTIVE | cv::CALIB_CB_ACCURACY);
+	if (detector == "mrpt-scaramuzza")
+	{
+		std::vector<mrpt::img::TPixelCoordf> found;
+		const mrpt::img::CImage image(gray, mrpt::img::DEEP_COPY);
+		if (!mrpt::vision::findChessboardCorners(image, found, pattern.width, pattern.height, true, true)) return false;
+		corners.clear();
+		for (const auto& p : found) corners.emplace_back(p.x, p.y);
+		return corners.size() == static_cast<std::size_t>(pattern.area());
+	}
+	throw std::invalid_argument("unknown corner detector '" + detector +
+								"' (classic, sector-based or mrpt-scaramuzza)");
+}
+
+int CheckerboardCalibration::found() const
+{
+	return static_cast<int>(std::count_if(images.begin(), images.end(), [](const auto& i) { return i.found; }));
+}
+
+int CheckerboardCalibration::used() const
+{
+	return static_cast<int>(std::count_if(images.begin(), images.end(), [](const auto& i) { return i.used; }));
+}
+
+CameraParams meiCamera(const CheckerboardCalibration& c, CameraParams start)
+{
+	start.mirror_model = MirrorModel::Mei;
+	start.xi = c.xi;
+	start.gamma = c.K(0, 0);
+	start.aspect = c.K(1, 1) / c.K(0, 0);
+	start.skew = c.K(0, 1);
+	start.k1 = c.D[0], start.k2 = c.D[1];
+	start.p1 = c.D[2], start.p2 = c.D[3];
+	start.cx = c.K(0, 2), start.cy = c.K(1, 2);
+	start.image_width = c.image_size.width, start.image_height = c.image_size.height;
+	return start;
+}
+
+std::string CheckerboardCalibration::yaml() const
+{
+	cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
+	fs << "image_width" << image_size.width << "image_height" << image_size.height;
+	fs << "camera_matrix" << cv::Mat(K) << "xi" << xi << "distortion" << cv::Mat(D) << "rms_px" << rms;
+	fs << "images_found" << found() << "images_used" << used();
+	return fs.releaseAndGetString();
+}
+
+namespace
+{
+using Boards3d = std::vector<std::vector<cv::Vec3d>>;
+using Boards2d = std::vector<std::vector<cv::Vec2d>>;
+
+/** The principal point's spread over calibrations that each leave out one
+ * group of the `used` boards (the groups: every k-th, so each run keeps
+ * boards from all over the sequence). Sets c.centre_spread and c.centre_subsets. */
+void measureCentreSpread(const Boards3d& object, const Boards2d& image, const std::vector<int>& used,
+						 const cv::TermCriteria& stop, CheckerboardCalibration& c)
+{
+	const int n = static_cast<int>(used.size());
+	if (n < 4) return;  // leaving one out must leave the 3 a calibration needs
+	const int groups = std::min(n, kCentreSubsets);
+	for (int g = 0; g < groups; ++g)
+	{
+		temporaries::setActivity("calibrating without board group " + std::to_string(g + 1));
+		Boards3d o;
+		Boards2d i;
+		for (int k = 0; k < n; ++k)
+			if (k % groups != g) o.push_back(object[used[k]]), i.push_back(image[used[k]]);
+		cv::Mat K, D, xi, idx;
+		std::vector<cv::Mat> rvecs, tvecs;
+		try
+		{
+			cv::omnidir::calibrate(o, i, c.image_size, K, xi, D, rvecs, tvecs, 0, stop, idx);
+		}
+		catch (const cv::Exception&)
+		{
+			continue;  // a subset it cannot start from: no centre to compare
+		}
+		const double dx = K.at<double>(0, 2) - c.K(0, 2), dy = K.at<double>(1, 2) - c.K(1, 2);
+		c.centre_spread = std::max(c.centre_spread, std::hypot(dx, dy));
+		++c.centre_subsets;
+	}
+}
+}  // namespace
+
+namespace
+{
+void requireBoardAndFiles(const std::vector<std::string>& files, const CheckerboardOptions& o)
+{
+	if (o.columns < 2 || o.rows < 2 || o.columns > kMaxBoardCorners || o.rows > kMaxBoardCorners || !(o.square > 0 && o.square <= 10))
+		throw std::invalid_argument("the board needs 2 to " + std::to_string(kMaxBoardCorners) +
+									" inner corners each way and a square within (0, 10] m");
+	// One photograph given twice would count as two boards and look like agreement.
+	for (std::size_t i = 0; i < files.size(); ++i)
+		for (std::size_t j = i + 1; j < files.size(); ++j)
+			if (std::error_code ec; files[i] == files[j] || std::filesystem::equivalent(files[i], files[j], ec))
+				throw std::invalid_argument("image '" + files[j] + "' is given twice (also as '" + files[i] + "')");
+}
+
+/** The image `file`, checked against the first one's size and the board's. */
+cv::Mat readBoardImage(const std::string& file, const CheckerboardOptions& o, cv::Size& first_size)
+{
+	temporaries::setActivity("reading image '" + file + "'");
+	const cv::Mat gray = decodeImageFile(file, "", cv::IMREAD_GRAYSCALE);
+	if (first_size.empty()) first_size = gray.size();
+	if (gray.size() != first_size) throw std::runtime_error("image '" + file + "' has another size than the first image");
+	// Fewer than a few pixels a square cannot show a board (and OpenCV's detectors assert on it).
+	if (gray.cols < 4 * (o.columns + 1) || gray.rows < 4 * (o.rows + 1))
+		throw std::runtime_error("image '" + file + "' is " + std::to_string(gray.cols) + "x" + std::to_string(gray.rows) +
+								 " px: too small to show a board of " + std::to_string(o.columns) + "x" +
+								 std::to_string(o.rows) + " inner corners");
+	return gray;
+}
+
+/** The board's corners in `gray` by the first detector that finds them; with
+ * `check_larger`, whether the same detector also finds a board one corner
+ * wider or taller (a miscounted board). */
+CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o, bool check_larger,
+							  std::vector<cv::Point2f>& corners)
+{
+	const cv::Size pattern(o.columns, o.rows);
+	CheckerboardImage info;
+	for (const std::string& detector : o.detectors)
+		if (findCheckerboardCorners(gray, pattern, detector, corners))
+		{
+			info.found = true, info.detector = detector;
+			std::vector<cv::Point2f> more;
+			if (check_larger)
+				for (const cv::Size larger : {cv::Size(pattern.width + 1, pattern.height), cv::Size(pattern.width, pattern.height + 1)})
+					info.part_of_larger = info.part_of_larger || findCheckerboardCorners(gray, larger, detector, more);
+			break;
+		}
+	return info;
+}
+
+/** The first of `boards` whose corners lie within kSameViewPx of `corners` on average, or -1. */
+int sameView(const std::vector<cv::Point2f>& corners, const std::vector<std::vector<cv::Vec2d>>& boards)
+{
+	for (std::size_t b = 0; b < boards.size(); ++b)
+	{
+		double sum = 0;
+		for (std::size_t i = 0; i < corners.size(); ++i) sum += cv::norm(cv::Vec2d(corners[i].x, corners[i].y) - boards[b][i]);
+		if (sum < kSameViewPx * static_cast<double>(corners.size())) return static_cast<int>(b);
+	}
+	return -1;
+}
+
+/** cv::omnidir's fit of the boards found; each kept board's own reprojection error into its image. */
+void fitModel(const std::vector<std::vector<cv::Vec3d>>& object, const std::vector<std::vector<cv::Vec2d>>& image,
+			  const std::vector<std::size_t>& which, const CheckerboardOptions& o, CheckerboardCalibration& out)
+{
+	cv::Mat K, D, xi, idx;
+	std::vector<cv::Mat> rvecs, tvecs;
+	const cv::TermCriteria stop(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, o.max_iterations, 1e-8);
+	out.rms = cv::omnidir::calibrate(object, image, out.image_size, K, xi, D, rvecs, tvecs, 0, stop, idx);
+	out.K = cv::Matx33d(K);
+	out.xi = xi.at<double>(0);
+	out.D = cv::Vec4d(D);
+	for (int k = 0; k < static_cast<int>(idx.total()); ++k)  // idx indexes `object`
+	{
+		const int b = idx.at<int>(k);
+		std::vector<cv::Vec2d> projected;
+		cv::omnidir::projectPoints(object[b], projected, rvecs[k], tvecs[k], K, out.xi, D);
+		double sum = 0;
+		for (std::size_t i = 0; i < projected.size(); ++i)
+		{
+			const cv::Vec2d d = projected[i] - image[b][i];
+			sum += d.dot(d);
+		}
+		auto& info = out.images[which[b]];
+		info.used = true;
+		info.rms = std::sqrt(sum / static_cast<double>(projected.size()));
+	}
+	measureCentreSpread(object, image, std::vector<int>(idx.begin<int>(), idx.end<int>()), stop, out);
+}
+}  // namespace
+
+CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string>& files, const CheckerboardOptions& o)
+{
+	requireBoardAndFiles(files, o);
+	std::vector<cv::Vec3d> board;
+	for (int r = 0; r < o.rows; ++r)
+		for (int c = 0; c < o.columns; ++c) board.push_back({c * o.square, r * o.square, 0.0});
+
+	CheckerboardCalibration out;
+	std::vector<std::vector<cv::Vec3d>> object;
+	std::vector<std::vector<cv::Vec2d>> image;
+	std::vector<std::size_t> which;  // index in out.images of each board
+	for (const auto& file : files)
+	{
+		const cv::Mat gray = readBoardImage(file, o, out.image_size);
+		std::vector<cv::Point2f> corners;
+		// A miscount is checked on the first three boards found: enough to tell, at a third of the cost.
+		CheckerboardImage info = detectBoard(gray, o, object.size() < 3, corners);
+		info.file = file;
+		if (info.found)
+			if (const int same = sameView(corners, image); same >= 0) info.same_view_as = out.images[which[same]].file;
+		if (info.found && info.same_view_as.empty())
+		{
+			object.push_back(board);
+			std::vector<cv::Vec2d> points;
+			for (const auto& p : corners) points.push_back({p.x, p.y});
+			image.push_back(points);
+			which.push_back(out.images.size());
+		}
+		out.images.push_back(info);
+	}
+	if (object.size() < 3)
+		throw std::runtime_error("the board was found in " + std::to_string(object.size()) + " of " +
+								 std::to_string(files.size()) + " images (views of the same board position counted once); "
+								 "calibration needs at least 3");
+	fitModel(object, image, which, o, out);
+	return out;
+}
+
+}  // namespace omnirange

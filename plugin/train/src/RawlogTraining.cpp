@@ -1,0 +1,67 @@
+#include "omnirange/train/RawlogTraining.h"
+
+#include "omnirange/config/AtomicWrite.h"
+#include "omnirange/io/ObservationImage.h"
+#include "omnirange/io/RawlogProcessor.h"
+
+#include <mrpt/obs/CObservationImage.h>
+
+namespace omnirange
+{
+void RawlogTrainingOptions::validate() const
+{
+	require(every >= 1, "every must be >= 1");
+	require(first >= 0 && max_frames >= 0 && until >= 0, "first, until and max_frames must be >= 0");
+	require(max_dt >= 0, "max_dt must be >= 0 s");
+	require(figures_frame >= 0, "figures_frame must be >= 0");
+	require(training.bins >= 1 && training.bins <= 256, "bins must be within [1, 256]");
+	// Farther than the laser sees is no margin; a huge one only costs time (each hit walks it).
+	require(training.laser_margin >= 0 && training.laser_margin <= 5, "laser_margin must be within [0, 5] m");
+	require(training.obstacle_band >= 0 && training.obstacle_band <= 5, "obstacle_band must be within [0, 5] m");
+	require(training.light_change >= 0 && training.light_change < 1, "light_change must be within [0, 1)");
+}
+
+RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTrainingOptions& o, Progress* progress)
+{
+	using mrpt::obs::CObservation2DRangeScan;
+	using mrpt::obs::CObservationImage;
+	o.validate();
+	rp.validate();
+	const OmniCameraModel camera(rp.camera);
+	// Beyond the base, out to the max range the scans will use.
+	HistogramTrainer trainer(camera, rp.sensor_pose, floorBeyondBase(camera, rp.scanner), rp.scanner.max_range,
+							 o.training);
+
+	RawlogProcessor loop(o.input);
+	RawlogTrainingResult r;
+	loop.onPair<CObservationImage, CObservation2DRangeScan>(
+		o.omni_label, o.laser_label, o.max_dt,
+		[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& laser) {
+			const int k = r.pairs++;
+			if (!o.selects(k)) return;  // keep counting the pairs
+			if (o.max_frames > 0 && r.used >= o.max_frames) return loop.stop();
+			const TrainingFrame f = trainer.add(decodeImage(*image, rp.camera), *laser);
+			r.pixels += f.pixels;
+			r.obstacle_pixels += f.obstacle_pixels;
+			if (!o.figures_prefix.empty() && r.used == o.figures_frame)
+			{
+				writeImageAtomically(o.figures_prefix + "_birdseye.png", f.birds_eye);
+				writeImageAtomically(o.figures_prefix + "_laser.png", f.laser_free);
+				writeImageAtomically(o.figures_prefix + "_fused.png", f.fused);
+			}
+			++r.used;
+		});
+	loop.run(progress);
+	if (r.pairs == 0) throw std::runtime_error(loop.describeNoPair() + "; training needs both");
+	if (r.used == 0)
+		throw std::runtime_error("none of the " + std::to_string(r.pairs) + " image/scan pairs of '" + o.input +
+								 "' was selected (first = " + std::to_string(o.first) + ")");
+	if (!o.figures_prefix.empty() && o.figures_frame >= r.used)
+		throw std::runtime_error("figures_frame " + std::to_string(o.figures_frame) + " is past the " +
+								 std::to_string(r.used) + " pairs used");
+	if (trainer.histogram().empty()) throw std::runtime_error("no free-floor pixel was found to train on");
+	r.model = trainer.model();
+	return r;
+}
+
+}  // namespace omnirange
