@@ -291,11 +291,9 @@ OmniRenderer::Sample OmniRenderer::trace(const Frame& f, int bin, double theta) 
 	return {{double(sky[2]), double(sky[1]), double(sky[0])}, kSky};
 }
 
-cv::Mat OmniRenderer::render(const Pose2& robot, std::uint64_t noise_seed, int frame) const
+void OmniRenderer::castFrame(const Pose2& robot, Frame& f) const
 {
-	const auto& p = robot_.omnicam.camera;
 	const auto& pose = robot_.omnicam.pose;
-	Frame f;
 	f.yaw = robot.yaw + pose.yaw();
 	f.origin = {robot.x + std::cos(robot.yaw) * pose.x() - std::sin(robot.yaw) * pose.y(),
 				robot.y + std::sin(robot.yaw) * pose.x() + std::cos(robot.yaw) * pose.y()};
@@ -309,78 +307,90 @@ cv::Mat OmniRenderer::render(const Pose2& robot, std::uint64_t noise_seed, int f
 			world_.castRay(f.origin, {std::cos(a), std::sin(a)}, kMaxSight, f.bins[b]);
 		}
 	});
+}
 
-	cv::Mat img(p.image_height, p.image_width, CV_8UC3);
-	cv::Mat surf(p.image_height, p.image_width, CV_32SC1);
-	const auto shade = [&](const PixelRay& pr, double u, double v) -> Sample {
-		switch (pr.kind)
-		{
-			case 3: return {{0, 0, 0}, kOutside};
-			case 2: return {{38, 38, 42}, kRim};
-			case 1: return shadeRobot(pr.theta, cam_.polarFromPixel({u, v}).first);
-			default: return trace(f, pr.bin, pr.theta);
-		}
-	};
-	// 1. One ray per pixel centre.
-	cv::parallel_for_(cv::Range(0, p.image_height), [&](const cv::Range& r) {
+OmniRenderer::Sample OmniRenderer::shade(const Frame& f, const PixelRay& pr, double u, double v) const
+{
+	switch (pr.kind)
+	{
+		case 3: return {{0, 0, 0}, kOutside};
+		case 2: return {{38, 38, 42}, kRim};
+		case 1: return shadeRobot(pr.theta, cam_.polarFromPixel({u, v}).first);
+		default: return trace(f, pr.bin, pr.theta);
+	}
+}
+
+void OmniRenderer::shadePixels(const Frame& f, cv::Mat& img, cv::Mat& surf) const
+{
+	const int width = img.cols;
+	cv::parallel_for_(cv::Range(0, img.rows), [&](const cv::Range& r) {
 		for (int v = r.start; v < r.end; ++v)
 		{
 			auto* px = img.ptr<cv::Vec3b>(v);
 			auto* id = surf.ptr<std::int32_t>(v);
-			for (int u = 0; u < p.image_width; ++u)
+			for (int u = 0; u < width; ++u)
 			{
-				const Sample s = shade(rays_[v * p.image_width + u], u, v);
+				const Sample s = shade(f, rays_[v * width + u], u, v);
 				px[u] = {clamp8(s.bgr[0]), clamp8(s.bgr[1]), clamp8(s.bgr[2])};
 				id[u] = s.surface;
 			}
 		}
 	});
-	// 2. Anti-aliasing: where a pixel's surface differs from a neighbour's,
-	//    average four rays through the pixel's quarters.
-	if (robot_.omnicam.antialias)
-	{
-		const cv::Mat ids = surf.clone();
-		cv::parallel_for_(cv::Range(1, p.image_height - 1), [&](const cv::Range& r) {
-			for (int v = r.start; v < r.end; ++v)
-				for (int u = 1; u < p.image_width - 1; ++u)
-				{
-					const int id = ids.at<std::int32_t>(v, u);
-					if (id == kOutside) continue;
-					if (id == ids.at<std::int32_t>(v, u + 1) && id == ids.at<std::int32_t>(v + 1, u) &&
-						id == ids.at<std::int32_t>(v, u - 1) && id == ids.at<std::int32_t>(v - 1, u))
-						continue;
-					double acc[3] = {0, 0, 0};
-					for (double du : {-0.25, 0.25})
-						for (double dv : {-0.25, 0.25})
-						{
-							const Sample s = shade(pixelRay(u + du, v + dv), u + du, v + dv);
-							for (int c = 0; c < 3; ++c) acc[c] += 0.25 * s.bgr[c];
-						}
-					img.at<cv::Vec3b>(v, u) = {clamp8(acc[0]), clamp8(acc[1]), clamp8(acc[2])};
-				}
-		});
-	}
-	// 3. The optics (vignetting, blur) and the exposure of this frame.
+}
+
+void OmniRenderer::antialias(const Frame& f, cv::Mat& img, const cv::Mat& ids) const
+{
+	cv::parallel_for_(cv::Range(1, img.rows - 1), [&](const cv::Range& r) {
+		for (int v = r.start; v < r.end; ++v)
+			for (int u = 1; u < img.cols - 1; ++u)
+			{
+				const int id = ids.at<std::int32_t>(v, u);
+				if (id == kOutside) continue;
+				if (id == ids.at<std::int32_t>(v, u + 1) && id == ids.at<std::int32_t>(v + 1, u) &&
+					id == ids.at<std::int32_t>(v, u - 1) && id == ids.at<std::int32_t>(v - 1, u))
+					continue;
+				double acc[3] = {0, 0, 0};
+				for (double du : {-0.25, 0.25})
+					for (double dv : {-0.25, 0.25})
+					{
+						const Sample s = shade(f, pixelRay(u + du, v + dv), u + du, v + dv);
+						for (int c = 0; c < 3; ++c) acc[c] += 0.25 * s.bgr[c];
+					}
+				img.at<cv::Vec3b>(v, u) = {clamp8(acc[0]), clamp8(acc[1]), clamp8(acc[2])};
+			}
+	});
+}
+
+void OmniRenderer::addNoise(cv::Mat& img, std::uint64_t seed) const
+{
+	const double sigma = robot_.omnicam.noise_sigma;
+	const std::size_t mask = noise_.size() - 1;
+	const std::size_t offset = std::mt19937_64(seed)() & mask;
+	cv::parallel_for_(cv::Range(0, img.rows), [&](const cv::Range& r) {
+		for (int v = r.start; v < r.end; ++v)
+		{
+			auto* px = img.ptr<std::uint8_t>(v);
+			std::size_t k = (offset + static_cast<std::size_t>(v) * 7919u * 3u) & mask;
+			for (int i = 0; i < 3 * img.cols; ++i, k = (k + 1) & mask) px[i] = clamp8(px[i] + sigma * noise_[k]);
+		}
+	});
+}
+
+cv::Mat OmniRenderer::render(const Pose2& robot, std::uint64_t noise_seed, int frame) const
+{
+	const auto& p = robot_.omnicam.camera;
+	Frame f;
+	castFrame(robot, f);
+	cv::Mat img(p.image_height, p.image_width, CV_8UC3);
+	cv::Mat surf(p.image_height, p.image_width, CV_32SC1);
+	shadePixels(f, img, surf);
+	if (robot_.omnicam.antialias) antialias(f, img, surf);
+	// The optics (vignetting, blur) and the exposure of this frame, the sensor's
+	// noise and a single-chip sensor's colour filter, demosaiced.
 	const auto& fx = robot_.omnicam.effects;
 	applyOptics(img, fx, p.cx + robot_.omnicam.centre_offset_u, p.cy + robot_.omnicam.centre_offset_v, rim_rho_);
 	applyExposure(img, fx, frame);
-	// 4. Sensor noise, from a precomputed table at a seeded offset.
-	const double sigma = robot_.omnicam.noise_sigma;
-	if (sigma > 0)
-	{
-		const std::size_t mask = noise_.size() - 1;
-		const std::size_t offset = std::mt19937_64(noise_seed)() & mask;
-		cv::parallel_for_(cv::Range(0, p.image_height), [&](const cv::Range& r) {
-			for (int v = r.start; v < r.end; ++v)
-			{
-				auto* px = img.ptr<std::uint8_t>(v);
-				std::size_t k = (offset + static_cast<std::size_t>(v) * 7919u * 3u) & mask;
-				for (int i = 0; i < 3 * p.image_width; ++i, k = (k + 1) & mask)
-					px[i] = clamp8(px[i] + sigma * noise_[k]);
-			}
-		});
-	}
-	// 5. A single-chip sensor's colour filter, demosaiced.
+	if (robot_.omnicam.noise_sigma > 0) addNoise(img, noise_seed);
 	if (fx.bayer) applyBayer(img);
 	return img;
 }

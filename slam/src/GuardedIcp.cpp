@@ -61,14 +61,19 @@ const OptionsTable<GuardedIcpOptions>& GuardedIcpOptions::guardTable()
 		OptionsTable<O>()
 			.add("max_jump", "m", "a match may move the robot this far from the odometry's prediction",
 				 [](O& o) -> auto& { return o.max_jump; })
+			.within(Range::atLeast(0))
 			.add("max_jump_per_metre", "m/m", "plus this much per metre driven since the last match",
 				 [](O& o) -> auto& { return o.max_jump_per_metre; })
+			.within(Range::atLeast(0))
 			.add("max_turn_deg", "deg", "and turn it this far", [](O& o) -> auto& { return o.max_turn_deg; })
+			.within(Range::atLeast(0))
 			.add("max_turn_per_radian", "deg/deg", "plus this much per angle turned since the last match",
 				 [](O& o) -> auto& { return o.max_turn_per_radian; })
+			.within(Range::atLeast(0))
 			.add("weak_direction_ratio", "-",
 				 "a direction with less than this share of the strongest's information is left to the odometry",
-				 [](O& o) -> auto& { return o.weak_direction_ratio; });
+				 [](O& o) -> auto& { return o.weak_direction_ratio; })
+			.within(Range::closed(0, 1));
 	return t;
 }
 
@@ -92,12 +97,7 @@ GuardedIcpOptions GuardedIcpOptions::fromIni(const mrpt::config::CConfigFileBase
 	for (const auto& k : keys) k.value = positiveKey(ini, k.section, k.key, k.value);
 	try
 	{
-		if (ini.sectionExists("odometry_guard")) guardTable().load(o, ini, "odometry_guard");  // optional
-		for (const auto& [key, v] : {std::pair{"max_jump", o.max_jump}, {"max_jump_per_metre", o.max_jump_per_metre},
-									 {"max_turn_deg", o.max_turn_deg}, {"max_turn_per_radian", o.max_turn_per_radian}})
-			require(v >= 0, std::string("[odometry_guard] ") + key + " must be >= 0");
-		require(o.weak_direction_ratio >= 0 && o.weak_direction_ratio <= 1,
-				"[odometry_guard] weak_direction_ratio must be in [0, 1]");
+		if (ini.sectionExists("odometry_guard")) guardTable().load(o, ini, "odometry_guard");  // optional, ranges checked
 	}
 	catch (const std::invalid_argument& e)
 	{

@@ -48,38 +48,46 @@ const OptionsTable<LoopClosureOptions>& LoopClosureOptions::table()
 				 [](O& o) -> auto& { return o.enabled; })
 			.add("min_travel", "m", "odometry driven since an old keyframe before it counts as a loop",
 				 [](O& o) -> auto& { return o.min_travel; })
+			.within(Range::atLeast(0))
 			.add("search_radius", "m", "old keyframes this near the new one are searched",
 				 [](O& o) -> auto& { return o.search_radius; })
+			.within(Range::atLeast(0))
 			.add("search_turn_deg", "deg", "a loop match turning the robot more is refused",
 				 [](O& o) -> auto& { return o.search_turn_deg; })
+			.within(Range::atLeast(0))
 			.add("min_goodness", "-", "ICP goodness a loop match needs", [](O& o) -> auto& { return o.min_goodness; })
+			.within(Range::closed(0, 1))
 			.add("local_keyframes", "-", "old keyframes either side of the nearest in the map matched against",
 				 [](O& o) -> auto& { return o.local_keyframes; })
+			.within(Range::atLeast(0))
 			.add("chain_sigma", "m", "consecutive keyframes' sigma, its floor", [](O& o) -> auto& { return o.chain_sigma; })
+			.within(Range::above(0))
 			.add("chain_sigma_per_metre", "m/m", "and its share of the distance driven",
 				 [](O& o) -> auto& { return o.chain_sigma_per_metre; })
+			.within(Range::atLeast(0))
 			.add("chain_sigma_deg", "deg", "their heading's sigma, its floor",
 				 [](O& o) -> auto& { return o.chain_sigma_deg; })
+			.within(Range::above(0))
 			.add("chain_sigma_deg_per_metre", "deg/m", "and its growth with the distance driven",
 				 [](O& o) -> auto& { return o.chain_sigma_deg_per_metre; })
+			.within(Range::atLeast(0))
 			.add("loop_sigma", "m", "a loop match's sigma", [](O& o) -> auto& { return o.loop_sigma; })
-			.add("loop_sigma_deg", "deg", "a loop match's heading sigma", [](O& o) -> auto& { return o.loop_sigma_deg; });
+			.within(Range::above(0))
+			.add("loop_sigma_deg", "deg", "a loop match's heading sigma", [](O& o) -> auto& { return o.loop_sigma_deg; })
+			.within(Range::above(0));
 	return t;
 }
 
 void LoopClosureOptions::validate() const
 {
-	const std::string s = "[loop_closure] ";
-	for (const auto& [key, v] : {std::pair{"min_travel", min_travel}, {"search_radius", search_radius},
-								 {"search_turn_deg", search_turn_deg}, {"min_goodness", min_goodness},
-								 {"chain_sigma_per_metre", chain_sigma_per_metre},
-								 {"chain_sigma_deg_per_metre", chain_sigma_deg_per_metre}})
-		require(v >= 0, s + key + " must be >= 0");
-	for (const auto& [key, v] : {std::pair{"chain_sigma", chain_sigma}, {"chain_sigma_deg", chain_sigma_deg},
-								 {"loop_sigma", loop_sigma}, {"loop_sigma_deg", loop_sigma_deg}})
-		require(v > 0, s + key + " must be > 0");
-	require(min_goodness <= 1, s + "min_goodness must be in [0, 1]");
-	require(local_keyframes >= 0, s + "local_keyframes must be >= 0");
+	try
+	{
+		table().requireRanges(*this);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument("[loop_closure] " + std::string(e.what()));
+	}
 }
 
 LoopClosureOptions LoopClosureOptions::fromIni(const mrpt::config::CConfigFileBase& ini)

@@ -2,7 +2,7 @@
 
 #include "omnirange_apps/CommandLine.h"
 
-#include <omnirange/io/AtomicWrite.h>
+#include <omnirange/config/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/io/Progress.h>
@@ -43,8 +43,8 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.output = requiredPath(out), o.ini = ini.getValue(), o.section = section.getValue(), o.learn_ini = optionalPath(learn);
-	o.learn_candidates = optionalPath(candidates);
+	o.output = requiredPath(out), o.ini = ini.getValue(), o.section = section.getValue();
+	o.learn_ini = optionalPath(learn), o.learn_candidates = optionalPath(candidates);
 	if (!o.learn_candidates.empty() && o.learn_ini.empty())
 		throw std::invalid_argument("--learn-candidates needs --learn");
 	t.input = in.getValue(), t.omni_label = omni.getValue(), t.laser_label = laser.getValue();
@@ -52,11 +52,9 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	t.max_frames = max_frames.getValue(), t.until = until.getValue();
 	t.training.bins = bins.getValue(), t.training.space = colourSpaceFromString(space.getValue());
 	t.training.laser_margin = margin.getValue(), t.training.obstacle_band = band.getValue();
-	t.training.light_change = light.getValue();
-	t.training.near_disc_only = near_disc.getValue();
+	t.training.light_change = light.getValue(), t.training.near_disc_only = near_disc.getValue();
 	o.learning.split = validationSplitFromString(validate_on.getValue());
-	o.learning.hold_out_every = hold_out.getValue();
-	o.learning.chroma_on_tie = !no_chroma_tie.getValue();
+	o.learning.hold_out_every = hold_out.getValue(), o.learning.chroma_on_tie = !no_chroma_tie.getValue();
 	o.learning.validation_light_change = learn_light.getValue();
 	o.learning.light_changes = {0.0};
 	if (learn_light.getValue() > 0) o.learning.light_changes.push_back(learn_light.getValue());

@@ -68,14 +68,16 @@ class Fields
 	std::vector<std::string> f_;
 	std::size_t next_{0};
 };
-}  // namespace
 
-CarmenLog readCarmenLog(const std::string& path)
+/** A CARMEN log read message by message. */
+struct CarmenReader
 {
 	CarmenLog log;
-	std::vector<OdometryRow> laser_poses;
-	// The first laser message sets the laser; the others must agree with it.
-	const auto addScan = [&](const std::string& kind, double start, double fov, double max_range, LaserRow row) {
+	std::vector<OdometryRow> laser_poses;  // the odometry when the log has no ODOM message
+
+	/** The first laser message sets the laser; the others must agree with it. */
+	void addScan(const std::string& kind, double start, double fov, double max_range, LaserRow row)
+	{
 		if (row.ranges.size() < 2) throw std::invalid_argument(kind + ": a scan needs two or more ranges");
 		if (log.laser.empty())
 			log.laser_message = kind, log.start_angle = start, log.fov = fov, log.max_range = max_range;
@@ -92,66 +94,80 @@ CarmenLog readCarmenLog(const std::string& path)
 			requireTimeAfter(log.laser.back().time, row.time, "laser time");
 		}
 		log.laser.push_back(std::move(row));
-	};
+	}
+
+	void flaser(Fields& f)
+	{
+		f.need(1, "expected the number of readings");
+		const int n = f.count("num_readings");
+		f.need(n + 9, "expected " + std::to_string(n) + " ranges, two poses and three time fields");
+		LaserRow row;
+		for (int i = 0; i < n; ++i) row.ranges.push_back(f.number("range " + std::to_string(i)));
+		f.skip(3, "the laser's pose");
+		OdometryRow pose;
+		pose.x = f.number("odom_x"), pose.y = f.number("odom_y"), pose.phi = f.number("odom_theta");
+		row.time = pose.time = f.time("ipc_timestamp");
+		addScan("FLASER", log.start_angle, log.fov, 0, std::move(row));
+		laser_poses.push_back(pose);
+	}
+
+	/** RAWLASER1, or ROBOTLASER1 (which adds the robot's pose). */
+	void rawLaser(const std::string& kind, Fields& f)
+	{
+		f.need(8, "expected type, start_angle, field_of_view, resolution, max_range, accuracy, mode, n");
+		f.skip(1, "laser_type");
+		const double start = f.number("start_angle"), fov = f.number("field_of_view");
+		f.skip(1, "angular_resolution");
+		const double max_range = f.number("maximum_range");
+		f.skip(2, "accuracy and remission_mode");
+		const int n = f.count("num_readings");
+		f.need(n + 1, "expected " + std::to_string(n) + " ranges and the number of remissions");
+		LaserRow row;
+		for (int i = 0; i < n; ++i) row.ranges.push_back(f.number("range " + std::to_string(i)));
+		const int m = f.count("num_remissions");
+		f.skip(m, std::to_string(m) + " remissions");
+		OdometryRow pose;
+		if (kind == "ROBOTLASER1")
+		{
+			f.need(11, "expected the laser's and the robot's poses, five motion fields and the times");
+			f.skip(3, "the laser's pose");
+			pose.x = f.number("robot_x"), pose.y = f.number("robot_y"), pose.phi = f.number("robot_theta");
+			f.skip(5, "tv, rv and the safety fields");
+		}
+		f.need(3, "expected ipc_timestamp, ipc_hostname, logger_timestamp");
+		row.time = pose.time = f.time("ipc_timestamp");
+		if (!(fov > 0 && fov <= 2 * M_PI)) throw std::invalid_argument(kind + ": field_of_view must be within (0, 2 pi]");
+		if (!(std::abs(start) <= 2 * M_PI)) throw std::invalid_argument(kind + ": start_angle must be within [-2 pi, 2 pi]");
+		if (!(max_range > 0)) throw std::invalid_argument(kind + ": maximum_range must be > 0");
+		addScan(kind, start, fov, max_range, std::move(row));
+		if (kind == "ROBOTLASER1") laser_poses.push_back(pose);
+	}
+
+	void odom(Fields& f)
+	{
+		f.need(9, "expected x, y, theta, tv, rv, accel and the times");
+		OdometryRow pose;
+		pose.x = f.number("x"), pose.y = f.number("y"), pose.phi = f.number("theta");
+		f.skip(3, "tv, rv and accel");
+		pose.time = f.time("ipc_timestamp");
+		if (!log.odometry.empty()) requireTimeAfter(log.odometry.back().time, pose.time, "ODOM time");
+		log.odometry.push_back(pose);
+	}
+};
+}  // namespace
+
+CarmenLog readCarmenLog(const std::string& path)
+{
+	CarmenReader r;
 	forEachDataLine(path, "CARMEN log", [&](int, const std::string& line) {
 		Fields f(line);
 		const std::string kind = f.word();
-		if (kind == "FLASER")
-		{
-			f.need(1, "expected the number of readings");
-			const int n = f.count("num_readings");
-			f.need(n + 9, "expected " + std::to_string(n) + " ranges, two poses and three time fields");
-			LaserRow row;
-			for (int i = 0; i < n; ++i) row.ranges.push_back(f.number("range " + std::to_string(i)));
-			f.skip(3, "the laser's pose");
-			OdometryRow pose;
-			pose.x = f.number("odom_x"), pose.y = f.number("odom_y"), pose.phi = f.number("odom_theta");
-			row.time = pose.time = f.time("ipc_timestamp");
-			addScan(kind, log.start_angle, log.fov, 0, std::move(row));
-			laser_poses.push_back(pose);
-		}
-		else if (kind == "RAWLASER1" || kind == "ROBOTLASER1")
-		{
-			f.need(8, "expected type, start_angle, field_of_view, resolution, max_range, accuracy, mode, n");
-			f.skip(1, "laser_type");
-			const double start = f.number("start_angle"), fov = f.number("field_of_view");
-			f.skip(1, "angular_resolution");
-			const double max_range = f.number("maximum_range");
-			f.skip(2, "accuracy and remission_mode");
-			const int n = f.count("num_readings");
-			f.need(n + 1, "expected " + std::to_string(n) + " ranges and the number of remissions");
-			LaserRow row;
-			for (int i = 0; i < n; ++i) row.ranges.push_back(f.number("range " + std::to_string(i)));
-			const int m = f.count("num_remissions");
-			f.skip(m, std::to_string(m) + " remissions");
-			OdometryRow pose;
-			if (kind == "ROBOTLASER1")
-			{
-				f.need(11, "expected the laser's and the robot's poses, five motion fields and the times");
-				f.skip(3, "the laser's pose");
-				pose.x = f.number("robot_x"), pose.y = f.number("robot_y"), pose.phi = f.number("robot_theta");
-				f.skip(5, "tv, rv and the safety fields");
-			}
-			f.need(3, "expected ipc_timestamp, ipc_hostname, logger_timestamp");
-			row.time = pose.time = f.time("ipc_timestamp");
-			if (!(fov > 0 && fov <= 2 * M_PI)) throw std::invalid_argument(kind + ": field_of_view must be within (0, 2 pi]");
-			if (!(std::abs(start) <= 2 * M_PI)) throw std::invalid_argument(kind + ": start_angle must be within [-2 pi, 2 pi]");
-			if (!(max_range > 0)) throw std::invalid_argument(kind + ": maximum_range must be > 0");
-			addScan(kind, start, fov, max_range, std::move(row));
-			if (kind == "ROBOTLASER1") laser_poses.push_back(pose);
-		}
-		else if (kind == "ODOM")
-		{
-			f.need(9, "expected x, y, theta, tv, rv, accel and the times");
-			OdometryRow pose;
-			pose.x = f.number("x"), pose.y = f.number("y"), pose.phi = f.number("theta");
-			f.skip(3, "tv, rv and accel");
-			pose.time = f.time("ipc_timestamp");
-			if (!log.odometry.empty()) requireTimeAfter(log.odometry.back().time, pose.time, "ODOM time");
-			log.odometry.push_back(pose);
-		}
+		if (kind == "FLASER") r.flaser(f);
+		else if (kind == "RAWLASER1" || kind == "ROBOTLASER1") r.rawLaser(kind, f);
+		else if (kind == "ODOM") r.odom(f);
 	});
-	if (log.odometry.empty()) log.odometry = std::move(laser_poses);
+	CarmenLog log = std::move(r.log);
+	if (log.odometry.empty()) log.odometry = std::move(r.laser_poses);
 	// A file with none of the messages read is not a CARMEN log (a rawlog, a README).
 	if (log.laser.empty() && log.odometry.empty())
 		throw std::runtime_error("'" + path + "' holds no CARMEN laser (FLASER, RAWLASER1, ROBOTLASER1) or ODOM message");

@@ -144,64 +144,85 @@ std::vector<EdgeSample> edgeSamples(const Rangefinder& rf, const RawlogTrainingO
 }
 }  // namespace
 
-LearningResult learnParameters(const RangefinderParams& start, const RawlogTrainingOptions& o, const LearningOptions& lo,
-							   Progress* progress)
+namespace
 {
-	o.validate();
-	start.validate();
-	if (lo.hold_out_every < 2) throw std::invalid_argument("hold_out_every must be >= 2");
-	if (!(lo.validation_fraction > 0 && lo.validation_fraction < 1))
-		throw std::invalid_argument("validation_fraction must be within (0, 1)");
-	if (!(lo.validation_light_change >= 0 && lo.validation_light_change < 1))
-		throw std::invalid_argument("validation_light_change must be within [0, 1)");
-	if (lo.max_validation_pairs < 1) throw std::invalid_argument("max_validation_pairs must be >= 1");
-	for (const double step : lo.step_thresholds)
-		if (!(step > 0 && step <= 5)) throw std::invalid_argument("step_thresholds must be within (0, 5]");
-	std::vector<double> steps = lo.step_thresholds;  // each scored once
-	std::sort(steps.begin(), steps.end());
-	steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
-	std::vector<StepSign> signs = lo.step_signs;
-	std::sort(signs.begin(), signs.end());
-	signs.erase(std::unique(signs.begin(), signs.end()), signs.end());
-	if (signs.empty()) steps.clear();  // no sign: no step
-	const OmniCameraModel camera(start.camera);
-	const double base_range = floorBeyondBase(camera, start.scanner);
-	std::vector<int> bins = lo.bins;
-	if (bins.empty()) bins = {o.training.bins, std::min(64, 2 * o.training.bins)};
-	std::sort(bins.begin(), bins.end());
-	bins.erase(std::unique(bins.begin(), bins.end()), bins.end());
-	const bool by_block = lo.split == ValidationSplit::Blocks;
-	if (by_block && lo.blocks < 2) throw std::invalid_argument("blocks must be >= 2");
-	Trainers trainers, aside;
-	for (const ColourSpace space : lo.spaces)
-		for (const int b : bins)
-			for (const double light : lo.light_changes)
-			{
-				TrainingParams tp = o.training;
-				tp.space = space, tp.bins = b, tp.light_change = light;
-				const HistogramTrainer t(camera, start.sensor_pose, base_range, start.scanner.max_range, tp);
-				trainers.emplace(HistogramKey{space, b, light}, t);
-				if (lo.refit && !by_block) aside.emplace(HistogramKey{space, b, light}, t);
-			}
-	// One set of trainers per block (one block but with the Blocks split).
-	const int selected = countSelected(o);
-	const int n_blocks = by_block ? std::max(1, std::min(lo.blocks, selected)) : 1;
-	std::vector<Trainers> blocks(n_blocks, trainers);
+void validateLearning(const LearningOptions& lo)
+{
+	require(lo.hold_out_every >= 2, "hold_out_every must be >= 2");
+	require(lo.validation_fraction > 0 && lo.validation_fraction < 1, "validation_fraction must be within (0, 1)");
+	require(lo.validation_light_change >= 0 && lo.validation_light_change < 1,
+			"validation_light_change must be within [0, 1)");
+	require(lo.max_validation_pairs >= 1, "max_validation_pairs must be >= 1");
+	for (const double step : lo.step_thresholds) require(step > 0 && step <= 5, "step_thresholds must be within (0, 5]");
+	require(lo.split != ValidationSplit::Blocks || lo.blocks >= 2, "blocks must be >= 2");
+}
+
+/** `v` sorted, each value once: each is scored once. */
+template <class T>
+std::vector<T> sortedOnce(std::vector<T> v)
+{
+	std::sort(v.begin(), v.end());
+	v.erase(std::unique(v.begin(), v.end()), v.end());
+	return v;
+}
+
+/** What learning's stages share: the inputs, the histograms' counts per
+ * block of training pairs, the validation pairs, and the result so far. */
+struct Learning
+{
+	const RangefinderParams& start;
+	const RawlogTrainingOptions& o;
+	const LearningOptions& lo;
+	OmniCameraModel camera;
+	bool by_block;
+	int selected, n_blocks;
+	Trainers trainers, aside;  // one per histogram key; `aside`: the held-aside pairs' counts (refit)
+	std::vector<Trainers> blocks;
 	std::vector<Validation> validation;
+	std::map<HistogramKey, std::vector<ColourModel>> models;  // per block
+	int set_aside{0};
 	LearningResult r;
-	int set_aside = 0;
-	collect(start, o, lo, selected, blocks, aside, validation, r.training_pairs, set_aside, progress);
-	r.validation_pairs = static_cast<int>(validation.size());
-	r.split = lo.split;
-	char light[100] = ", as seen";
-	if (lo.validation_light_change > 0)
-		std::snprintf(light, sizeof light, ", a third each as seen, dimmer and brighter by %g", lo.validation_light_change);
-	r.validation = (by_block ? std::to_string(n_blocks) + " blocks of consecutive pairs, each scored with histograms trained on the others"
-				   : lo.split == ValidationSplit::Later ? std::string("the later part of the stretch")
-														: std::string("interleaved")) +
-				   light;
-	// Each key's histogram without each block (with one block: the training pairs').
-	const auto without = [&](const HistogramKey& key, int skipped) {
+
+	Learning(const RangefinderParams& s, const RawlogTrainingOptions& opts, const LearningOptions& l)
+		: start(s), o(opts), lo(l), camera(s.camera), by_block(l.split == ValidationSplit::Blocks), selected(countSelected(opts)),
+		  n_blocks(by_block ? std::max(1, std::min(l.blocks, selected)) : 1)
+	{
+	}
+
+	/** A trainer per colour space, bin count and light change; one set per
+	 * block (one block but with the Blocks split). */
+	void makeTrainers()
+	{
+		std::vector<int> bins = lo.bins.empty() ? std::vector<int>{o.training.bins, std::min(64, 2 * o.training.bins)} : lo.bins;
+		const double base_range = floorBeyondBase(camera, start.scanner);
+		for (const ColourSpace space : lo.spaces)
+			for (const int b : sortedOnce(bins))
+				for (const double light : lo.light_changes)
+				{
+					TrainingParams tp = o.training;
+					tp.space = space, tp.bins = b, tp.light_change = light;
+					const HistogramTrainer t(camera, start.sensor_pose, base_range, start.scanner.max_range, tp);
+					trainers.emplace(HistogramKey{space, b, light}, t);
+					if (lo.refit && !by_block) aside.emplace(HistogramKey{space, b, light}, t);
+				}
+		blocks.assign(n_blocks, trainers);
+	}
+
+	/** What the validation pairs are, as the learned ini says it. */
+	std::string describeValidation() const
+	{
+		char light[100] = ", as seen";
+		if (lo.validation_light_change > 0)
+			std::snprintf(light, sizeof light, ", a third each as seen, dimmer and brighter by %g", lo.validation_light_change);
+		return (by_block ? std::to_string(n_blocks) + " blocks of consecutive pairs, each scored with histograms trained on the others"
+				: lo.split == ValidationSplit::Later ? std::string("the later part of the stretch")
+													 : std::string("interleaved")) +
+			   light;
+	}
+
+	/** Each key's histogram without block `skipped` (with one block: the training pairs'; -1: every block). */
+	ColourModel without(const HistogramKey& key, int skipped) const
+	{
 		std::optional<HistogramTrainer> t;
 		for (int b = 0; b < n_blocks; ++b)
 			if (b != skipped || n_blocks == 1)
@@ -210,118 +231,159 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 				else t->merge(blocks[b].at(key));
 			}
 		return t->model();
-	};
+	}
 
-	r.best.score = 1e9;
-	std::map<HistogramKey, std::vector<ColourModel>> models;  // per block
-	// One rangefinder per block's histograms, scored on the classifier's own
-	// ranges: the wall fit smooths over the very errors learning must see.
-	const auto rangefinders = [&](const RangefinderParams& p, const HistogramKey& key) {
+	/** One rangefinder per block's histograms, scored on the classifier's own
+	 * ranges: the wall fit smooths over the very errors learning must see. */
+	std::vector<Rangefinder> rangefinders(const RangefinderParams& p, const HistogramKey& key) const
+	{
 		RangefinderParams scored = p;
 		scored.walls.wall_fit = false;
 		std::vector<Rangefinder> rf;
 		for (const ColourModel& m : models.at(key)) rf.emplace_back(scored, m);
 		return rf;
-	};
-	const auto consider = [&](const LearnedCandidate& candidate) {
-		LearnedCandidate c = candidate;
+	}
+
+	void consider(LearnedCandidate c)
+	{
 		const RangefinderParams p = withCandidate(start, c);
 		c.score = score(rangefinders(p, histogramKeyOf(c)), validation, c.frame_errors, c.frame_shortfalls);
 		r.tried.push_back(c);
 		if (c.score < r.best.score) r.best = c, r.params = p;
-	};
-	// A filter window that the image cannot hold past the scan circle is no
-	// candidate: a user's camera may leave little room round it.
-	std::vector<std::pair<int, int>> windows;
-	for (const int N : lo.Ns)
-		for (const int K : lo.Ks)
+	}
+
+	/** The filter windows the image can hold past the scan circle: a user's
+	 * camera may leave little room round it. */
+	std::vector<std::pair<int, int>> windows() const
+	{
+		std::vector<std::pair<int, int>> fit;
+		for (const int N : lo.Ns)
+			for (const int K : lo.Ks)
+			{
+				PolarScannerParams scanner = start.scanner;
+				scanner.filter.N = N, scanner.filter.K = K;
+				try
+				{
+					PolarScanner(camera, scanner);
+					fit.emplace_back(N, K);
+				}
+				catch (const std::invalid_argument&)
+				{
+				}
+			}
+		if (fit.empty())
+			throw std::invalid_argument("no N and K of the learning grid fit the image past max_range (" +
+										std::to_string(start.scanner.max_range) + " m)");
+		return fit;
+	}
+
+	/** Every candidate of the grid, each histogram key's once its every block has floor counts. */
+	void scoreGrid()
+	{
+		const auto fit = windows();
+		r.best.score = 1e9;
+		for (const auto& [key, unused] : trainers)
 		{
-			PolarScannerParams scanner = start.scanner;
-			scanner.filter.N = N, scanner.filter.K = K;
-			try
-			{
-				PolarScanner(camera, scanner);
-				windows.emplace_back(N, K);
-			}
-			catch (const std::invalid_argument&)
-			{
-			}
+			std::vector<ColourModel> per_block;
+			for (int b = 0; b < n_blocks; ++b) per_block.push_back(without(key, b));
+			if (std::any_of(per_block.begin(), per_block.end(), [](const ColourModel& m) { return m.floor.empty(); }))
+				continue;
+			models.emplace(key, std::move(per_block));
+			const auto& [space, b, light] = key;
+			for (const double theta : lo.thresholds)
+				for (const double ratio : lo.obstacle_ratios)
+					for (const double smoothing : lo.smoothings)
+						for (const auto& [N, K] : fit)
+							for (const BoundaryModel boundary : lo.boundary_models)
+								consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0, StepSign::Either, 0.0, {}, {}});
 		}
-	if (windows.empty())
-		throw std::invalid_argument("no N and K of the learning grid fit the image past max_range (" +
-									std::to_string(start.scanner.max_range) + " m)");
-	for (const auto& [key, unused] : trainers)
-	{
-		std::vector<ColourModel> per_block;
-		for (int b = 0; b < n_blocks; ++b) per_block.push_back(without(key, b));
-		if (std::any_of(per_block.begin(), per_block.end(), [](const ColourModel& m) { return m.floor.empty(); }))
-			continue;
-		models.emplace(key, std::move(per_block));
-		const auto& [space, b, light] = key;
-		for (const double theta : lo.thresholds)
-			for (const double ratio : lo.obstacle_ratios)
-				for (const double smoothing : lo.smoothings)
-					for (const auto& [N, K] : windows)
-						for (const BoundaryModel boundary : lo.boundary_models)
-							consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0, StepSign::Either, 0.0, {}, {}});
 	}
-	// The brightness step on the grid's best: it is for what colour cannot
-	// see, and scoring it on every candidate would multiply the cost.
-	std::vector<LearnedCandidate> best = r.tried;
-	const std::size_t top = std::min<std::size_t>(best.size(), std::max(0, lo.step_candidates));
-	std::partial_sort(best.begin(), best.begin() + top, best.end(),
-					  [](const LearnedCandidate& a, const LearnedCandidate& b) { return a.score < b.score; });
-	for (std::size_t i = 0; i < top; ++i)
-		for (const double step : steps)
-			for (const StepSign sign : signs)
-			{
-				LearnedCandidate c = best[i];
-				c.step_threshold = step, c.step_sign = sign;
-				consider(c);
-			}
-	if (r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
-	if (const auto chroma = lo.chroma_on_tie ? chromaOnTie(r.tried, r.best) : std::nullopt)
+
+	/** The brightness step on the grid's best: it is for what colour cannot
+	 * see, and scoring it on every candidate would multiply the cost. */
+	void scoreSteps()
 	{
-		r.overruled = r.best;
-		r.best = *chroma, r.params = withCandidate(start, *chroma);
+		const std::vector<StepSign> signs = sortedOnce(lo.step_signs);
+		const std::vector<double> steps = signs.empty() ? std::vector<double>{} : sortedOnce(lo.step_thresholds);
+		std::vector<LearnedCandidate> best = r.tried;
+		const std::size_t top = std::min<std::size_t>(best.size(), std::max(0, lo.step_candidates));
+		std::partial_sort(best.begin(), best.begin() + top, best.end(),
+						  [](const LearnedCandidate& a, const LearnedCandidate& b) { return a.score < b.score; });
+		for (std::size_t i = 0; i < top; ++i)
+			for (const double step : steps)
+				for (const StepSign sign : signs)
+				{
+					LearnedCandidate c = best[i];
+					c.step_threshold = step, c.step_sign = sign;
+					consider(c);
+				}
 	}
-	r.training = o.training;
-	r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
-	for (const auto& [key, per_block] : models)
+
+	/** The histograms the result runs with: every block's counts (what each
+	 * block's score stood for), or the training pairs' with the held-aside
+	 * pairs' added (refit), or the training pairs' alone. */
+	void refit()
 	{
-		if (by_block)  // every block's counts: what each block's score stood for
-			r.models.emplace(key, without(key, -1));
-		else if (lo.refit)  // with the held-aside pairs' counts added
+		r.training = o.training;
+		r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
+		for (const auto& [key, per_block] : models)
 		{
-			HistogramTrainer all = blocks[0].at(key);
-			all.merge(aside.at(key));
-			r.models.emplace(key, all.model());
+			if (by_block) r.models.emplace(key, without(key, -1));
+			else if (lo.refit)
+			{
+				HistogramTrainer all = blocks[0].at(key);
+				all.merge(aside.at(key));
+				r.models.emplace(key, all.model());
+			}
+			else
+				r.models.emplace(key, per_block[0]);
 		}
-		else
-			r.models.emplace(key, per_block[0]);
+		r.model = r.models.at(histogramKeyOf(r.best));
+		if (by_block) r.refit_pairs = r.training_pairs;
+		else if (lo.refit) r.refit_pairs = r.training_pairs + set_aside;
 	}
-	r.model = r.models.at(histogramKeyOf(r.best));
-	if (by_block) r.refit_pairs = r.training_pairs;
-	else if (lo.refit) r.refit_pairs = r.training_pairs + set_aside;
-	if (lo.edge_bias)
+
+	/** The winner's hits on every training pair, with the histogram it will
+	 * run with, against the laser by their contrast; kept if the validation
+	 * pairs, scored as every candidate was, agree. */
+	void fitEdgeBias()
 	{
-		// The winner's hits on every training pair, with the histogram it will
-		// run with, against the laser by their contrast; kept if the held-aside
-		// pairs, scored as every candidate was, agree.
 		RangefinderParams unfitted = r.params;
 		unfitted.walls.wall_fit = false;
 		r.edge_bias = learnEdgeBias(edgeSamples(Rangefinder(unfitted, r.model), o), lo.edge_bias_min_samples);
-		if (!r.edge_bias.empty())
-		{
-			RangefinderParams with = r.params;
-			with.scanner.edge_bias = r.edge_bias;
-			std::vector<double> frame_errors, frame_shortfalls;
-			r.edge_bias_score =
-				score(rangefinders(with, histogramKeyOf(r.best)), validation, frame_errors, frame_shortfalls);
-			if (r.edge_bias_score < r.best.score) r.params = with;
-		}
+		if (r.edge_bias.empty()) return;
+		RangefinderParams with = r.params;
+		with.scanner.edge_bias = r.edge_bias;
+		std::vector<double> frame_errors, frame_shortfalls;
+		r.edge_bias_score = score(rangefinders(with, histogramKeyOf(r.best)), validation, frame_errors, frame_shortfalls);
+		if (r.edge_bias_score < r.best.score) r.params = with;
 	}
-	return r;
+};
+}  // namespace
+
+LearningResult learnParameters(const RangefinderParams& start, const RawlogTrainingOptions& o, const LearningOptions& lo,
+							   Progress* progress)
+{
+	o.validate();
+	start.validate();
+	validateLearning(lo);
+	Learning l(start, o, lo);
+	l.makeTrainers();
+	collect(start, o, lo, l.selected, l.blocks, l.aside, l.validation, l.r.training_pairs, l.set_aside, progress);
+	l.r.validation_pairs = static_cast<int>(l.validation.size());
+	l.r.split = lo.split;
+	l.r.validation = l.describeValidation();
+	l.scoreGrid();
+	l.scoreSteps();
+	if (l.r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
+	if (const auto chroma = lo.chroma_on_tie ? chromaOnTie(l.r.tried, l.r.best) : std::nullopt)
+	{
+		l.r.overruled = l.r.best;
+		l.r.best = *chroma, l.r.params = withCandidate(start, *chroma);
+	}
+	l.refit();
+	if (lo.edge_bias) l.fitEdgeBias();
+	return l.r;
 }
 
 RayError learningError(const RangePair& p, bool hit, double max_range)

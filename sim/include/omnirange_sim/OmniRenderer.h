@@ -55,6 +55,16 @@ class OmniRenderer
 	double ownShadow(const Frame& f, const Vec2& p, double& occluded) const;
 	Sample shadeRobot(double theta, double bearing) const;
 	PixelRay pixelRay(double u, double v) const;
+	/** The frame's ray casts from the robot's pose: its own shadow and the world by bearing. */
+	void castFrame(const Pose2& robot, Frame& f) const;
+	/** What the ray `pr` through image point (u, v) sees. */
+	Sample shade(const Frame& f, const PixelRay& pr, double u, double v) const;
+	/** One ray per pixel centre into `img`; each pixel's surface into `surf`. */
+	void shadePixels(const Frame& f, cv::Mat& img, cv::Mat& surf) const;
+	/** Where a pixel's surface differs from a neighbour's, four rays through its quarters averaged. */
+	void antialias(const Frame& f, cv::Mat& img, const cv::Mat& surf) const;
+	/** Sensor noise, from the precomputed table at an offset `seed` picks. */
+	void addNoise(cv::Mat& img, std::uint64_t seed) const;
 	int binOf(double bearing) const;
 	void buildShadowMap();
 	double floorLight(const Frame& f, const Vec2& p) const;
