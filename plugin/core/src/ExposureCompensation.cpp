@@ -33,21 +33,45 @@ std::vector<cv::Vec3b> FloorRing::colours(const cv::Mat& bgr) const
 	return out;
 }
 
-std::array<double, 3> FloorRing::median(const std::vector<cv::Vec3b>& colours)
+namespace
+{
+/** Per channel, the value at index n / 2 of the sorted values (the upper
+ * median), from counts of each of the 256 values: no sort, no copy. */
+std::array<double, 3> medianOfCounts(const std::array<std::array<int, 256>, 3>& counts, std::size_t n)
 {
 	std::array<double, 3> out{};
-	if (colours.empty()) return out;
-	std::vector<std::uint8_t> v(colours.size());
 	for (int c = 0; c < 3; ++c)
 	{
-		for (std::size_t i = 0; i < colours.size(); ++i) v[i] = colours[i][c];
-		std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-		out[c] = v[v.size() / 2];
+		std::size_t below = 0;
+		int v = 0;
+		while (below + static_cast<std::size_t>(counts[c][v]) <= n / 2) below += static_cast<std::size_t>(counts[c][v++]);
+		out[c] = v;
 	}
 	return out;
 }
+}  // namespace
 
-std::array<double, 3> FloorRing::medianColour(const cv::Mat& bgr) const { return median(colours(bgr)); }
+std::array<double, 3> FloorRing::median(const std::vector<cv::Vec3b>& colours)
+{
+	if (colours.empty()) return {};
+	std::array<std::array<int, 256>, 3> counts{};
+	for (const cv::Vec3b& p : colours)
+		for (int c = 0; c < 3; ++c) ++counts[c][p[c]];
+	return medianOfCounts(counts, colours.size());
+}
+
+std::array<double, 3> FloorRing::medianColour(const cv::Mat& bgr) const
+{
+	if (!bgr.isContinuous()) return median(colours(bgr));
+	if (bgr.type() != CV_8UC3 || bgr.cols != width_ || bgr.rows != height_)
+		throw std::invalid_argument("FloorRing: the image must be an 8-bit BGR image of the camera's size");
+	// Once a frame, on the hot path: counted straight from the image.
+	std::array<std::array<int, 256>, 3> counts{};
+	const auto* image = bgr.ptr<cv::Vec3b>();
+	for (const std::int32_t p : pixels_)
+		for (int c = 0; c < 3; ++c) ++counts[c][image[p][c]];
+	return medianOfCounts(counts, pixels_.size());
+}
 
 int FloorRing::countFree(const cv::Mat& bgr, const PixelClassifier& classifier) const
 {

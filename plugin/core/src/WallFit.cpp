@@ -46,7 +46,7 @@ namespace
 struct Point
 {
 	double x, y, w;  // position [m] and weight 1 / sigma^2
-	double bearing, range, sigma;
+	double cos_b, sin_b, range, sigma;  // the bearing's cosine and sine: each split of a run uses them again
 };
 
 /** A line n . p = d (|n| = 1) through weighted points [a, b). */
@@ -77,11 +77,11 @@ Line fitLine(const std::vector<Point>& pts, int a, int b)
 	return l;
 }
 
-/** Where the ray at `bearing` meets the line, or -1 when it grazes it or
- * meets it behind the sensor. */
-double rangeOnLine(const Line& l, double bearing)
+/** Where the ray of `p` meets the line, or -1 when it grazes it or meets it
+ * behind the sensor. */
+double rangeOnLine(const Line& l, const Point& p)
 {
-	const double c = l.nx * std::cos(bearing) + l.ny * std::sin(bearing);
+	const double c = l.nx * p.cos_b + l.ny * p.sin_b;
 	if (std::abs(c) < 0.1) return -1;  // within 6 degrees of running along it
 	const double r = l.d / c;
 	return r > 0 ? r : -1;
@@ -114,7 +114,7 @@ void fitRun(const std::vector<Point>& pts, int a, int b, const WallFitParams& p,
 	std::vector<double> on(b - a, -1);
 	for (int i = a; i < b; ++i)
 	{
-		on[i - a] = rangeOnLine(l, pts[i].bearing);
+		on[i - a] = rangeOnLine(l, pts[i]);
 		const double z = on[i - a] < 0 ? 1e9 : std::abs(on[i - a] - pts[i].range) / pts[i].sigma;
 		worst_z = std::max(worst_z, z);
 	}
@@ -174,8 +174,8 @@ int fitWalls(std::vector<Ray>& rays, const OmniCameraModel& camera, const WallFi
 			flush();
 			continue;
 		}
-		run.push_back({r.range * std::cos(r.bearing), r.range * std::sin(r.bearing), 1 / (sigma * sigma), r.bearing,
-					   r.range, sigma});
+		const double c = std::cos(r.bearing), s = std::sin(r.bearing);
+		run.push_back({r.range * c, r.range * s, 1 / (sigma * sigma), c, s, r.range, sigma});
 		index.push_back(i);
 	}
 	flush();
