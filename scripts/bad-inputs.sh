@@ -361,6 +361,21 @@ if [ -d "$real" ]; then
   mkdir -p same_view && for i in 1 2 3 4 5; do cp "$real/img_para_001.pgm" "same_view/copy$i.pgm"; done
   run_case "calibrate: five copies of one board image" "error:found in 1 of 5" same.yaml -- "$apps/omnirange-calibrate" -q --checkerboard-dir same_view --board 8x6 --square 0.042 -o same.yaml
 fi
+# After a seventh: outputs checked before the work, limits that end a run with a line, things given twice.
+cp floor.hist kept.hist
+run_case "train: --learn-candidates into a missing folder" "error:does not exist" new_learn.ini -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o kept.hist --learn new_learn.ini --learn-candidates nodir/c.csv
+cmp -s kept.hist floor.hist || { echo "| | PROBLEM: the histogram was replaced by a run that failed |"; problems=$((problems + 1)); }
+run_case "train: a file-size limit (ulimit -f) reached as it writes" "error:" fs.hist -- bash -c 'ulimit -f 20; exec "$@"' _ "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o fs.hist
+{ cat w.world; printf "bounds xmin=-1 ymin=-1 xmax=1 ymax=1\n"; } > twobounds.world
+run_case "sim: a world with its bounds given twice" "error:given a second time" tb.rawlog -- "$apps/omnirange-sim" -q -w twobounds.world -r w.route -n 2 -o tb.rawlog
+mkdir -p imp_dir && cp imp/100.0.jpg imp_dir/ && mkdir -p imp_dir/100.4.jpg
+run_case "import: a folder named like an image" "error:is not a regular file" imp.rawlog -- "$apps/omnirange-import" -q --images imp_dir --laser imp_laser.csv -o imp.rawlog
+run_case "calibrate: --square 1e-300" "error:within \[0.001, 10\] m" none.out -- "$apps/omnirange-calibrate" -q --checkerboard tiny.pgm --board 8x6 --square 1e-300
+"$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o scanned_by_scan.rawlog
+run_case "sim: -o over a scan's output (its images link)" "error:" none.out -- "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o scanned_by_scan.rawlog
+[ -L scanned_by_scan_Images ] || { echo "| | PROBLEM: the scan's images link was replaced |"; problems=$((problems + 1)); }
+cat s.rawlog s.rawlog > joined.rawlog && ln -sfn s_Images joined_Images
+run_case "scan: two rawlogs joined (time runs back)" "error:before one read earlier" jn.rawlog -- "$apps/omnirange-scan" -q -i joined.rawlog -c f.ini -H floor.hist -o jn.rawlog
 printf 'OMNIHIST' > left.hist.tmp-999999999
 "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o left.hist
 [ ! -e left.hist.tmp-999999999 ] || { echo "| | PROBLEM: a killed run's left.hist.tmp-PID was not cleaned |"; problems=$((problems + 1)); }

@@ -38,6 +38,7 @@ std::string lastLine(const std::string& file)
 	sigset_t none;
 	sigemptyset(&none);
 	::sigprocmask(SIG_SETMASK, &none, nullptr);
+	::signal(SIGXFSZ, SIG_DFL);  // the apps ignore it (CommandLine.cpp); MRPT's programs keep their default
 	restoreAddressSpaceLimit();  // the apps cap their own (MemoryLimit.h), not MRPT's programs
 	const int in = ::open("/dev/null", O_RDONLY);
 	const int out = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);

@@ -266,6 +266,8 @@ std::string markdownTable(const std::string& name, const Summary& s)
 std::string fillTables(const std::string& text, const Summary& s)
 {
 	static const std::string open = "<!-- table: ", close = "<!-- end table -->";
+	const std::size_t first_end = text.find('\n');
+	const bool crlf = first_end != std::string::npos && first_end > 0 && text[first_end - 1] == '\r';
 	std::string out;
 	std::size_t at = 0;
 	for (std::size_t start; (start = text.find(open, at)) != std::string::npos;)
@@ -279,7 +281,10 @@ std::string fillTables(const std::string& text, const Summary& s)
 									 std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(start), '\n')) +
 									 " is not closed before the next one opens");
 		const std::string name = text.substr(start + open.size(), name_end - start - open.size());
-		out += text.substr(at, name_end + 4 - at) + "\n" + markdownTable(name, s) + close;
+		std::string table = markdownTable(name, s);
+		if (crlf)  // a file written with CRLF line ends keeps them in its tables too
+			for (std::size_t k = 0; (k = table.find('\n', k)) != std::string::npos; k += 2) table.insert(k, "\r");
+		out += text.substr(at, name_end + 4 - at) + (crlf ? "\r\n" : "\n") + table + close;
 		at = end + close.size();
 	}
 	return out + text.substr(at);

@@ -53,6 +53,19 @@ Route loadRoute(const std::string& path)
 
 void checkRouteClear(const Route& route, const World& world, double clearance, double robot_height)
 {
+	// The true map covers the world's bounds: a route past them is mapped nowhere.
+	for (std::size_t i = 0; i < route.waypoints.size(); ++i)
+	{
+		const Vec2& p = route.waypoints[i];
+		if (world.hi.x > world.lo.x && !(p.x >= world.lo.x && p.x <= world.hi.x && p.y >= world.lo.y && p.y <= world.hi.y))
+		{
+			std::ostringstream m;
+			m << route.file << ":" << route.lines[i] << ": the waypoint (" << p.x << ", " << p.y
+			  << ") lies outside the bounds of " << world.file << " (x " << world.lo.x << " to " << world.hi.x << ", y "
+			  << world.lo.y << " to " << world.hi.y << ")";
+			throw std::runtime_error(m.str());
+		}
+	}
 	for (std::size_t i = 0; i + 1 < route.waypoints.size(); ++i)
 		for (const auto& s : world.solids)
 		{

@@ -78,9 +78,18 @@ class Parser
 		return std::move(w_);
 	}
 
+	/** A statement that sets one thing of the world (its bounds, a
+	 * material by name) given again: the later would silently win. */
+	void requireOnce(const std::string& what)
+	{
+		const auto [it, fresh] = seen_.emplace(what, line_);
+		if (!fresh) throw error(what + " is given a second time (first at line " + std::to_string(it->second) + ")");
+	}
+
 	/** One statement line other than the header, name and plan. */
 	void statement(const std::string& cmd, const Fields& fl)
 	{
+		if (cmd == "bounds" || cmd == "floor" || cmd == "sky" || cmd == "light") requireOnce("'" + cmd + "'");
 		if (cmd == "bounds")
 		{
 			w_.lo = {fl.num("xmin"), fl.num("ymin")};
@@ -137,6 +146,7 @@ class Parser
    private:
 	std::string path_;
 	int line_{0};
+	std::map<std::string, int> seen_;  // what requireOnce() has seen -> its line
 	World w_;
 	std::map<char, LegendEntry> legend_;
 	bool have_bounds_{false};
@@ -178,6 +188,7 @@ class Parser
 	{
 		Material m;
 		m.name = fl.str("name");
+		requireOnce("material '" + m.name + "'");  // a stock one may be redefined, once
 		m.rgb = fl.rgb("rgb");
 		m.grain = fl.has("grain") ? fl.positive("grain") : m.grain;
 		m.grain_contrast = fl.num("grain_contrast", m.grain_contrast);

@@ -112,4 +112,14 @@ TEST(Summary, FillReplacesOnlyTheBlocksAndCheckFindsAStaleOne)
 
 	std::ofstream(page) << "<!-- table: table2 -->\nnever closed\n";
 	EXPECT_THROW(app::SummaryApp(o).run(), std::runtime_error);
+
+	// A page with CRLF line ends keeps them on every line, its tables' too.
+	std::ofstream(page, std::ios::binary) << "# Results\r\n<!-- table: table2 -->\r\nold\r\n<!-- end table -->\r\nAfter.\r\n";
+	o.check = false;
+	app::SummaryApp(o).run();
+	const std::string crlf = test::readText(page);
+	std::size_t bare = 0;
+	for (std::size_t k = 0; k < crlf.size(); ++k) bare += crlf[k] == '\n' && (k == 0 || crlf[k - 1] != '\r');
+	EXPECT_EQ(bare, 0u) << crlf;
+	EXPECT_NE(crlf.find("| maze | 0.138 m |"), std::string::npos) << crlf;
 }

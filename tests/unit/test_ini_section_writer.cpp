@@ -2,6 +2,7 @@
 // keys at the section's end, every comment and other section kept.
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/config/IniSectionWriter.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <gtest/gtest.h>
 
@@ -40,6 +41,17 @@ TEST(IniSectionWriter, AFileWithCrlfLineEndsKeepsThemOnEveryLine)
 	std::ofstream(path, std::ios::binary) << "; mine\r\n[rangefinder]\r\nN = 20\r\n\r\n[other]\r\nK = 7\r\n";
 	writeIniSection(path, "rangefinder", {{"N", "10"}, {"K", "4"}});
 	EXPECT_EQ(read(path), "; mine\r\n[rangefinder]\r\nN = 10\r\nK = 4\r\n\r\n[other]\r\nK = 7\r\n");
+}
+
+TEST(IniSectionWriter, ASectionOrKeyInAnotherCaseIsTheSameOne)
+{
+	// MRPT reads [RangeFinder] as [rangefinder] and Threshold as threshold:
+	// a second section or key would make every reader refuse the file.
+	const std::string path = tmp("case.ini");
+	std::ofstream(path) << "[RangeFinder]\nThreshold = 0.05\ncx = 100\n";
+	writeIniSection(path, "rangefinder", {{"threshold", "0.1"}, {"cx", "101"}, {"cy", "99"}});
+	EXPECT_EQ(read(path), "[RangeFinder]\nThreshold = 0.1\ncx = 101\ncy = 99\n");
+	EXPECT_EQ(requireWellFormedIni(path), 3);
 }
 
 TEST(IniSectionWriter, AppendsAMissingSectionAndCreatesAMissingFile)

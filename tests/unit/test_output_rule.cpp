@@ -155,9 +155,11 @@ TEST(OutputRule, ALinkedFolderAReadOnlyFileAndTwoOutputsInOnePlaceAreRefused)
 	fs::create_directory(d + "/in_Images");
 	write(d + "/in.rawlog", std::string("\x1f\x8b", 2));
 	fs::create_directory_symlink(d + "/in_Images", d + "/out_Images");
-	EXPECT_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-test", {d + "/in.rawlog"}, false), std::runtime_error);  // no rawlog of ours beside it: the user's link
+	EXPECT_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-scan", {d + "/in.rawlog"}, false), std::runtime_error);  // no rawlog of ours beside it: the user's link
 	write(d + "/out.rawlog", std::string("\x1f\x8b", 2));
-	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-test", {d + "/in.rawlog"}, false));
+	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-scan", {d + "/in.rawlog"}, false));
+	// Only a scan makes such links: another program does not replace one unasked.
+	EXPECT_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-sim", {d + "/in.rawlog"}, false), std::runtime_error);
 	// An output reached through a link and '..' is where the system takes it, not where the text says.
 	fs::create_directories(d + "/data/images");
 	fs::create_directory_symlink(d + "/data/images", d + "/imgs");

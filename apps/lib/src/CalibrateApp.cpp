@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace omnirange::app
 {
@@ -313,8 +314,18 @@ MirrorRim CalibrateApp::runRim()
 CameraParams CalibrateApp::runOCamCalib()
 {
 	const OCamCalibFile f = readOCamCalib(o_.ocamcalib);
-	const CameraParams cam = ocamCamera(f);
-	const OmniCameraModel model(cam);  // refuses a polynomial whose angle does not grow
+	CameraParams cam;
+	std::optional<OmniCameraModel> checked;
+	try
+	{
+		cam = ocamCamera(f);
+		checked.emplace(cam);  // refuses a polynomial whose angle does not grow
+	}
+	catch (const std::invalid_argument& e)  // the camera it describes is impossible: say which file
+	{
+		throw std::runtime_error(o_.ocamcalib + ": " + e.what());
+	}
+	const OmniCameraModel& model = *checked;
 	std::printf("OCamCalib model: %zu coefficients, centre cx = %.2f px, cy = %.2f px, image %d x %d; "
 				"the horizon at %.1f px\n",
 				f.poly.size(), cam.cx, cam.cy, cam.image_width, cam.image_height, model.horizonRho());

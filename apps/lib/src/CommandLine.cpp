@@ -10,6 +10,7 @@
 #include <opencv2/core/utils/logger.hpp>
 
 #include <filesystem>
+#include <csignal>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -129,6 +130,10 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
 	temporaries::removeOnInterrupt();
 	temporaries::removeAtExit(name);
+	// Past a file-size limit (ulimit -f) a write then fails with EFBIG, which
+	// the writers report naming the file, rather than the signal killing the
+	// run without a word.
+	std::signal(SIGXFSZ, SIG_IGN);
 	capAddressSpaceAtHalfTheMemory();
 	try
 	{

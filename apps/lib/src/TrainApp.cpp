@@ -8,6 +8,7 @@
 #include <omnirange/io/Progress.h>
 
 #include <cmath>
+#include <optional>
 
 namespace omnirange::app
 {
@@ -101,9 +102,14 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 {
 	Progress progress("objects read (learning)");
 	const LearningResult l = learnParameters(params, o_.training, o_.learning, progressAt(o_.verbosity, progress));
-	l.model.save(o_.output);
-	writeFileAtomically(o_.learn_ini, learnedIni(l, o_.section));
-	if (!o_.learn_candidates.empty()) writeFileAtomically(o_.learn_candidates, candidatesCsv(l));
+	// The histogram and the ini that goes with it (and the candidates) all or none.
+	StagedFile histogram(o_.output, [&](const std::string& tmp) { l.model.save(tmp); });
+	StagedFile ini(o_.learn_ini, [&](const std::string& tmp) { writeFileAtomically(tmp, learnedIni(l, o_.section)); });
+	std::optional<StagedFile> candidates;
+	if (!o_.learn_candidates.empty())
+		candidates.emplace(o_.learn_candidates, [&](const std::string& tmp) { writeFileAtomically(tmp, candidatesCsv(l)); });
+	histogram.commit(), ini.commit();
+	if (candidates) candidates->commit();
 	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: %s (mean error %.4f m) -> %s, %s", l.training_pairs,
 					  l.validation_pairs, describe(l.best).c_str(), l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
 	if (const auto other = bestInOtherSpace(l))

@@ -39,7 +39,16 @@ void writeIniSection(const std::string& path, const std::string& section,
 	const bool crlf = !lines.empty() && !lines.front().empty() && lines.front().back() == '\r';
 	for (auto& l : lines)
 		if (!l.empty() && l.back() == '\r') l.pop_back();
-	std::map<std::string, std::string> pending(values.begin(), values.end());
+	// MRPT finds a section and a key in any mix of case ([RangeFinder] is
+	// [rangefinder]): so does the writer, or it would add a second one that
+	// every reader refuses.
+	const auto folded = [](std::string s) {
+		for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+		return s;
+	};
+	const auto same_section = [&](const std::string& name) { return folded(name) == folded(section); };
+	std::map<std::string, std::string> pending;  // folded key -> value
+	for (const auto& [key, value] : values) pending[folded(key)] = value;
 	std::string current;
 	int headers = 0;
 	std::ptrdiff_t insert_at = -1;  // after the section's last key (or its header)
@@ -49,14 +58,14 @@ void writeIniSection(const std::string& path, const std::string& section,
 		if (line.kind == IniLine::Kind::Section)
 		{
 			current = line.name;
-			if (current == section && ++headers > 1)
+			if (same_section(current) && ++headers > 1)
 				throw std::runtime_error(path + ":" + std::to_string(i + 1) + ": section [" + section + "] appears twice");
-			if (current == section) insert_at = static_cast<std::ptrdiff_t>(i);
+			if (same_section(current)) insert_at = static_cast<std::ptrdiff_t>(i);
 			continue;
 		}
-		if (current != section || line.kind != IniLine::Kind::Key) continue;
+		if (!same_section(current) || line.kind != IniLine::Kind::Key) continue;
 		insert_at = static_cast<std::ptrdiff_t>(i);
-		if (const auto it = pending.find(line.name); it != pending.end())
+		if (const auto it = pending.find(folded(line.name)); it != pending.end())
 		{
 			lines[i] = withValue(lines[i], line.name, it->second);
 			pending.erase(it);
@@ -65,7 +74,7 @@ void writeIniSection(const std::string& path, const std::string& section,
 	std::vector<std::string> added;
 	for (const auto& [key, value] : values)
 	{
-		if (!pending.count(key)) continue;
+		if (!pending.count(folded(key))) continue;
 		if (const auto c = comments.find(key); c != comments.end()) added.push_back("; " + c->second);
 		added.push_back(key + " = " + value);
 	}

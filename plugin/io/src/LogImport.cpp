@@ -93,8 +93,8 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 	if (!fs::is_directory(dir)) throw std::runtime_error("no image folder '" + dir + "'");
 	for (const auto& entry : fs::directory_iterator(dir))
 	{
-		if (!isImageFileName(entry.path().string()) || entry.is_directory()) continue;
-		// Named as an image but a FIFO or a device: it would block the read, and skipping it would lose a frame.
+		if (!isImageFileName(entry.path().string())) continue;
+		// Named as an image but a folder, a FIFO or a device: skipping it would lose a frame (and a FIFO would block).
 		if (!entry.is_regular_file())
 			throw std::runtime_error("'" + entry.path().string() + "' is named as an image but is not a regular file");
 		const std::string stem = entry.path().stem().string();

@@ -1,14 +1,20 @@
 #include "omnirange/io/RawlogReader.h"
 
 #include "omnirange/io/RawlogWriter.h"
+#include "omnirange/config/OptionsTable.h"
 #include "omnirange/config/Temporaries.h"
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <vector>
 #include <stdexcept>
 
 namespace omnirange
@@ -42,6 +48,24 @@ std::string gist(const std::exception& e)
 }
 }  // namespace
 
+void RawlogReader::requireTimeGoesOn(const mrpt::serialization::CSerializable::Ptr& obj)
+{
+	std::vector<mrpt::Clock::time_point> times;
+	if (const auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) times.push_back(o->timestamp);
+	else if (const auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+		for (const auto& o : *sf) times.push_back(o->timestamp);
+	for (const auto t : times)
+	{
+		if (t == INVALID_TIMESTAMP) continue;
+		const double seconds = mrpt::Clock::toDouble(t);
+		if (latest_ > 0 && seconds < latest_ - kMaxTimeBack)
+			throw std::runtime_error("rawlog '" + path_ + "': object " + std::to_string(count_) + " is at " +
+									 formatDouble(seconds) + " s, " + formatDouble(std::round((latest_ - seconds) * 1000) / 1000) +
+									 " s before one read earlier (two rawlogs joined, or a clock set back?)");
+		latest_ = std::max(latest_, seconds);
+	}
+}
+
 mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 {
 	const auto before = in_->getPosition();
@@ -74,6 +98,7 @@ mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 	}
 	if (!obj) throw fail("a null object");
 	++count_;
+	requireTimeGoesOn(obj);
 	return obj;
 }
 

@@ -2,6 +2,7 @@
 
 #include "omnirange/config/AtomicWrite.h"
 #include "omnirange/io/OutputRule.h"
+#include "omnirange/io/RawlogScan.h"
 #include "omnirange/config/Temporaries.h"
 
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -52,8 +53,9 @@ void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& pr
 	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
 	// The images go beside the file written (through a link, the file it names).
 	const std::string file = replacedFileOf(outputPath(rawlog)), images = imagesDirFor(file);
+	// Only a scan writes such a link: another program's output does not replace it unasked.
 	requireOutputAllowed(images, OutputKind::Folder, program, inputs,
-						 force || imagesLinkOf(file, images));
+						 force || (program == kScanProgram && imagesLinkOf(file, images)));
 }
 
 RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, int gz_level)
@@ -150,7 +152,8 @@ void RawlogWriter::commit()
 	// all three moves succeeded is the old folder removed.
 	// The rule the programs check before they start, checked again here for
 	// every writer (a library user need not have called it).
-	requireOutputAllowed(images_, OutputKind::Folder, owner_, {}, replace_any_ || imagesLinkOf(path_, images_));
+	requireOutputAllowed(images_, OutputKind::Folder, owner_, {},
+						 replace_any_ || (owner_ == kScanProgram && imagesLinkOf(path_, images_)));
 	if (has_images_) listOutputFolder(tmp_images_);
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
 	const std::string old = images_ + ".old-" + std::to_string(::getpid());

@@ -119,9 +119,9 @@ namespace
 {
 void requireBoardAndFiles(const std::vector<std::string>& files, const CheckerboardOptions& o)
 {
-	if (o.columns < 2 || o.rows < 2 || o.columns > kMaxBoardCorners || o.rows > kMaxBoardCorners || !(o.square > 0 && o.square <= 10))
+	if (o.columns < 2 || o.rows < 2 || o.columns > kMaxBoardCorners || o.rows > kMaxBoardCorners || !(o.square >= 0.001 && o.square <= 10))
 		throw std::invalid_argument("the board needs 2 to " + std::to_string(kMaxBoardCorners) +
-									" inner corners each way and a square within (0, 10] m");
+									" inner corners each way and a square within [0.001, 10] m");
 	// One photograph given twice would count as two boards and look like agreement.
 	for (std::size_t i = 0; i < files.size(); ++i)
 		for (std::size_t j = i + 1; j < files.size(); ++j)

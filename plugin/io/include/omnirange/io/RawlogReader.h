@@ -26,16 +26,25 @@ class RawlogReader
 	~RawlogReader();
 
 	/** The next object, or nullptr at a clean end of file. Throws
-	 * std::runtime_error on a truncated or corrupt file or an unknown class. */
+	 * std::runtime_error on a truncated or corrupt file, an unknown class,
+	 * or an observation more than kMaxTimeBack before the latest one (two
+	 * rawlogs joined, or a clock set back: every pairing by time would be wrong). */
 	mrpt::serialization::CSerializable::Ptr next();
 
 	std::size_t objectsRead() const { return count_; }
 	const std::string& path() const { return path_; }
 
    private:
+	void requireTimeGoesOn(const mrpt::serialization::CSerializable::Ptr& obj);
+
 	std::string path_;
 	std::unique_ptr<mrpt::io::CFileGZInputStream> in_;
 	std::size_t count_{0};
+	double latest_{0};  ///< [s] the latest observation's time so far (0: none yet)
 };
+
+/** [s] How far an observation may come before the latest one: sensors'
+ * threads write a little out of order, a log joined to another jumps back. */
+inline constexpr double kMaxTimeBack = 1.0;
 
 }  // namespace omnirange
