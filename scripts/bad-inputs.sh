@@ -376,6 +376,12 @@ run_case "sim: -o over a scan's output (its images link)" "error:" none.out -- "
 [ -L scanned_by_scan_Images ] || { echo "| | PROBLEM: the scan's images link was replaced |"; problems=$((problems + 1)); }
 cat s.rawlog s.rawlog > joined.rawlog && ln -sfn s_Images joined_Images
 run_case "scan: two rawlogs joined (time runs back)" "error:before one read earlier" jn.rawlog -- "$apps/omnirange-scan" -q -i joined.rawlog -c f.ini -H floor.hist -o jn.rawlog
+# After an eighth: a gzip file that is not a rawlog is not a rawlog's to replace; a laser that never returns.
+mkdir -p tarsrc && echo mine > tarsrc/a.txt && tar czf backup.tar.gz tarsrc && cp backup.tar.gz backup.tar.gz.orig
+run_case "scan: -o a user's .tar.gz (gzip, not a rawlog)" "error:exists and is not a rawlog" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o backup.tar.gz
+cmp -s backup.tar.gz backup.tar.gz.orig || { echo "| | PROBLEM: the user's backup.tar.gz was replaced |"; problems=$((problems + 1)); }
+printf '100.0, 1000, 2000, 3000\n100.4, 1000, 2000, 3000\n' > imp_mm.csv
+run_case "import: laser ranges in millimetres (no range within max range)" "error:ranges in millimetres" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_mm.csv --laser-max-range 10 -o imp.rawlog
 printf 'OMNIHIST' > left.hist.tmp-999999999
 "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o left.hist
 [ ! -e left.hist.tmp-999999999 ] || { echo "| | PROBLEM: a killed run's left.hist.tmp-PID was not cleaned |"; problems=$((problems + 1)); }

@@ -67,6 +67,11 @@ TEST(OptionsTable, OldAndUnknownKeysAreNamed)
 	const std::string old = loadError("forward_azimuth = 3.14159");
 	EXPECT_NE(old.find("forward_azimuth_deg"), std::string::npos) << old;
 	EXPECT_NE(loadError("threshhold = 0.1").find("unknown key 'threshhold'"), std::string::npos);
+	// A key in another case is the key, as MRPT reads it (and as --save-to writes into it).
+	EXPECT_EQ(loadError("Threshold = 0.1\nn = 12"), "");
+	RangefinderParams p;
+	p.loadFromConfig(mrpt::config::CConfigFileMemory("[rangefinder]\nThreshold = 0.1\n"), "rangefinder");
+	EXPECT_DOUBLE_EQ(p.threshold, 0.1);
 }
 
 TEST(OptionsTable, AnglesAreDegreesInTheIniAndRadiansInMemory)

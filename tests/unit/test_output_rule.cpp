@@ -8,7 +8,9 @@
 
 #include "../common/FactorySample.h"
 
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/serialization/CArchive.h>
 #include <opencv2/core.hpp>
 
 #include <gtest/gtest.h>
@@ -24,6 +26,12 @@ namespace
 std::string fresh(const std::string& name) { return test::freshDir("omnirange_output_rule", name); }
 
 void write(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+/** A rawlog of one odometry observation: a rawlog by its content, as the rule judges one. */
+void writeRawlog(const std::string& path)
+{
+	mrpt::io::CFileGZOutputStream f(path);
+	mrpt::serialization::archiveFrom(f) << *mrpt::obs::CObservationOdometry::Create();
+}
 
 std::string read(const std::string& path) { return test::readText(path); }
 
@@ -70,7 +78,7 @@ TEST(OutputRule, AFileIsReplacedOnlyByAnOutputOfItsKind)
 {
 	const std::string d = fresh("files");
 	write(d + "/notes.txt", "my notes\n");
-	write(d + "/old.rawlog", std::string("\x1f\x8b\x08\x00", 4));
+	writeRawlog(d + "/old.rawlog");
 	write(d + "/floor.hist", "OMNIHIST....");
 	write(d + "/my.ini", "; mine\n[rangefinder]\nN = 3\n");
 	EXPECT_EQ(refusal(d + "/old.rawlog", OutputKind::Rawlog), "");
@@ -115,7 +123,7 @@ TEST(OutputRule, WhatAnInputBringsIsAnInputToo)
 	EXPECT_NE(refusal(d + "/b.ini", OutputKind::Ini, {d + "/cam.ini"}, true).find("is the input"), std::string::npos);
 	EXPECT_NE(refusal(d + "/b2.ini", OutputKind::Ini, {d + "/cam.ini"}, true).find("is the input"), std::string::npos);
 	// A rawlog's images folder, even as a link named like it.
-	write(d + "/s.rawlog", std::string("\x1f\x8b", 2));
+	writeRawlog(d + "/s.rawlog");
 	fs::create_directory(d + "/elsewhere");
 	write(d + "/elsewhere/1.jpg", "jpg");
 	fs::create_directory_symlink(d + "/elsewhere", d + "/s_Images");
@@ -136,7 +144,7 @@ TEST(OutputRule, ALinkedFolderAReadOnlyFileAndTwoOutputsInOnePlaceAreRefused)
 	fs::create_directory_symlink(d + "/mine", d + "/report");
 	EXPECT_NE(refusal(d + "/report", OutputKind::Folder, {}).find("symbolic link"), std::string::npos);
 	EXPECT_EQ(refusal(d + "/report", OutputKind::Folder, {}, true), "");  // --force replaces the link only
-	write(d + "/locked.rawlog", std::string("\x1f\x8b", 2));
+	writeRawlog(d + "/locked.rawlog");
 	fs::permissions(d + "/locked.rawlog", fs::perms::owner_read);
 	EXPECT_NE(refusal(d + "/locked.rawlog", OutputKind::Rawlog, {}, true).find("read-only"), std::string::npos);
 	try
@@ -153,10 +161,10 @@ TEST(OutputRule, ALinkedFolderAReadOnlyFileAndTwoOutputsInOnePlaceAreRefused)
 
 	// A rawlog's images folder may be the link a scan made to its input's images: a second scan replaces it.
 	fs::create_directory(d + "/in_Images");
-	write(d + "/in.rawlog", std::string("\x1f\x8b", 2));
+	writeRawlog(d + "/in.rawlog");
 	fs::create_directory_symlink(d + "/in_Images", d + "/out_Images");
 	EXPECT_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-scan", {d + "/in.rawlog"}, false), std::runtime_error);  // no rawlog of ours beside it: the user's link
-	write(d + "/out.rawlog", std::string("\x1f\x8b", 2));
+	writeRawlog(d + "/out.rawlog");
 	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-scan", {d + "/in.rawlog"}, false));
 	// Only a scan makes such links: another program does not replace one unasked.
 	EXPECT_THROW(requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-sim", {d + "/in.rawlog"}, false), std::runtime_error);
@@ -209,12 +217,22 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	// A file output's temporaries: an empty one (killed before it wrote) and
 	// one of its kind are removed; another kind is a user's and stays.
 	write(d + "/x.rawlog.tmp-999994", "");
-	write(d + "/x.rawlog.tmp-999993", std::string("\x1f\x8b", 2) + "gzip");
+	writeRawlog(d + "/x.rawlog.tmp-999993");
 	write(d + "/x.rawlog.tmp-999992", "a user's text");
 	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
 	EXPECT_FALSE(fs::exists(d + "/x.rawlog.tmp-999994"));
 	EXPECT_FALSE(fs::exists(d + "/x.rawlog.tmp-999993"));
 	EXPECT_TRUE(fs::exists(d + "/x.rawlog.tmp-999992"));
+	// A user's gzip file (a .tar.gz backup) is gzip but no rawlog: a leftover's
+	// name does not make it one, and a rawlog output does not replace it.
+	const auto gzipOf = [](const std::string& path) {
+		mrpt::io::CFileGZOutputStream f(path);
+		f.Write("ustar backup", 12);
+	};
+	gzipOf(d + "/x.rawlog.tmp-999991"), gzipOf(d + "/backup.tar.gz");
+	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
+	EXPECT_TRUE(fs::exists(d + "/x.rawlog.tmp-999991"));
+	EXPECT_THROW(requireRawlogOutputAllowed(d + "/backup.tar.gz", "omnirange-scan", {}, false), std::runtime_error);
 }
 
 TEST(OutputRule, AFileIsWrittenThroughItsLinkKeepsItsModeAndAReadOnlyOneIsKept)

@@ -255,6 +255,8 @@ std::string FieldInfo::rangeMessage() const
 	return "must be " + (range ? range->text() : std::string("valid")) + (plain ? "" : " " + unit);
 }
 
+bool sameKey(const std::string& a, const std::string& b) { return lowercase(a) == lowercase(b); }
+
 int requireWellFormedIni(const std::string& path)
 {
 	std::map<std::string, int> seen;  // "section/key", lower case (as MRPT matches them) -> line
@@ -291,12 +293,14 @@ std::vector<std::string> checkSectionKeys(const mrpt::config::CConfigFileBase& c
 	if (!cfg.sectionExists(section)) throw std::invalid_argument("section [" + section + "] not found");
 	std::vector<std::string> present;
 	cfg.getAllKeys(section, present);
+	// MRPT finds a key in any mix of case: so is it known in any (Threshold is threshold).
+	const auto same = sameKey;
 	for (const auto& k : present)
 	{
 		for (const auto& [old_key, instead] : renamed)
-			if (k == old_key)
+			if (same(k, old_key))
 				throw std::invalid_argument("[" + section + "] key '" + k + "' is no longer read: " + instead);
-		if (std::find(known.begin(), known.end(), k) == known.end())
+		if (std::none_of(known.begin(), known.end(), [&](const std::string& key) { return same(k, key); }))
 			throw std::invalid_argument("unknown key '" + k + "' in section [" + section + "]");
 	}
 	return present;

@@ -208,6 +208,13 @@ UserLogs readUserLogs(const LogImportOptions& o)
 			"the laser's max range, " + formatDouble(u.laser_max_range) + " m, is past " + formatDouble(kMaxLaserRange) + " m");
 	const std::string laser_file = o.carmen_log.empty() ? o.laser_csv : o.carmen_log;
 	const std::string odometry_file = o.carmen_log.empty() ? o.odometry_csv : o.carmen_log;
+	// A laser that never returns teaches nothing: ranges in millimetres, or the wrong max range.
+	const bool any_return = std::any_of(u.scans.begin(), u.scans.end(), [&](const LaserRow& row) {
+		return std::any_of(row.ranges.begin(), row.ranges.end(), [&](double r) { return r > 0 && r < u.laser_max_range; });
+	});
+	if (!u.scans.empty() && !any_return)
+		throw std::runtime_error("no range of '" + laser_file + "' lies within (0, " + formatDouble(u.laser_max_range) +
+								 ") m, the laser's max range: ranges in millimetres, or another max range?");
 	requireSharedTime(u.images, u.scans, laser_file), requireSharedTime(u.images, u.odometry, odometry_file);
 	for (const OdometryRow& p : u.odometry)
 		if (!(std::abs(p.x) <= kMaxOdometryCoordinate && std::abs(p.y) <= kMaxOdometryCoordinate &&

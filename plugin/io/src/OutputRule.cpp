@@ -378,7 +378,13 @@ bool isOfKind(const std::string& path, OutputKind kind)
 	const std::string head = firstBytes(path, 8);
 	switch (kind)
 	{
-		case OutputKind::Rawlog: return head.size() >= 2 && head[0] == '\x1f' && head[1] == '\x8b';
+		case OutputKind::Rawlog:  // by its first object's class, not by being gzip (a user's .tar.gz is gzip too)
+		{
+			const std::string first = unzippedHead(path, 64);
+			for (const char* cls : {"CObservation", "CSensoryFrame", "CActionCollection", "CRawlog"})
+				if (first.find(cls) != std::string::npos) return true;
+			return false;
+		}
 		case OutputKind::GridMap: return unzippedHead(path, 64).find("COccupancyGridMap2D") != std::string::npos;
 		case OutputKind::Histogram: return head == "OMNIHIST";
 		case OutputKind::Ini: return isIni(path);

@@ -328,6 +328,9 @@ int requireWellFormedIni(const std::string& path);
  * otherwise leave all its keys at their defaults. */
 void requireOnlySections(const std::string& path, const std::vector<std::string>& known);
 
+/** Whether two keys are one as MRPT reads them: in any mix of case. */
+bool sameKey(const std::string& a, const std::string& b);
+
 /** The parts of load() that do not depend on the struct: the section's
  * keys, each checked against `known` and `renamed`. Returns the keys present. */
 std::vector<std::string> checkSectionKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
@@ -388,8 +391,8 @@ void OptionsTable<S>::load(S& s, const mrpt::config::CConfigFileBase& cfg, const
 	const auto present = checkSectionKeys(cfg, section, known, renamed_);
 	for (const auto& f : fields_)
 	{
-		bool found = false;
-		for (const auto& k : present) found = found || k == f.info.key;
+		bool found = false;  // in any mix of case, as MRPT finds it
+		for (const auto& k : present) found = found || sameKey(k, f.info.key);
 		if (!found) continue;
 		const std::string text = readRawValue(cfg, section, f.info.key);
 		try
