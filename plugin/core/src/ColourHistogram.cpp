@@ -85,7 +85,8 @@ double ColourHistogram::probability(std::uint32_t bin) const
 
 std::vector<double> ColourHistogram::smoothedProbabilities(double sigma) const
 {
-	if (!(sigma >= 0 && sigma <= 16)) throw std::invalid_argument("histogram smoothing must be within [0, 16] bins");
+	if (!kSmoothingRange.contains(sigma))
+		throw std::invalid_argument("histogram smoothing must be " + kSmoothingRange.text() + " bins");
 	const std::uint32_t n = binner_.binCount();
 	std::vector<double> p(n);
 	for (std::uint32_t b = 0; b < n; ++b) p[b] = probability(b);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace omnirange
 {
@@ -35,14 +36,11 @@ FreeSpaceClassifier::FreeSpaceClassifier(const ColourModel& model, double thresh
 										 double smoothing, double shadow_depth)
 	: binner_(model.floor.binner()), free_(binner_.binCount(), 0), needed_(binner_.binCount(), 0.0f)
 {
-	if (!(threshold >= 0.0 && threshold <= 1.0))
-		throw std::invalid_argument(
-			"threshold (Theta) must be within [0, 1], not " +
-			std::to_string(threshold));
-	if (!(shadow_depth >= 0.0 && shadow_depth <= 0.9))
-		throw std::invalid_argument("shadow_depth must be within [0, 0.9], not " + std::to_string(shadow_depth));
-	if (!(obstacle_ratio >= 0.0 && obstacle_ratio <= 1000.0))
-		throw std::invalid_argument("obstacle_ratio must be within [0, 1000], not " + std::to_string(obstacle_ratio));
+	for (const auto& [key, range, value] : {std::tuple{"threshold", kThresholdRange, threshold},
+											  {"shadow_depth", kShadowDepthRange, shadow_depth},
+											  {"obstacle_ratio", kObstacleRatioRange, obstacle_ratio}})
+		if (!range.contains(value))
+			throw std::invalid_argument(std::string(key) + " must be " + range.text() + ", not " + formatDouble(value));
 	const ColourHistogram& hist = model.floor;
 	if (hist.empty())
 		throw std::invalid_argument(

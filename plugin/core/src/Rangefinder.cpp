@@ -20,22 +20,22 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 		.include(PolarScannerParams::table(), [](P& p) -> auto& { return p.scanner; })
 		.add("threshold", "-", "Theta of eq. (5): a colour is free floor when P(colour) >= Theta",
 			 [](P& p) -> auto& { return p.threshold; })
-		.within(Range::closed(0, 1))
+		.within(kThresholdRange)
 		.add("obstacle_ratio", "-",
 			 "with obstacle colours in the histogram file: free also needs P(c|floor) >= obstacle_ratio * "
 			 "P(c|obstacle); 0: the paper's one-class model",
 			 [](P& p) -> auto& { return p.obstacle_ratio; })
-		.within(Range::closed(0, 1000))
+		.within(kObstacleRatioRange)
 		.add("histogram_smoothing", "bins",
 			 "sigma of a Gaussian over the histogram's bins (floor and obstacle colours) before eq. (5); 0: as counted",
 			 [](P& p) -> auto& { return p.histogram_smoothing; })
-		.within(Range::closed(0, 16))
+		.within(kSmoothingRange)
 		.add("shadow_depth", "-",
 			 "a colour is also free when it is a free floor colour in light down to 1 - shadow_depth times as "
 			 "strong and training never saw it on an obstacle (the floor in shadow); 0: the colours "
 			 "as trained",
 			 [](P& p) -> auto& { return p.shadow_depth; })
-		.within(Range::closed(0, 0.9))
+		.within(kShadowDepthRange)
 		.include(OutlierFilterParams::table(), [](P& p) -> auto& { return p.outliers; })
 		.include(WallFitParams::table(), [](P& p) -> auto& { return p.walls; })
 		.add("exposure_compensation", "bool",

@@ -111,13 +111,14 @@ struct Range
 	double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
 	bool lo_open = false, hi_open = false;
 
-	static Range closed(double lo, double hi) { return {lo, hi, false, false}; }  ///< [lo, hi]
-	static Range openLow(double lo, double hi) { return {lo, hi, true, false}; }  ///< (lo, hi]
-	static Range openHigh(double lo, double hi) { return {lo, hi, false, true}; }  ///< [lo, hi)
-	static Range open(double lo, double hi) { return {lo, hi, true, true}; }  ///< (lo, hi)
-	static Range atLeast(double lo) { return closed(lo, std::numeric_limits<double>::infinity()); }
-	static Range above(double lo) { return open(lo, std::numeric_limits<double>::infinity()); }
-	static Range finite() { return Range(); }
+	// constexpr: a range a header names (kThresholdRange) is set before any table reads it.
+	static constexpr Range closed(double lo, double hi) { return {lo, hi, false, false}; }  ///< [lo, hi]
+	static constexpr Range openLow(double lo, double hi) { return {lo, hi, true, false}; }  ///< (lo, hi]
+	static constexpr Range openHigh(double lo, double hi) { return {lo, hi, false, true}; }  ///< [lo, hi)
+	static constexpr Range open(double lo, double hi) { return {lo, hi, true, true}; }  ///< (lo, hi)
+	static constexpr Range atLeast(double lo) { return closed(lo, std::numeric_limits<double>::infinity()); }
+	static constexpr Range above(double lo) { return open(lo, std::numeric_limits<double>::infinity()); }
+	static constexpr Range finite() { return Range(); }
 
 	bool contains(double v) const
 	{

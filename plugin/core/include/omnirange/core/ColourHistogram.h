@@ -3,6 +3,7 @@
 // trained by counting; P(colour) = c[colour] / T (eq. (4)).
 
 #include <omnirange/core/ColourSpace.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <cstdint>
 #include <string>
@@ -15,6 +16,9 @@ class Mat;
 
 namespace omnirange
 {
+/** [bins] The sigma a histogram may be smoothed with (the options table's histogram_smoothing). */
+inline constexpr Range kSmoothingRange = Range::closed(0, 16);
+
 class ColourHistogram
 {
    public:

@@ -5,6 +5,7 @@
 
 #include <omnirange/core/ColourModel.h>
 #include <omnirange/core/PixelClassifier.h>
+#include <omnirange/config/OptionsTable.h>
 
 #include <cstdint>
 #include <vector>
@@ -16,6 +17,12 @@ class Mat;
 
 namespace omnirange
 {
+/** The values the classifier takes; the rangefinder's options table gives
+ * its keys these ranges (threshold, obstacle_ratio, shadow_depth). */
+inline constexpr Range kThresholdRange = Range::closed(0, 1);
+inline constexpr Range kObstacleRatioRange = Range::closed(0, 1000);
+inline constexpr Range kShadowDepthRange = Range::closed(0, 0.9);
+
 class FreeSpaceClassifier final : public PixelClassifier
 {
    public:
