@@ -363,7 +363,7 @@ if [ -d "$real" ]; then
 fi
 # After a seventh: outputs checked before the work, limits that end a run with a line, things given twice.
 cp floor.hist kept.hist
-run_case "train: --learn-candidates into a missing folder" "error:does not exist" new_learn.ini -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o kept.hist --learn new_learn.ini --learn-candidates nodir/c.csv
+run_case "train: --learn-candidates into a missing folder" "error:nodir/c.csv" new_learn.ini -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o kept.hist --learn new_learn.ini --learn-candidates nodir/c.csv
 cmp -s kept.hist floor.hist || { echo "| | PROBLEM: the histogram was replaced by a run that failed |"; problems=$((problems + 1)); }
 run_case "train: a file-size limit (ulimit -f) reached as it writes" "error:" fs.hist -- bash -c 'ulimit -f 20; exec "$@"' _ "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o fs.hist
 { cat w.world; printf "bounds xmin=-1 ymin=-1 xmax=1 ymax=1\n"; } > twobounds.world

@@ -173,11 +173,6 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 {
 	const std::string output = outputPath(output_as_given);
 	if (output.empty()) return;
-	// Found before the work, not when the first file is written after it. A
-	// folder output (a report) is made with the folders above it, as mkdir -p.
-	if (const fs::path folder = fs::path(output).parent_path();
-		kind != OutputKind::Folder && !folder.empty() && !fs::is_directory(folder))
-		throw std::runtime_error("the folder '" + folder.string() + "' of the output '" + output + "' does not exist");
 	requireApartFromInputs(output, kind, inputs);
 	// A file output's temporaries that killed runs left (a folder's are its
 	// writer's to recover: StagedFolder, RawlogWriter).
