@@ -3,6 +3,7 @@
 #include "omnirange/config/AtomicWrite.h"
 #include "omnirange/config/OptionsTable.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -42,13 +43,11 @@ void writeIniSection(const std::string& path, const std::string& section,
 	// MRPT finds a section and a key in any mix of case ([RangeFinder] is
 	// [rangefinder]): so does the writer, or it would add a second one that
 	// every reader refuses.
-	const auto folded = [](std::string s) {
-		for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-		return s;
+	const auto same_section = [&](const std::string& name) { return sameKey(name, section); };
+	std::vector<std::pair<std::string, std::string>> pending = values;  // not yet in the file
+	const auto pendingOf = [&](const std::string& key) {
+		return std::find_if(pending.begin(), pending.end(), [&](const auto& kv) { return sameKey(kv.first, key); });
 	};
-	const auto same_section = [&](const std::string& name) { return folded(name) == folded(section); };
-	std::map<std::string, std::string> pending;  // folded key -> value
-	for (const auto& [key, value] : values) pending[folded(key)] = value;
 	std::string current;
 	int headers = 0;
 	std::ptrdiff_t insert_at = -1;  // after the section's last key (or its header)
@@ -65,7 +64,7 @@ void writeIniSection(const std::string& path, const std::string& section,
 		}
 		if (!same_section(current) || line.kind != IniLine::Kind::Key) continue;
 		insert_at = static_cast<std::ptrdiff_t>(i);
-		if (const auto it = pending.find(folded(line.name)); it != pending.end())
+		if (const auto it = pendingOf(line.name); it != pending.end())
 		{
 			lines[i] = withValue(lines[i], line.name, it->second);
 			pending.erase(it);
@@ -74,7 +73,7 @@ void writeIniSection(const std::string& path, const std::string& section,
 	std::vector<std::string> added;
 	for (const auto& [key, value] : values)
 	{
-		if (!pending.count(folded(key))) continue;
+		if (pendingOf(key) == pending.end()) continue;
 		if (const auto c = comments.find(key); c != comments.end()) added.push_back("; " + c->second);
 		added.push_back(key + " = " + value);
 	}

@@ -329,7 +329,7 @@ int requireWellFormedIni(const std::string& path);
  * otherwise leave all its keys at their defaults. */
 void requireOnlySections(const std::string& path, const std::vector<std::string>& known);
 
-/** Whether two keys are one as MRPT reads them: in any mix of case. */
+/** Whether two keys (or section names) are one as MRPT reads them: in any mix of case. */
 bool sameKey(const std::string& a, const std::string& b);
 
 /** The parts of load() that do not depend on the struct: the section's
