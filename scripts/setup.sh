@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(
   build-essential cmake pkg-config
   libmrpt-dev mrpt-apps mrpt-common
-  libopencv-dev libopencv-contrib-dev libeigen3-dev zlib1g-dev libjpeg-dev
+  libopencv-dev libopencv-contrib-dev libeigen3-dev zlib1g-dev libjpeg-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool x11-apps imagemagick bc
   libwxgtk3.2-dev

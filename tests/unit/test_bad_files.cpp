@@ -103,6 +103,48 @@ TEST(BadFiles, AJpegDamagedInsideIsRefusedThoughItsEndMarkerIsThere)
 	EXPECT_EQ(cv::norm(grey, cv::imdecode(buf, cv::IMREAD_GRAYSCALE), cv::NORM_INF), 0.0);
 }
 
+TEST(BadFiles, APngDecodesAsOpenCvDecodesItAndADamagedOneGivesOneReasonAndNoLinesOfLibpng)
+{
+	const std::string d = dir("png");
+	cv::Mat colour(120, 160, CV_8UC3), grey8, colour16, grey16, rgba;
+	cv::randu(colour, 0, 255);
+	cv::cvtColor(colour, grey8, cv::COLOR_BGR2GRAY);
+	cv::cvtColor(colour, rgba, cv::COLOR_BGR2BGRA);
+	rgba.forEach<cv::Vec4b>([](cv::Vec4b& p, const int* at) { p[3] = static_cast<uchar>(at[1]); });
+	colour.convertTo(colour16, CV_16UC3, 257.0, 3);  // a low byte that must be dropped, not rounded
+	grey8.convertTo(grey16, CV_16UC1, 257.0);
+	const std::vector<std::pair<std::string, std::vector<int>>> kinds = {
+		{"colour", {}}, {"grey8", {}}, {"colour16", {}}, {"grey16", {}}, {"rgba", {}},
+		{"bilevel", {cv::IMWRITE_PNG_BILEVEL, 1}}};
+	const std::vector<cv::Mat> images = {colour, grey8, colour16, grey16, rgba, grey8 > 128};
+	for (std::size_t k = 0; k < kinds.size(); ++k)
+	{
+		const std::string file = d + "/" + kinds[k].first + ".png";
+		ASSERT_TRUE(cv::imwrite(file, images[k], kinds[k].second));
+		for (const int flags : {cv::IMREAD_COLOR, cv::IMREAD_GRAYSCALE})
+		{
+			const cv::Mat ours = decodeImageFile(file, "OMNICAM", flags), theirs = cv::imread(file, flags);
+			ASSERT_EQ(ours.size(), theirs.size()) << file;
+			ASSERT_EQ(ours.type(), theirs.type()) << file;
+			// Grey from colour: libpng's fixed-point weights and OpenCV's differ by one level at most.
+			const bool converted = flags == cv::IMREAD_GRAYSCALE && images[k].channels() > 1;
+			EXPECT_LE(cv::norm(ours, theirs, cv::NORM_INF), converted ? 1.0 : 0.0) << file << " flags " << flags;
+		}
+	}
+	std::string bytes;
+	{
+		std::ifstream f(d + "/colour.png", std::ios::binary);
+		bytes.assign(std::istreambuf_iterator<char>(f), {});
+	}
+	bytes.replace(bytes.size() / 2, 64, std::string(64, '\0'));  // inside the pixel data; the end chunk stays
+	std::ofstream(d + "/damaged.png", std::ios::binary) << bytes;
+	testing::internal::CaptureStderr();
+	const std::string why = errorOf([&] { decodeImageFile(d + "/damaged.png", "OMNICAM"); });
+	const std::string printed = testing::internal::GetCapturedStderr();
+	EXPECT_NE(why.find("damaged.png' of OMNICAM is damaged: "), std::string::npos) << why;
+	EXPECT_EQ(printed, "") << "libpng's own lines reach the user";
+}
+
 TEST(BadFiles, AnImageWhoseHeaderAsksForTooManyPixelsIsRefusedBeforeDecoding)
 {
 	const std::string d = dir("huge");

@@ -305,6 +305,27 @@ TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)
 	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 4);
 }
 
+TEST(OutputRule, AWriteThatFailsNamesTheFileTheUserAskedForNotItsTemporary)
+{
+	const std::string d = fresh("failed_write");
+	write(d + "/floor.hist", "old histogram");
+	std::string why;
+	try
+	{
+		writeAtomically(d + "/floor.hist", [](const std::string& tmp) {
+			write(tmp, "half");
+			throw std::runtime_error("error while writing '" + tmp + "'");  // as a writer past the disk's end says
+		});
+	}
+	catch (const std::exception& e)
+	{
+		why = e.what();
+	}
+	EXPECT_EQ(why, "error while writing '" + d + "/floor.hist'");
+	EXPECT_EQ(read(d + "/floor.hist"), "old histogram");
+	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1);  // no temporary left
+}
+
 TEST(OutputRule, ATextFileIsReplacedOnlyIfItBeginsAsTheProgramsOwnAndALinkToNothingIsKept)
 {
 	const std::string d = fresh("begins");

@@ -9,6 +9,7 @@
 #include <omnirange/io/OutputRule.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -44,7 +45,23 @@ SummaryApp::Options SummaryApp::parse(int argc, const char* const* argv)
 	if (o.fill.empty() && o.output.empty()) throw std::runtime_error("give -o PREFIX, or --csv with --fill");
 	if (!o.fill.empty() && !o.output.empty())
 		throw std::runtime_error("-o with --fill: --fill makes the named files' tables again in place, and writes nothing else");
+	requireDistinctFiles(o);
 	return o;
+}
+
+void SummaryApp::requireDistinctFiles(const Options& o)
+{
+	namespace fs = std::filesystem;
+	std::vector<fs::path> seen;
+	const auto place = [](const std::string& f) { return fs::weakly_canonical(f); };  // through links
+	for (const auto& f : o.fill)
+	{
+		if (!o.csv.empty() && place(f) == place(o.csv))
+			throw std::runtime_error("--fill '" + f + "' is the --csv it would be filled from");
+		if (std::find(seen.begin(), seen.end(), place(f)) != seen.end())
+			throw std::runtime_error("--fill '" + f + "' is named twice");
+		seen.push_back(place(f));
+	}
 }
 
 SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summary"), o_(std::move(o))

@@ -48,6 +48,17 @@ StagedFile::StagedFile(const std::string& given, const std::function<void(const 
 		keepModeOf(path_, tmp_);
 		syncToDisk(tmp_, path_);
 	}
+	catch (const std::exception& e)
+	{
+		std::remove(tmp_.c_str());
+		temporaries::forget(tmp_);
+		// A writer knows only the temporary's name; the user knows the file they asked for.
+		std::string message = e.what();
+		if (message.find(tmp_) == std::string::npos) throw;
+		for (auto at = message.find(tmp_); at != std::string::npos; at = message.find(tmp_, at + given.size()))
+			message.replace(at, tmp_.size(), given);
+		throw std::runtime_error(message);
+	}
 	catch (...)
 	{
 		std::remove(tmp_.c_str());

@@ -53,6 +53,7 @@ LayeredIni readLayeredIni(const std::string& path)
 	LayeredIni ini;
 	for (std::string file = path; !file.empty(); file = iniBaseOf(file))
 	{
+		if (ini.files.empty()) requireRegularFile(file, "ini file");
 		if (!fs::is_regular_file(file))
 			throw std::runtime_error(ini.files.empty() ? "cannot open ini file '" + file + "'"
 													   : ini.files.back() + ": its base '" + file + "' is not a file");

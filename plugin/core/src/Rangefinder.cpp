@@ -69,6 +69,7 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 
 RangefinderParams RangefinderParams::loadFromFile(const std::string& path, const std::string& section)
 {
+	requireRegularFile(path, "ini file");
 	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open ini file '" + path + "'");
 	RangefinderParams p;
 	try

@@ -1,12 +1,14 @@
 #include "omnirange/io/ObservationImage.h"
 
 #include "JpegDecoder.h"
+#include "PngDecoder.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <cctype>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string_view>
@@ -136,11 +138,15 @@ cv::Mat decodeImageFile(const std::string& file, const std::string& label, int f
 		!why.empty())
 		throw std::runtime_error(what + " is " + why);
 	cv::Mat image;
-	if (bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8 &&
-		(flags == cv::IMREAD_COLOR || flags == cv::IMREAD_GRAYSCALE))
-		if (const std::string why = decodeJpeg(bytes.data(), bytes.size(), flags == cv::IMREAD_GRAYSCALE, image);
-			!why.empty())
-			throw std::runtime_error(what + " is damaged: " + why);
+	const bool jpeg = bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8;
+	const bool png = bytes.size() >= 8 && std::memcmp(bytes.data(), "\x89PNG\r\n\x1a\n", 8) == 0;
+	if ((jpeg || png) && (flags == cv::IMREAD_COLOR || flags == cv::IMREAD_GRAYSCALE))
+	{
+		const bool grey = flags == cv::IMREAD_GRAYSCALE;
+		const std::string why = jpeg ? decodeJpeg(bytes.data(), bytes.size(), grey, image)
+									 : decodePng(bytes.data(), bytes.size(), grey, image);
+		if (!why.empty()) throw std::runtime_error(what + " is damaged: " + why);
+	}
 	if (image.empty()) image = cv::imdecode(bytes, flags);
 	if (image.empty()) throw std::runtime_error(what + " cannot be decoded: damaged, or not an image of its kind");
 	return image;

@@ -22,6 +22,7 @@ namespace omnirange
 RawlogReader::RawlogReader(const std::string& path)
 	: path_(path), in_(std::make_unique<mrpt::io::CFileGZInputStream>())
 {
+	requireRegularFile(path, "rawlog");
 	if (!std::filesystem::is_regular_file(path) || !in_->open(path))
 		throw std::runtime_error("cannot open rawlog '" + path + "'");
 	mrpt::img::CImage::setImagesPathBase(imagesDirFor(path));

@@ -12,7 +12,7 @@ void RawlogTrainingOptions::validate() const
 {
 	require(every >= 1, "every must be >= 1");
 	require(first >= 0 && max_frames >= 0 && until >= 0, "first, until and max_frames must be >= 0");
-	require(max_dt >= 0, "max_dt must be >= 0 s");
+	requirePairingDt(max_dt);
 	require(figures_frame >= 0, "figures_frame must be >= 0");
 	require(training.bins >= 1 && training.bins <= 256, "bins must be within [1, 256]");
 	// Farther than the laser sees is no margin; a huge one only costs time (each hit walks it).

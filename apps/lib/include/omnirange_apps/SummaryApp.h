@@ -26,6 +26,8 @@ class SummaryApp : public mrpt::system::COutputLogger
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */
 	static Options parse(int argc, const char* const* argv);
+	/** --fill files that are one file twice, or the --csv itself, are refused. */
+	static void requireDistinctFiles(const Options& o);
 
 	explicit SummaryApp(Options o);
 	/** Throws std::runtime_error naming a missing report or a stale table. */

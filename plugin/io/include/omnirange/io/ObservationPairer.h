@@ -4,12 +4,15 @@
 // rawlog streams by. The latest of each kind is held; the two pair up when
 // their timestamps differ by at most max_dt, and each observation pairs once.
 
+#include "omnirange/config/OptionsTable.h"
+
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/system/datetime.h>
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace omnirange
@@ -17,6 +20,15 @@ namespace omnirange
 /** [s] largest time between two observations that pair up (default 0.1:
  * less than half the frame period of the robots this project simulates). */
 constexpr double kDefaultMaxPairingDt = 0.1;
+/** [s] the pairing times a user may ask for: an image and a scan a minute
+ * apart are not the same moment, and 1e300 s would pair a whole log at once. */
+constexpr Range kPairingDtRange = Range::closed(0, 60);
+
+inline void requirePairingDt(double max_dt)
+{
+	if (!kPairingDtRange.contains(max_dt))
+		throw std::invalid_argument("max_dt must be " + kPairingDtRange.text() + " s");
+}
 
 template <class A, class B>
 class ObservationPairer
@@ -25,6 +37,7 @@ class ObservationPairer
 	ObservationPairer(std::string label_a, std::string label_b, double max_dt = kDefaultMaxPairingDt)
 		: label_a_(std::move(label_a)), label_b_(std::move(label_b)), max_dt_(max_dt)
 	{
+		requirePairingDt(max_dt);
 	}
 
 	/** Feeds the next observation; true when it completes a pair, which first()
