@@ -404,6 +404,16 @@ run_case "slam: -o its own earlier output, with a file the user added" "error:is
 kept slam_notes/notes.txt
 mkdir -p negpgm && printf 'P5\n-5 10\n255\n' > negpgm/100.0.pgm
 run_case "import: a PGM whose header gives a negative width" "error:does not give a width and a height" negp.rawlog -- "$apps/omnirange-import" -q --images negpgm --laser imp_laser.csv -o negp.rawlog
+# Damage libpng would print about, times past any pairing, one file given twice.
+"$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -f png -o pngd.rawlog
+f=$(ls pngd_Images | grep OMNICAM | sort | head -1) && size=$(stat -c %s "pngd_Images/$f")
+printf '%*s' 64 '' | dd of="pngd_Images/$f" bs=1 seek=$((size / 2)) conv=notrunc status=none
+run_case "scan: a PNG damaged inside (its end chunk kept)" "error:is damaged" pd.rawlog -- "$apps/omnirange-scan" -q -i pngd.rawlog -c f.ini -H floor.hist -o pd.rawlog
+run_case "train: --max-dt 1e300" "error:max_dt must be within" md.hist -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o md.hist --max-dt 1e300
+cp tables.md twice.md
+run_case "summary: --fill one file twice" "error:is named twice" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill twice.md --fill ./twice.md
+mkfifo rawlog.fifo
+scan "rawlog is a FIFO" "error:is not a regular file" -i rawlog.fifo -c f.ini -H floor.hist -o out.rawlog
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }
