@@ -260,7 +260,7 @@ TEST(AppClasses, CalibrateFindsTheCamerasOrientation)
 	EXPECT_TRUE(f.mirrored);
 	EXPECT_NEAR(std::abs(f.forward_azimuth), M_PI, 1.5 * M_PI / 180);  // 180 deg within 1.5
 	EXPECT_LT(f.error, f.error_as_given);
-	EXPECT_LT(f.spread, 5 * M_PI / 180);
+	EXPECT_TRUE(pinnedDown(f)) << f.agreeing << " of " << f.frames;
 	EXPECT_EQ(f.frames, 20);
 
 	// Saved into the ini: the orientation only (R was fitted with the wrong
@@ -277,6 +277,30 @@ TEST(AppClasses, CalibrateFindsTheCamerasOrientation)
 	CalibrateApp(o).run();
 	saved = loadRangefinderIni(o.ini, "rangefinder", quiet);
 	EXPECT_NEAR(saved.camera.R, 192.0, 5.0);
+}
+
+TEST(AppClasses, CalibrateFindsTheOrientationThroughAWrongScale)
+{
+	// R far off alone: the orientation is searched at the fitted R too and found.
+	CalibrateApp wrong_scale(calibrationOf(workDir("orientation_scale"), "R = 150\n"));
+	wrong_scale.run();
+	EXPECT_TRUE(wrong_scale.orientation().mirrored);
+	EXPECT_NEAR(std::abs(wrong_scale.orientation().forward_azimuth), M_PI, 1.5 * M_PI / 180);
+	EXPECT_TRUE(pinnedDown(wrong_scale.orientation()));
+	// R and the reversal both wrong: R fitted with the wrong reversal is wrong too,
+	// so the turns are searched over scales around the ini's as well; only the
+	// orientation is saved, R having been fitted with the wrong one.
+	CalibrateApp::Options both = calibrationOf(workDir("orientation_both"), "R = 260\nmirrored = false\n");
+	both.save_to = both.ini;
+	CalibrateApp both_wrong(both);
+	both_wrong.run();
+	EXPECT_TRUE(both_wrong.orientation().mirrored);
+	EXPECT_NEAR(std::abs(both_wrong.orientation().forward_azimuth), M_PI, 3 * M_PI / 180);
+	mrpt::system::COutputLogger quiet("test");
+	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+	const RangefinderParams saved = loadRangefinderIni(both.ini, "rangefinder", quiet);
+	EXPECT_TRUE(saved.camera.mirrored);
+	EXPECT_EQ(saved.camera.R, 260.0);
 }
 
 TEST(AppClasses, CommandLinesFillTheOptions)

@@ -154,16 +154,20 @@ MirrorCalibration CalibrateApp::run()
 				"(suggested boundary_offset = %.2f with the ini's mirror%s)\n",
 				c.boundary_px, c.suggested_boundary_offset, c.clamped ? ", clamped to [-1, 1]" : "");
 	constexpr double kDeg = 57.29577951308232;
-	// A calibrated shape leaves only the height to the laser: compare
-	// orientations at the fitted height, or a wrong h would blur them all.
-	RangefinderParams at_height = params;
-	if (shape_calibrated) at_height.camera.h = c.height.h;
-	const OrientationFit f = fitOrientation(Rangefinder(at_height, colours), o_.calibration);
+	const double fitted_scale = m == MirrorModel::Paraboloid ? c.R : m == MirrorModel::FirstOrder ? c.alpha : c.height.h;
+	const ScaledOrientationFit scaled = fitOrientationAndScale(params, colours, fitted_scale, o_.calibration);
+	const OrientationFit& f = scaled.fit;
 	orientation_ = f;
-	std::printf("orientation: forward_azimuth_deg = %.0f (spread %.1f deg over %d frames), mirrored = %s; "
-				"mean error %.3f m (the ini's %.0f deg, %s: %.3f m)\n",
-				f.forward_azimuth * kDeg, f.spread * kDeg, f.frames, f.mirrored ? "true" : "false", f.error,
-				params.camera.forward_azimuth * kDeg, params.camera.mirrored ? "true" : "false", f.error_as_given);
+	std::printf("orientation: forward_azimuth_deg = %.0f, mirrored = %s (at %s = %.4g; %d of %d frames agree within "
+				"%.0f deg); mean error %.3f m (the ini's %.0f deg, %s: %.3f m)\n",
+				f.forward_azimuth * kDeg, f.mirrored ? "true" : "false", scaled.scale_key.c_str(), scaled.scale,
+				f.agreeing, f.frames, kAgreeingTurn * kDeg, f.error, params.camera.forward_azimuth * kDeg,
+				params.camera.mirrored ? "true" : "false", f.error_as_given);
+	if (!pinnedDown(f))
+		requireSure({"only " + std::to_string(f.agreeing) + " of " + std::to_string(f.frames) +
+					 " frames have their own best orientation within " + formatDouble(std::round(kAgreeingTurn * kDeg)) +
+					 " deg of the fitted one: the orientation is not pinned down (are cx, cy and the mirror's scale near right? "
+					 "is the histogram this camera's?)"});
 	// R, alpha and the boundary were fitted with the ini's orientation: worth
 	// anything only when that orientation was right.
 	const double turn = std::abs(std::remainder(f.forward_azimuth - params.camera.forward_azimuth, 2 * M_PI));

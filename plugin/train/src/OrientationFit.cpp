@@ -95,14 +95,46 @@ OrientationFit fitOrientation(const Rangefinder& rf, const MirrorCalibrationOpti
 	const double d = 2 * kPi * best_k / S;
 	f.mirrored = s_new < 0;
 	f.forward_azimuth = std::remainder(cam.forward_azimuth - s_new * d, 2 * kPi);
-	double sq = 0;
 	for (const auto& [r, k] : frame_best)
-	{
-		const double diff = r != best_r ? kPi : std::abs(std::remainder(2 * kPi * (k - best_k) / S, 2 * kPi));
-		sq += diff * diff;
-	}
-	f.spread = std::sqrt(sq / static_cast<double>(frame_best.size()));
+		if (r == best_r && std::abs(std::remainder(2 * kPi * (k - best_k) / S, 2 * kPi)) <= kAgreeingTurn + 1e-9)
+			++f.agreeing;
 	return f;
+}
+
+ScaledOrientationFit fitOrientationAndScale(const RangefinderParams& params, const ColourModel& colours,
+											double fitted_scale, const MirrorCalibrationOptions& o)
+{
+	const MirrorModel m = params.camera.mirror_model;
+	const std::string key = m == MirrorModel::Paraboloid ? "R" : m == MirrorModel::FirstOrder ? "alpha" : "h";
+	const auto withScale = [&](double v) {
+		RangefinderParams p = params;
+		(key == "R" ? p.camera.R : key == "alpha" ? p.camera.alpha : p.camera.h) = v;
+		return p;
+	};
+	const double given = key == "R" ? params.camera.R : key == "alpha" ? params.camera.alpha : params.camera.h;
+	std::vector<double> scales{given};
+	if (std::isfinite(fitted_scale) && fitted_scale > 0) scales.push_back(fitted_scale);
+	for (const double f : {0.6, 0.67, 0.75, 0.83, 0.91, 1.1, 1.2, 1.33, 1.5, 1.67}) scales.push_back(given * f);
+	ScaledOrientationFit best;
+	double error_as_given = 0;  // the ini's own orientation and scale, as the user gave them
+	for (const double v : scales)
+	{
+		RangefinderParams p = withScale(v);
+		try
+		{
+			p.validate();
+		}
+		catch (const std::exception&)
+		{
+			continue;  // a scale the camera model refuses (its radius must grow to the horizon)
+		}
+		const OrientationFit f = fitOrientation(Rangefinder(p, colours), o);
+		if (v == given) error_as_given = f.error_as_given;
+		if (best.scale_key.empty() || f.error < best.fit.error) best = {f, v, key};
+	}
+	if (best.scale_key.empty()) throw std::runtime_error("no scale near the ini's " + key + " makes a camera");
+	best.fit.error_as_given = error_as_given;
+	return best;
 }
 
 }  // namespace omnirange
