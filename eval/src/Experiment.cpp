@@ -258,22 +258,23 @@ void Experiment::runIcpSlam()
 		for (const auto& k : slam::icpKeysMrptIgnores(s.icp_ini))
 			MRPT_LOG_WARN_STREAM("icp-slam ini '" << s.icp_ini << "': [ICP] " << k
 												  << " is not read by MRPT 2.5 and keeps its default");
+		for (const auto& setting : slam::mappingSettingsGuardedIcpIgnores(s.icp_ini))
+			MRPT_LOG_WARN_STREAM("icp-slam ini '" << s.icp_ini << "': [MappingApplication] " << setting
+												  << " is followed by icp-slam, not by the guarded matcher");
 		const std::string only = "only_" + s.tag + ".rawlog";
 		runProgram({"rawlog-edit", "--keep-label", s.label + "," + kOdometryLabel, "-i", "scanned.rawlog", "-o", only,
 					"-w"},
 				   out_, "rawlog-edit_" + s.tag + ".log");
 		runProgram({"icp-slam", s.icp_ini, only}, out_, "icp-slam_" + s.tag + ".log");
-		scoreSlam("icp-slam", s, s.icp, s.icp_path, s.icp_check_marked, figures);
+		scoreSlam("icp-slam", slam::mrptLogFolder(s.icp_ini), s, s.icp, s.icp_path, s.icp_check_marked, figures);
 	}
 	writeImageAtomically(out_ + "/maps_icp.png", sideBySide(figures));
 }
 
-void Experiment::scoreSlam(const std::string& engine, const SensorMaps& s, MapMetrics& map, PathError& path,
-						   double& check_marked, std::vector<std::pair<std::string, cv::Mat>>& figures) const
+void Experiment::scoreSlam(const std::string& engine, const std::string& dir, const SensorMaps& s, MapMetrics& map,
+						   PathError& path, double& check_marked,
+						   std::vector<std::pair<std::string, cv::Mat>>& figures) const
 {
-	// The engine's final map, in its folder NAME_TAG (the shipped inis' logOutput_dir).
-	std::string dir = engine + "_" + s.tag;
-	std::replace(dir.begin(), dir.end(), '-', '_');
 	const auto sm = loadSimplemap(out_ + "/" + dir + "/_finalmap_.simplemap");
 	path = comparePaths(simplemapKeyframes(sm), gt_path_);
 	map = assess(mapFromSimplemap(sm, path.alignment, truth_, s.invalid_is_free), s.label + ", " + engine, check_marked,
@@ -293,10 +294,11 @@ void Experiment::runGuardedIcp()
 											 << " refused, " << g.weak_directions << " weak directions left to the odometry, "
 											 << g.loops << " loops closed");
 		s.guarded_loops = g.loops;
-		fs::create_directories(out_ + "/guarded_icp_" + s.tag);
-		saveSimplemap(g.keyframes, out_ + "/guarded_icp_" + s.tag + "/_finalmap_.simplemap");
+		const std::string dir = "guarded_icp_" + s.tag;
+		fs::create_directories(out_ + "/" + dir);
+		saveSimplemap(g.keyframes, out_ + "/" + dir + "/_finalmap_.simplemap");
 		double unused = 0;
-		scoreSlam("guarded-icp", s, s.guarded, s.guarded_path, unused, figures);
+		scoreSlam("guarded-icp", dir, s, s.guarded, s.guarded_path, unused, figures);
 	}
 	writeImageAtomically(out_ + "/maps_guarded.png", sideBySide(figures));
 }
@@ -313,7 +315,7 @@ void Experiment::runRbpfSlam()
 		writeSensoryFrameFormat(out_ + "/only_" + s.tag + ".rawlog", out_ + "/" + frames);
 		runProgram({"rbpf-slam", s.rbpf_ini, frames}, out_, "rbpf-slam_" + s.tag + ".log");
 		double unused = 0;
-		scoreSlam("rbpf-slam", s, s.rbpf, s.rbpf_path, unused, figures);
+		scoreSlam("rbpf-slam", slam::mrptLogFolder(s.rbpf_ini), s, s.rbpf, s.rbpf_path, unused, figures);
 	}
 	if (figures.size() > 1) writeImageAtomically(out_ + "/maps_rbpf.png", sideBySide(figures));
 }

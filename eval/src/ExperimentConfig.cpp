@@ -121,6 +121,8 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 		table().load(c, cfg, "experiment");
 		resolvePaths(c, layers);
 		slam::requireStrictIcpSection(c.icp_laser_ini), slam::requireStrictIcpSection(c.icp_omni_ini);
+		for (const auto* rbpf : {&c.rbpf_laser_ini, &c.rbpf_omni_ini})
+			if (!rbpf->empty()) slam::mrptLogFolder(*rbpf);
 		validate(c);
 		c.rangefinder.loadFromConfig(cfg, "rangefinder");
 		checkSimulatorInputs(c);

@@ -1,4 +1,5 @@
 #include "omnirange_slam/IcpSlamIni.h"
+#include "omnirange_slam/MrptMapSections.h"
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -101,6 +102,8 @@ void requireStrictIcpSection(const std::string& file, const std::string& section
 		for (const auto& k : mapping_keys)
 			if (!mrptReadsMappingKey(k))
 				throw std::invalid_argument("[MappingApplication] " + k + ": not a key icp-slam reads (misspelt?)");
+		if (mrpt::config::CConfigFile(file).keyExists("MappingApplication", "logOutput_dir")) mrptLogFolder(file);
+		requireStrictMapSections(file);
 		if (!mrpt::config::CConfigFile(file).sectionExists(section)) return;  // every option at MRPT's default
 		for (const auto& k : icpKeysMrptIgnores(file, section))
 			throw std::invalid_argument("[" + section + "] " + k + ": not a key MRPT reads (it would keep its default)");
@@ -139,6 +142,30 @@ void requireStrictIcpSection(const std::string& file, const std::string& section
 		const std::string what = e.what();
 		throw std::runtime_error(what.rfind(file, 0) == 0 ? what : file + ": " + what);
 	}
+}
+
+std::string mrptLogFolder(const std::string& file)
+{
+	// MRPT's apps read it with no default: a missing key ends them with an error of their own.
+	const std::string dir = trimmed(mrpt::config::CConfigFile(file).read_string("MappingApplication", "logOutput_dir", ""));
+	if (dir.empty() || dir.find('/') != std::string::npos || dir == "." || dir == "..")
+		throw std::runtime_error(file + ": [MappingApplication] logOutput_dir = '" + dir +
+								 "': MRPT's program empties this folder first, so it must be a plain folder name "
+								 "(no '/', not '.' or '..'), made where the program runs");
+	return dir;
+}
+
+std::vector<std::string> mappingSettingsGuardedIcpIgnores(const std::string& file)
+{
+	const mrpt::config::CConfigFile ini(file);
+	const auto value = [&](const char* key, const char* fallback) {
+		return trimmed(ini.read_string("MappingApplication", key, fallback));
+	};
+	std::vector<std::string> ignored;
+	if (parseDouble(value("rawlog_offset", "0")) != 0) ignored.push_back("rawlog_offset = " + value("rawlog_offset", ""));
+	if (parseBool(value("matchAgainstTheGrid", "false"))) ignored.push_back("matchAgainstTheGrid = " + value("matchAgainstTheGrid", ""));
+	if (parseDouble(value("pointsMap_count", "1")) != 1) ignored.push_back("pointsMap_count = " + value("pointsMap_count", ""));
+	return ignored;
 }
 
 }  // namespace omnirange::slam

@@ -97,3 +97,63 @@ TEST(IcpSlamIni, TheIcpSectionIsReadStrictlyNamingFileSectionAndKey)
 				  std::string::npos)
 			<< bad;
 }
+
+TEST(IcpSlamIni, TheMapSectionsAreHeldToTheKeysMrptReadsAsItReadsThem)
+{
+	using omnirange::slam::requireStrictIcpSection;
+	const auto refusal = [](const std::string& text) {
+		const TempIni ini(text);
+		try
+		{
+			requireStrictIcpSection(ini.path);
+			return std::string();
+		}
+		catch (const std::runtime_error& e)
+		{
+			return std::string(e.what());
+		}
+	};
+	const std::string maps = "[MappingApplication]\noccupancyGrid_count = 1\npointsMap_count = 1\n";
+	const std::string grid = "[MappingApplication_occupancyGrid_00_creationOpts]\n";
+	const std::string points = "[MappingApplication_pointsMap_00_insertOpts]\n";
+	EXPECT_EQ(refusal(maps + grid + "resolution = 0.05\nmin_x = -10\n" + points +
+					  "minDistBetweenLaserPoints = 0.05\nisPlanarMap = 1\nfuseWithExisting = false\n"),
+			  "");
+	// What MRPT 2.5 would read wrongly or not at all, and what it would not read.
+	const std::vector<std::pair<std::string, std::string>> bad = {
+		{grid + "resolution = 0,05\n", "resolution = '0,05'"},  // atof: 0
+		{grid + "resolution = 0.05m\n", "resolution = '0.05m'"},
+		{grid + "resolution = 0\n", "must be > 0"},
+		{grid + "resolutoin = 0.05\n", "resolutoin: not a key MRPT reads"},
+		{grid + "disableSaveAs3DObject = 1\n", "disableSaveAs3DObject: not a key MRPT reads"},
+		{points + "isPlanarMap = maybe\n", "must be true or false"},  // atoi: false
+		{"[MappingApplication_pointsMap_00_insertOpt]\nisPlanarMap = 1\n", "unknown section"},
+		{"[MappingApplication_pointsMap_01_insertOpts]\nisPlanarMap = 1\n", "unknown section"},  // one points map
+		{"[MappingApplication_occupancyGrid_00_insertOpts]\nmaxOccupancyUpdateCertainty = 5\n", "within [0.5, 1)"},
+		{"[MappingApplication_occupancyGrid_00_insertOpts]\nmaxDistanceInsertion = inf\n", "maxDistanceInsertion"},
+	};
+	for (const auto& [text, expected] : bad)
+	{
+		const std::string why = refusal(maps + text);
+		EXPECT_NE(why.find(expected), std::string::npos) << text << ": " << why;
+		EXPECT_NE(why.find("omnirange_icp_keys.ini"), std::string::npos) << why;
+	}
+	EXPECT_NE(refusal("[MappingApplication]\npointsMap_count = 1e9\n").find("within [0, 16]"), std::string::npos);
+	// icp-slam empties its logOutput_dir first: only a plain name, made where it runs.
+	for (const std::string dir : {"..", ".", "/tmp/someones", "../other"})
+		EXPECT_NE(refusal("[MappingApplication]\nlogOutput_dir = " + dir + "\n").find("plain folder name"),
+				  std::string::npos)
+			<< dir;
+	// The shipped inis pass.
+	for (const std::string shipped : {"icp-slam-omniscan.ini", "icp-slam-laser.ini"})
+		EXPECT_NO_THROW(requireStrictIcpSection(std::string(OMNIRANGE_SOURCE_DIR) + "/ini/" + shipped)) << shipped;
+}
+
+TEST(IcpSlamIni, SettingsIcpSlamFollowsAndTheGuardedMatcherDoesNotAreNamed)
+{
+	const TempIni given("[MappingApplication]\nrawlog_offset = 15\nmatchAgainstTheGrid = true\npointsMap_count = 0\n");
+	const auto ignored = omnirange::slam::mappingSettingsGuardedIcpIgnores(given.path);
+	EXPECT_EQ(ignored, (std::vector<std::string>{"rawlog_offset = 15", "matchAgainstTheGrid = true", "pointsMap_count = 0"}));
+	const TempIni shipped_like("[MappingApplication]\nrawlog_offset = 0\nmatchAgainstTheGrid = false\npointsMap_count = 1\n");
+	EXPECT_TRUE(omnirange::slam::mappingSettingsGuardedIcpIgnores(shipped_like.path).empty());
+}

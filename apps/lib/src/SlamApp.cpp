@@ -3,6 +3,7 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange_eval/GridMaps.h>
+#include <omnirange_slam/IcpSlamIni.h>
 
 #include <omnirange/config/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
@@ -41,11 +42,15 @@ SlamApp::SlamApp(Options o) : mrpt::system::COutputLogger("omnirange-slam"), o_(
 
 slam::GuardedIcpResult SlamApp::run()
 {
+	const auto options = slam::GuardedIcpOptions::fromIniFile(o_.ini);
+	for (const auto& setting : slam::mappingSettingsGuardedIcpIgnores(o_.ini))
+		throw std::runtime_error(o_.ini + ": [MappingApplication] " + setting +
+								 ": icp-slam follows this, omnirange-slam does not (it matches each scan against a "
+								 "points map of its keyframes, from the rawlog's first entry)");
 	// icp-slam's kind of outputs, in a folder of this program's that is swapped in whole.
 	const std::string folder = outputPath(o_.output);
 	StagedFolder staged(folder, "omnirange-slam", {o_.input, o_.ini}, false);
 	const std::string map = staged.path() + "/_finalmap_.simplemap", path = staged.path() + "/log_estimated_path.txt";
-	const auto options = slam::GuardedIcpOptions::fromIniFile(o_.ini);
 	const slam::GuardedIcpResult r = slam::runGuardedIcp(o_.input, o_.scan_label, o_.odometry_label, options);
 	eval::saveSimplemap(r.keyframes, map);
 	std::string text = "% time [s], x [m], y [m], phi [rad]: the estimated pose at every scan\n";

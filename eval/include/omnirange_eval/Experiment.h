@@ -95,9 +95,10 @@ class Experiment : public mrpt::system::COutputLogger
 	/** A built map against the true map: its figure, check region and metrics. */
 	MapMetrics assess(const mrpt::maps::COccupancyGridMap2D& map, const std::string& title, double& check_marked,
 					  std::vector<std::pair<std::string, cv::Mat>>& figures) const;
-	/** A SLAM engine's final map and path for one sensor, against the truth. */
-	void scoreSlam(const std::string& engine, const SensorMaps& s, MapMetrics& map, PathError& path,
-				   double& check_marked, std::vector<std::pair<std::string, cv::Mat>>& figures) const;
+	/** A SLAM engine's final map and path for one sensor, against the truth:
+	 * the map in `dir`/_finalmap_.simplemap of the report. */
+	void scoreSlam(const std::string& engine, const std::string& dir, const SensorMaps& s, MapMetrics& map,
+				   PathError& path, double& check_marked, std::vector<std::pair<std::string, cv::Mat>>& figures) const;
 
 	ExperimentConfig c_;
 	std::string out_, dataset_, histogram_, scanned_;  // absolute paths

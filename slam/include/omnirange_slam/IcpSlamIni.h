@@ -20,4 +20,17 @@ std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::
  * enum's name). Throws std::runtime_error naming the file, section and key. */
 void requireStrictIcpSection(const std::string& file, const std::string& section = "ICP");
 
+/** [MappingApplication] logOutput_dir of the MRPT ini `file` (icp-slam's or
+ * rbpf-slam's), which the program empties before it writes there. Throws
+ * std::runtime_error naming the file unless it is a plain folder name (no
+ * '/', not '.' or '..'), made where the program runs. */
+std::string mrptLogFolder(const std::string& file);
+
+/** The [MappingApplication] settings of `file` that icp-slam follows and
+ * omnirange's guarded matcher does not (it matches each scan against a points
+ * map of its keyframes, from the rawlog's first entry), as "key = value":
+ * rawlog_offset other than 0, matchAgainstTheGrid true, pointsMap_count other
+ * than 1. */
+std::vector<std::string> mappingSettingsGuardedIcpIgnores(const std::string& file);
+
 }  // namespace omnirange::slam

@@ -1,0 +1,22 @@
+#pragma once
+// The map sections of an MRPT ini ([MappingApplication_occupancyGrid_00_insertOpts]
+// and the like) as MRPT 2.5 reads them. MRPT reads the keys it knows, with
+// C's atof and atoi, and ignores the rest: a misspelt key keeps its default,
+// "0,05" reads as 0, "maybe" as false. So the keys MRPT reads are recorded as
+// it reads them (a config source that notes each key asked for, with its
+// default), and the ini is held to them.
+
+#include <string>
+
+namespace omnirange::slam
+{
+/** Throws std::runtime_error naming the file, section and key when a section
+ * `prefix`_KIND_NN_OPTS is one MRPT would not read (misspelt, or past the
+ * map's count), a key in it is not one MRPT reads, or a value is not of the
+ * kind of MRPT's default (a number without unit or decimal comma, a whole
+ * number where MRPT reads an int, true/false); also a map count that is not
+ * a whole number within [0, 16], a resolution that is not > 0, and an
+ * occupancy update certainty outside [0.5, 1). */
+void requireStrictMapSections(const std::string& file, const std::string& prefix = "MappingApplication");
+
+}  // namespace omnirange::slam
