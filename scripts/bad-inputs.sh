@@ -414,6 +414,19 @@ cp tables.md twice.md
 run_case "summary: --fill one file twice" "error:is named twice" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill twice.md --fill ./twice.md
 mkfifo rawlog.fifo
 scan "rawlog is a FIFO" "error:is not a regular file" -i rawlog.fifo -c f.ini -H floor.hist -o out.rawlog
+# After a ninth: an MRPT program's log folder outside the report, a true map linked onto the rawlog, a failed run's folder with a user's file.
+mkdir -p victim && echo mine > victim/note.txt
+sed 's|^logOutput_dir = .*|logOutput_dir = '"$PWD"'/victim|' exp/ini/icp-slam-omniscan.ini > exp/ini/icp_victim.ini
+printf 'base = factory.ini\n[experiment]\nname = v\nicp_omni_ini = icp_victim.ini\n' > exp/ini/exp_victim.ini
+run_case "experiment: icp-slam's logOutput_dir a folder outside the report" "error:plain folder name" none.out -- "$apps/omnirange-experiment" -q exp/ini/exp_victim.ini -n 5 -o exp_victim
+kept victim/note.txt
+"$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o lt.rawlog && rm lt_truemap.png && ln -s lt.rawlog lt_truemap.png && cp lt.rawlog lt.rawlog.orig
+run_case "sim --force: its true map PNG a link to its rawlog" "error:in the same place" none.out -- "$apps/omnirange-sim" -q --force -w w.world -r w.route -n 3 -o lt.rawlog
+cmp -s lt.rawlog lt.rawlog.orig || { echo "| | PROBLEM: the rawlog behind lt_truemap.png was changed |"; problems=$((problems + 1)); }
+printf 'base = factory.ini\n[experiment]\nname = f\n' > exp/ini/few.ini
+"$apps/omnirange-experiment" -q exp/ini/few.ini -n 5 -o few_report 2>/dev/null; echo mine > few_report.failed/notes.txt
+run_case "experiment: fails again beside a failed run's folder a user added to" "error:too few" none.out -- "$apps/omnirange-experiment" -q exp/ini/few.ini -n 5 -o few_report
+kept few_report.failed/notes.txt
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

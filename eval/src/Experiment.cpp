@@ -93,10 +93,15 @@ Metrics Experiment::run()
 	catch (const std::exception& e)
 	{
 		staged.keep();
-		// What the failed run made, kept for a look where a failed run of ours kept it before.
+		// What the failed run made, kept for a look where a failed run of ours kept it
+		// before, unless a user has put something of theirs in there since; listed,
+		// so that the next failed run can tell.
 		std::string failed = report + ".failed";
-		if (fs::exists(failed) && !isOutputFolderOf(failed, kProgram)) failed = staging;
-		else fs::remove_all(failed), fs::rename(staging, failed);
+		listOutputFolder(staging);
+		if (fs::exists(failed) && (!isOutputFolderOf(failed, kProgram) || !firstUnlistedIn(failed).empty()))
+			failed = staging;
+		else
+			fs::remove_all(failed), fs::rename(staging, failed);
 		throw std::runtime_error(std::string(e.what()) + " (partial output in '" + failed + "'; '" + report +
 								 "' is as it was)");
 	}

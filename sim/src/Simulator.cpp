@@ -31,9 +31,11 @@ namespace
 constexpr double kEpoch = 1767225600.0;  // 2026-01-01T00:00:00Z: timestamps start here
 constexpr char kProgram[] = "omnirange-sim";  // the outputs' owner (OutputRule.h)
 
+/** The rawlog's path without ".rawlog", through a link to it: the true maps go
+ * beside the file written, as its images folder does. */
 std::string stemOf(const std::string& rawlog)
 {
-	const std::string dir = imagesDirFor(rawlog);
+	const std::string dir = imagesDirFor(replacedFileOf(rawlog));
 	return dir.substr(0, dir.size() - std::string("_Images").size());
 }
 }  // namespace
@@ -63,6 +65,9 @@ SimInputs readInputs(const SimOptions& o)
 	std::vector<std::string> inputs{o.world_file, o.route_file, o.robot_ini};
 	const auto requireOutputs = [&] {
 		requireRawlogOutputAllowed(o.output, kProgram, inputs, o.force);
+		// A true map through a link onto the rawlog or into its images would be replaced by them, or they by it.
+		requireDistinctOutputs({o.output, imagesDirFor(replacedFileOf(o.output)), base + "_truemap.png",
+								base + "_truemap.gridmap.gz"});
 		requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::GridMap}},
 							  kProgram, inputs, o.force);
 	};

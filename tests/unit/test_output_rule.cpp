@@ -213,6 +213,15 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	EXPECT_EQ(read(d + "/report.tmp-999997"), "a user's notes");
 	EXPECT_TRUE(fs::exists(d + "/report.staging-999996"));
 	EXPECT_TRUE(fs::exists(d + "/report.old-999995"));
+	// A listed leftover of ours that a user has added a file to since: theirs now, kept whole.
+	fs::create_directory(d + "/report.old-999990");
+	markOutputFolder(d + "/report.old-999990", "omnirange-test");
+	write(d + "/report.old-999990/map.png", "ours");
+	listOutputFolder(d + "/report.old-999990");
+	write(d + "/report.old-999990/notes.txt", "a user's notes");
+	recoverLeftoversOf(d + "/report");
+	EXPECT_EQ(read(d + "/report.old-999990/notes.txt"), "a user's notes");
+	EXPECT_EQ(read(d + "/report.old-999990/map.png"), "ours");
 
 	// A file output's temporaries: an empty one (killed before it wrote) and
 	// one of its kind are removed; another kind is a user's and stays.

@@ -216,21 +216,27 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	throw std::runtime_error("'" + output + "' exists and is not " + kindName(kind) + hint);
 }
 
-void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
-						   const std::vector<std::string>& inputs, bool force)
+void requireDistinctOutputs(const std::vector<std::string>& paths)
 {
-	// Two outputs in one place: the second would replace the first.
-	for (std::size_t i = 0; i < outputs.size(); ++i)
-		for (std::size_t j = i + 1; j < outputs.size(); ++j)
+	for (std::size_t i = 0; i < paths.size(); ++i)
+		for (std::size_t j = i + 1; j < paths.size(); ++j)
 		{
-			const std::string a = outputPath(outputs[i].path), b = outputPath(outputs[j].path);
+			const std::string a = outputPath(paths[i]), b = outputPath(paths[j]);
 			if (a.empty() || b.empty()) continue;
 			std::error_code ec;
 			const fs::path pa = fs::weakly_canonical(fs::absolute(a), ec), pb = fs::weakly_canonical(fs::absolute(b), ec);
 			if (same(pa, pb) || within(pa, pb) || within(pb, pa))
-				throw std::runtime_error("the outputs '" + outputs[i].path + "' and '" + outputs[j].path +
+				throw std::runtime_error("the outputs '" + paths[i] + "' and '" + paths[j] +
 										 "' are in the same place: one would replace the other");
 		}
+}
+
+void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
+						   const std::vector<std::string>& inputs, bool force)
+{
+	std::vector<std::string> paths;
+	for (const auto& o : outputs) paths.push_back(o.path);
+	requireDistinctOutputs(paths);
 	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
 }
 
@@ -264,8 +270,9 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	// output's kind, or empty (killed before it wrote). A user's file that
 	// merely has such a name is left alone.
 	const auto ours = [&](const fs::path& p) {
-		if (fs::is_directory(fs::symlink_status(p, ec)))
-			return program.empty() ? fs::exists(p / kOutputMarker, ec) : isOutputFolderOf(p.string(), program);
+		if (fs::is_directory(fs::symlink_status(p, ec)))  // and nothing a user added since it was listed
+			return (program.empty() ? fs::exists(p / kOutputMarker, ec) : isOutputFolderOf(p.string(), program)) &&
+				   firstUnlistedIn(p.string()).empty();
 		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
 			   (fs::file_size(p, ec) == 0 || isOfKind(p.string(), kind));
 	};

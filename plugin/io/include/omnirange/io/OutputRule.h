@@ -50,7 +50,12 @@ struct Output
 	OutputKind kind;
 	std::string begins_with{};  ///< see requireOutputAllowed()
 };
-/** requireOutputAllowed() for each of a program's outputs ("" paths skipped). */
+/** Throws std::runtime_error naming two of `paths` that are one place, or
+ * one inside the other, through symlinks: the second would replace the first. */
+void requireDistinctOutputs(const std::vector<std::string>& paths);
+
+/** requireDistinctOutputs() and requireOutputAllowed() for each of a
+ * program's outputs ("" paths skipped). */
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force = false);
 
