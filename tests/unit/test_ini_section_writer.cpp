@@ -97,3 +97,17 @@ TEST(IniSectionWriter, AnIniEveryProgramWouldRefuseIsRefusedBeforeAnyKeyIsAdded)
 		EXPECT_EQ(read(path), text);
 	}
 }
+
+TEST(IniSectionWriter, ASectionNameNoReaderWouldTakeBackIsRefusedBeforeTheFileChanges)
+{
+	const std::string path = tmp("names.ini");
+	const std::string text = "[rangefinder]\nthreshold = 0.05\n";
+	std::ofstream(path) << text;
+	for (const std::string bad : {"", "a]b", "x\ny = 2", "two words", "[rangefinder]"})
+	{
+		EXPECT_THROW(writeIniSection(path, bad, {{"cx", "512"}}), std::invalid_argument) << bad;
+		EXPECT_EQ(read(path), text) << bad;
+	}
+	writeIniSection(path, "robot-2.mirror_v1", {{"cx", "512"}});
+	EXPECT_EQ(read(path), text + "\n[robot-2.mirror_v1]\ncx = 512\n");
+}

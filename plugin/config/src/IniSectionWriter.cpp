@@ -22,10 +22,20 @@ std::string withValue(const std::string& line, const std::string& key, const std
 }
 }  // namespace
 
+void requireSectionName(const std::string& section)
+{
+	const bool plain = !section.empty() && section.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+																	 "0123456789_-.") == std::string::npos;
+	if (!plain)
+		throw std::invalid_argument("section name '" + section + "': only letters, digits, '_', '-' and '.' make a [section] "
+									"every reader takes back");
+}
+
 void writeIniSection(const std::string& path, const std::string& section,
 					 const std::vector<std::pair<std::string, std::string>>& values,
 					 const std::map<std::string, std::string>& comments)
 {
+	requireSectionName(section);
 	std::vector<std::string> lines;
 	if (std::filesystem::exists(path))
 	{

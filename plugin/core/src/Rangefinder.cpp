@@ -2,6 +2,7 @@
 
 #include "omnirange/config/OptionsTable.h"
 
+#include "omnirange/config/IniSectionWriter.h"
 #include "omnirange/config/LayeredIni.h"
 #include <mrpt/config/CConfigFile.h>
 #include <opencv2/core.hpp>
@@ -85,6 +86,7 @@ RangefinderParams RangefinderParams::loadFromFile(const std::string& path, const
 
 void RangefinderParams::requireWritable(const std::string& path, const std::string& section)
 {
+	requireSectionName(section);
 	if (!std::filesystem::exists(path)) return;
 	try
 	{

@@ -16,9 +16,15 @@ namespace omnirange
  * one for it (OptionsTable::comments()); a missing section is appended; a
  * missing file is created. Every other line stays as it was. Written atomically (the old
  * file stays whole if anything fails). Throws std::runtime_error naming the
- * file if the section appears twice or the file cannot be read or written. */
+ * file if the section appears twice or the file cannot be read or written,
+ * and requireSectionName()'s error before anything is read. */
 void writeIniSection(const std::string& path, const std::string& section,
 					 const std::vector<std::pair<std::string, std::string>>& values,
 					 const std::map<std::string, std::string>& comments = {});
+
+/** Throws std::invalid_argument unless `section` is a name an ini line can
+ * hold and every reader takes back: letters, digits, '_', '-' and '.' (not
+ * empty; no ']', blank or line end, which would write a line nothing reads). */
+void requireSectionName(const std::string& section);
 
 }  // namespace omnirange
