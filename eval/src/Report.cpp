@@ -109,6 +109,34 @@ Metrics metricsOf(const ExperimentResults& r)
 	return m;
 }
 
+bool isMetricKey(const std::string& key)
+{
+	// Every key a run can write: a run with truth, a check region and one
+	// sensor labelled "L" that runs every engine.
+	static const Metrics every = [] {
+		ExperimentResults r;
+		r.accuracy.truth.frames = 1, r.has_check_region = true;
+		r.sensors.resize(1), r.sensors[0].label = "L", r.sensors[0].rbpf_ini = "x";
+		return metricsOf(r);
+	}();
+	if (every.count(key)) return true;
+	// MODE_LABEL_WHAT: the label any run of letters, digits and '_'.
+	const auto first = key.find('_');
+	for (const auto& [k, v] : every)
+	{
+		const auto l = k.find("_L_");
+		if (l == std::string::npos || first != l || key.compare(0, l + 1, k, 0, l + 1) != 0) continue;
+		const std::string suffix = k.substr(l + 2);  // "_precision"
+		if (key.size() <= l + 1 + suffix.size() || key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0)
+			continue;
+		const std::string label = key.substr(l + 1, key.size() - suffix.size() - l - 1);
+		if (!label.empty() && label.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") ==
+								  std::string::npos)
+			return true;
+	}
+	return false;
+}
+
 std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r)
 {
 	const double max_difference = AccuracyOptions{}.max_difference;

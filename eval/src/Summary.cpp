@@ -1,5 +1,7 @@
 #include "omnirange_eval/Summary.h"
 
+#include "omnirange_eval/Experiment.h"
+
 #include "omnirange_eval/Trajectory.h"
 
 #include <omnirange/config/OptionsTable.h>
@@ -26,6 +28,41 @@ double SummaryRow::get(const std::string& key) const
 	return it == metrics.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
 }
 
+namespace
+{
+/** [-] No figure of a run is larger: past it a value is garbled, not measured. */
+constexpr double kMaxMetric = 1e9;
+
+/** A report's metrics.ini, as omnirange-experiment writes it: the one
+ * section [metrics], only keys a run writes (in their own case), each a
+ * finite number. (A key may be missing: a report written before it was.) */
+Metrics readMetrics(const std::string& file)
+{
+	const mrpt::config::CConfigFile ini(file);
+	std::vector<std::string> sections, keys;
+	ini.getAllSections(sections);
+	for (const auto& section : sections)
+		if (section != "metrics") throw std::runtime_error(file + ": [" + section + "] is not a section of a report's metrics ([metrics])");
+	ini.getAllKeys("metrics", keys);
+	Metrics m;
+	for (const auto& k : keys)
+	{
+		if (!isMetricKey(k)) throw std::runtime_error(file + ": " + k + ": not a metric omnirange-experiment writes");
+		try
+		{
+			const double v = parseDouble(ini.read_string("metrics", k, "", true));
+			if (std::abs(v) > kMaxMetric) throw std::invalid_argument("must be within [-1e9, 1e9]");
+			m[k] = v;
+		}
+		catch (const std::invalid_argument& err)
+		{
+			throw std::runtime_error(file + ": " + k + ": " + err.what());
+		}
+	}
+	return m;
+}
+}  // namespace
+
 Summary collectMetrics(const std::vector<SuiteEntry>& entries, const std::string& results_dir)
 {
 	Summary s;
@@ -35,22 +72,7 @@ Summary collectMetrics(const std::vector<SuiteEntry>& entries, const std::string
 		if (!fs::exists(file)) throw std::runtime_error("no report of '" + e.name + "': '" + file + "' is missing");
 		requireRegularFile(file, "report");
 		requireNoRepeatedKeys(file);  // read as strictly as any ini: a garbled report is not an empty one
-		const mrpt::config::CConfigFile ini(file);
-		std::vector<std::string> keys;
-		ini.getAllKeys("metrics", keys);
-		SummaryRow r{e.name, e.group, {}};
-		for (const auto& k : keys)
-		{
-			try
-			{
-				r.metrics[k] = parseDouble(ini.read_string("metrics", k, "", true));
-			}
-			catch (const std::invalid_argument& err)
-			{
-				throw std::runtime_error(file + ": " + k + ": " + err.what());
-			}
-		}
-		s.push_back(std::move(r));
+		s.push_back({e.name, e.group, readMetrics(file)});
 	}
 	return s;
 }

@@ -72,6 +72,37 @@ TEST(Summary, AMissingReportIsAnErrorThatNamesIt)
 	}
 }
 
+TEST(Summary, AReportIsReadAsStrictlyAsItIsWritten)
+{
+	const std::vector<std::pair<std::string, std::string>> garbled = {
+		{"[metric]\naccuracy_mean_abs = 0.1\n", "[metric] is not a section"},
+		{"[metrics]\nAccuracy_Mean_Abs = 0.1\n", "Accuracy_Mean_Abs: not a metric"},
+		{"[metrics]\naccuracy_mean_abz = 0.1\n", "accuracy_mean_abz: not a metric"},
+		{"[metrics]\naccuracy_mean_abs = -1e308\n", "must be within"},
+		{"[metrics]\nicp_OMNI SCAN_ate_rmse = 0.1\n", "not a metric"},
+	};
+	for (const auto& [text, expected] : garbled)
+	{
+		const std::string results = test::freshDir("omnirange_summary", "garbled");
+		fs::create_directories(results + "/maze");
+		std::ofstream(results + "/maze/metrics.ini") << text;
+		try
+		{
+			eval::collectMetrics({{"maze", "main", "a maze"}}, results);
+			ADD_FAILURE() << text << ": no error";
+		}
+		catch (const std::runtime_error& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+			EXPECT_NE(std::string(e.what()).find("maze/metrics.ini"), std::string::npos) << e.what();
+		}
+	}
+	// A sensor's keys with the label the ini gave it.
+	const std::string results = test::freshDir("omnirange_summary", "labels");
+	writeReport(results, "maze", "guarded_FRONT_CAM_loops = 3\ngt_LASER2_check_region_marked = 0.5\n");
+	EXPECT_EQ(eval::collectMetrics({{"maze", "main", "a maze"}}, results)[0].get("guarded_FRONT_CAM_loops"), 3.0);
+}
+
 TEST(Summary, TablesShowTheRunsFiguresThePapersBesideAndFlagADivergedEngine)
 {
 	const eval::Summary s = eval::collectMetrics(kTwo, twoReports("tables"));

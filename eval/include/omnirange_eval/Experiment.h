@@ -57,6 +57,9 @@ struct ExperimentResults
 
 /** The metrics.ini keys and values of a run. */
 Metrics metricsOf(const ExperimentResults& r);
+/** Whether `key` is one metricsOf() can write (a sensor's keys with any label
+ * of letters, digits and '_'). */
+bool isMetricKey(const std::string& key);
 /** The report (Markdown; its figures are files beside it). */
 std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r);
 
