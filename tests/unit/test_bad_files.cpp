@@ -145,6 +145,31 @@ TEST(BadFiles, APngDecodesAsOpenCvDecodesItAndADamagedOneGivesOneReasonAndNoLine
 	EXPECT_EQ(printed, "") << "libpng's own lines reach the user";
 }
 
+TEST(BadFiles, ABmpAPlainPgmAndAPamCutShortAreRefusedBeforeOpenCvPrintsAboutThem)
+{
+	const std::string d = dir("cut_kinds");
+	cv::Mat img(40, 60, CV_8UC3);
+	cv::randu(img, 0, 255);
+	const std::vector<std::pair<std::string, std::vector<int>>> kinds = {
+		{"bmp", {}}, {"pgm", {cv::IMWRITE_PXM_BINARY, 0}}, {"ppm", {cv::IMWRITE_PXM_BINARY, 0}}, {"pam", {}}};
+	for (const auto& [ext, params] : kinds)
+	{
+		const std::string whole = d + "/whole." + ext, cut = d + "/cut." + ext;
+		ASSERT_TRUE(cv::imwrite(whole, ext == "pgm" ? img.col(0).clone().reshape(1, 40) : img, params)) << ext;
+		EXPECT_EQ(cv::norm(decodeImageFile(whole, "", cv::IMREAD_UNCHANGED), cv::imread(whole, cv::IMREAD_UNCHANGED),
+						   cv::NORM_INF),
+				  0.0)
+			<< ext;
+		std::ifstream in(whole, std::ios::binary);
+		const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+		std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() * 2 / 3);
+		testing::internal::CaptureStderr();
+		const std::string why = errorOf([&] { decodeImageFile(cut, "OMNICAM"); });
+		EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << ext << ": OpenCV's own lines reach the user";
+		EXPECT_NE(why.find("cut." + ext + "' of OMNICAM is truncated"), std::string::npos) << why;
+	}
+}
+
 TEST(BadFiles, AnImageWhoseHeaderAsksForTooManyPixelsIsRefusedBeforeDecoding)
 {
 	const std::string d = dir("huge");

@@ -74,9 +74,61 @@ bool pnmSize(Bytes b, unsigned long& width, unsigned long& height, bool& cut)
 			values[k] = values[k] * 10 + static_cast<unsigned long>(b[at] - '0');
 	}
 	width = values[0], height = values[1];
-	const unsigned long per_pixel = (b[1] == '6' ? 3 : 1) * (values[2] > 255 ? 2 : 1);
-	cut = binary && b.size() < at + 1 + width * height * per_pixel;  // one blank after the maximum
+	if (width * height > kMaxImagePixels) return true;  // refused by its size before anything is counted
+	if (binary)
+	{
+		const unsigned long per_pixel = (b[1] == '6' ? 3 : 1) * (values[2] > 255 ? 2 : 1);
+		cut = b.size() < at + 1 + width * height * per_pixel;  // one blank after the maximum
+		return true;
+	}
+	// Plain (ASCII) kinds: a number per sample, a digit per bit in P1.
+	const unsigned long needed = width * height * (b[1] == '3' ? 3 : 1);
+	unsigned long found = 0;
+	for (std::size_t i = at; i < b.size() && found < needed; ++i)
+	{
+		const bool digit = std::isdigit(static_cast<unsigned char>(b[i])) != 0;
+		if (digit && (b[1] == '1' || i == at || !std::isdigit(static_cast<unsigned char>(b[i - 1])))) ++found;
+	}
+	cut = found < needed;
 	return true;
+}
+
+/** A PAM's (P7) size from its header ("WIDTH 60\nHEIGHT 40\nDEPTH 3\nMAXVAL
+ * 255\nENDHDR\n"); false if it is not one. `cut`: fewer bytes than it promises. */
+bool pamSize(Bytes b, unsigned long& width, unsigned long& height, bool& cut)
+{
+	if (b.size() < 3 || b.substr(0, 3) != "P7\n") return false;
+	unsigned long depth = 0, maxval = 0;
+	std::size_t at = 3;
+	for (std::size_t end; (end = b.find('\n', at)) != std::string::npos; at = end + 1)
+	{
+		const Bytes line = b.substr(at, end - at);
+		if (line == "ENDHDR")
+		{
+			const unsigned long samples = width * height > kMaxImagePixels ? 0 : width * height * depth;
+			cut = b.size() < end + 1 + samples * (maxval > 255 ? 2 : 1);
+			return true;
+		}
+		const auto number = [&](const char* key, unsigned long& v) {
+			const std::size_t n = std::strlen(key);
+			if (line.substr(0, n) != key) return;
+			v = 0;
+			for (std::size_t i = n; i < line.size() && v < 1000000000UL; ++i)
+				if (std::isdigit(static_cast<unsigned char>(line[i]))) v = v * 10 + static_cast<unsigned long>(line[i] - '0');
+		};
+		number("WIDTH ", width), number("HEIGHT ", height), number("DEPTH ", depth), number("MAXVAL ", maxval);
+	}
+	cut = true;  // no end of header
+	return true;
+}
+
+/** Whether a BMP's uncompressed rows run past the file's end. */
+bool bmpCut(Bytes b, unsigned long width, unsigned long height)
+{
+	if (b.size() < 34 || le32(b, 30) != 0 || width * height > kMaxImagePixels) return false;  // compressed: OpenCV's to tell
+	const unsigned long bits = static_cast<unsigned char>(b[28]) | (static_cast<unsigned char>(b[29]) << 8);
+	const unsigned long stride = (width * bits + 31) / 32 * 4;
+	return b.size() < le32(b, 10) + stride * height;
 }
 
 /** Why the bytes of an image file cannot be decoded whole (cut, or too many
@@ -99,6 +151,11 @@ std::string imageProblem(Bytes b)
 		width = le32(b, 18);
 		const long h = static_cast<std::int32_t>(le32(b, 22));  // negative: stored top-down
 		height = static_cast<unsigned long>(h < 0 ? -h : h);
+		if (bmpCut(b, width, height)) why = "truncated: fewer pixel rows than its header says";
+	}
+	else if (bool cut = false; pamSize(b, width, height, cut))
+	{
+		if (cut) why = "truncated: fewer samples than its PAM header says";
 	}
 	else if (bool cut = false; pnmSize(b, width, height, cut))
 	{
