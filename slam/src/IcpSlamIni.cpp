@@ -39,7 +39,9 @@ std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::
 	std::vector<std::string> keys, ignored;
 	ini.getAllKeys(section, keys);
 	for (const auto& k : keys)
-		if (std::find(known.begin(), known.end(), k) == known.end()) ignored.push_back(k);
+		// MRPT matches keys in any case (maxiterations is maxIterations).
+		if (std::none_of(known.begin(), known.end(), [&](const std::string& m) { return sameKey(k, m); }))
+			ignored.push_back(k);
 	std::sort(ignored.begin(), ignored.end());
 	return ignored;
 }
@@ -55,7 +57,7 @@ constexpr double kMaxIcpValue = 1e4;
  * and the ranges MRPT asserts at run time, checked here with the key named. */
 void requireLikeMrptsDefault(const std::string& key, const std::string& model, double v)
 {
-	if (key == "ALFA" && !(v >= 0 && v < 1)) throw std::invalid_argument("must be within [0, 1)");
+	if (key == "alfa" && !(v >= 0 && v < 1)) throw std::invalid_argument("must be within [0, 1)");
 	if (key == "corresponding_points_decimation" && !(v >= 1)) throw std::invalid_argument("must be >= 1");
 	const bool count = model.find_first_of(".eE") == std::string::npos;
 	if (count && v != std::floor(v)) throw std::invalid_argument("not a whole number");
@@ -113,14 +115,15 @@ void requireStrictIcpSection(const std::string& file, const std::string& section
 		std::map<std::string, std::string> defaults;  // key as read -> MRPT's default, as written
 		std::vector<std::string> padded;
 		written.getAllKeys(section, padded);
-		for (const auto& k : padded) defaults[trimmed(k)] = trimmed(written.read_string(section, k, "", false));
+		for (const auto& k : padded) defaults[lowercase(trimmed(k))] = trimmed(written.read_string(section, k, "", false));
 		const mrpt::config::CConfigFile ini(file);
 		std::vector<std::string> keys;
 		ini.getAllKeys(section, keys);
 		for (const auto& key : keys)
 		{
-			std::string as_written = key;
-			if (key.size() > 4 && key.compare(key.size() - 4, 4, "_DEG") == 0) as_written.resize(key.size() - 4);
+			std::string as_written = lowercase(key);
+			if (as_written.size() > 4 && as_written.compare(as_written.size() - 4, 4, "_deg") == 0)
+				as_written.resize(as_written.size() - 4);
 			const std::string model = defaults[as_written];
 			const std::string value = readRawValue(ini, section, key);
 			try

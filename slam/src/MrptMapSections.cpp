@@ -14,12 +14,6 @@ namespace omnirange::slam
 {
 namespace
 {
-std::string lower(std::string s)
-{
-	for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-	return s;
-}
-
 /** A config source over the user's file that notes every key read and the
  * default MRPT gave for it ("%.16e" for a double, "%i" for an int, "0"/"1"
  * for a bool). Sections and keys as MRPT matches them: in any case. */
@@ -39,7 +33,7 @@ class RecordingConfig : public mrpt::config::CConfigFileBase
 	std::string readString(const std::string& section, const std::string& name, const std::string& def,
 						   bool fail) const override
 	{
-		const_cast<RecordingConfig*>(this)->read[lower(section)][lower(name)] = def;
+		const_cast<RecordingConfig*>(this)->read[lowercase(section)][lowercase(name)] = def;
 		return file_.read_string(section, name, def, fail);
 	}
 
@@ -50,7 +44,7 @@ class RecordingConfig : public mrpt::config::CConfigFileBase
 /** The value checked against the kind of MRPT's default. */
 void requireLikeDefault(const std::string& key, const std::string& model, const std::string& value)
 {
-	const std::string k = lower(key);
+	const std::string k = lowercase(key);
 	const bool numeric = !model.empty() && (std::isdigit(static_cast<unsigned char>(model[0])) || model[0] == '-' ||
 											 model[0] == '+' || model[0] == '.');
 	if (!numeric)  // an enum's name, as MRPT's default is
@@ -100,10 +94,10 @@ void requireStrictMapSections(const std::string& file, const std::string& prefix
 		maps.loadFromConfigFile(recording, prefix);
 		std::vector<std::string> sections;
 		ini.getAllSections(sections);
-		const std::string lower_prefix = lower(prefix);
+		const std::string lower_prefix = lowercase(prefix);
 		for (const auto& s : sections)
 		{
-			const std::string ls = lower(s);
+			const std::string ls = lowercase(s);
 			const bool counts = ls == lower_prefix;
 			if (!counts && ls.rfind(lower_prefix + "_", 0) != 0) continue;  // not a map's
 			if (!counts && recording.read.count(ls) == 0)
@@ -114,7 +108,7 @@ void requireStrictMapSections(const std::string& file, const std::string& prefix
 			ini.getAllKeys(s, keys);
 			for (const auto& key : keys)
 			{
-				const auto model = read.find(lower(key));
+				const auto model = read.find(lowercase(key));
 				if (model == read.end() && counts) continue;  // the program's own keys, checked by it
 				if (model == read.end())
 					throw std::invalid_argument("[" + s + "] " + key + ": not a key MRPT reads (misspelt?)");

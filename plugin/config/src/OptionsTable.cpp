@@ -32,6 +32,9 @@ double parseDouble(const std::string& text)
 	if (t.empty() || end != t.c_str() + t.size()) throw std::invalid_argument("not a number (no unit, '.' for decimals)");
 	// strtod also reads hexadecimal ("0x10", "0x1p-4"): no log or ini of ours writes numbers so.
 	if (t.find_first_of("xX") != std::string::npos) throw std::invalid_argument("not a decimal number (no hexadecimal)");
+	// ERANGE also for a number too near 0 to hold (1e-320): that one is no infinity.
+	if (errno == ERANGE && std::isfinite(v) && std::abs(v) < 1)
+		throw std::invalid_argument("too near 0 to hold as a double (write 0, or a number above 1e-300)");
 	if (!std::isfinite(v) || errno == ERANGE) throw std::invalid_argument("not a finite number");
 	return v;
 }
@@ -215,7 +218,10 @@ void forEachIniLine(const std::string& path,
 	int n = 0;
 	for (std::string line; std::getline(f, line);)
 	{
-		++n;
+		// Windows editors may save one; MRPT would read it as part of the first key or section.
+		if (++n == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+			throw std::runtime_error(path + ":1: the file begins with a UTF-8 byte-order mark: save it without one "
+											"(as plain UTF-8 or ASCII)");
 		const IniLine l = parseIniLine(line);
 		if (l.kind == IniLine::Kind::Section && l.name.empty())
 			throw std::runtime_error(path + ":" + std::to_string(n) + ": a section with no name ('[]')");
@@ -229,12 +235,6 @@ void forEachIniLine(const std::string& path,
 			throw std::runtime_error(path + ":" + std::to_string(n) + ": '" + printable(l.name.substr(0, 40)) +
 									 "' is not 'key = value', a [section] or a comment (is it an ini file?)");
 	}
-}
-
-std::string lowercase(std::string s)
-{
-	for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-	return s;
 }
 }  // namespace
 
@@ -253,6 +253,12 @@ std::string FieldInfo::rangeMessage() const
 {
 	const bool plain = unit.empty() || unit == "-" || unit == "bool";
 	return "must be " + (range ? range->text() : std::string("valid")) + (plain ? "" : " " + unit);
+}
+
+std::string lowercase(std::string s)
+{
+	for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+	return s;
 }
 
 bool sameKey(const std::string& a, const std::string& b) { return lowercase(a) == lowercase(b); }

@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <unistd.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <stdexcept>
 
@@ -115,7 +116,12 @@ mrpt::img::CImage RawlogWriter::externalImageCopy(const std::string& source, con
 	startImages();
 	std::error_code ec;
 	fs::copy_file(source, fs::path(tmp_images_) / name, fs::copy_options::overwrite_existing, ec);
-	if (ec) throw std::runtime_error("cannot copy image '" + source + "': " + ec.message());
+	// Reading the source was checked when it was decoded: what fails here is the writing (a full disk).
+	if (ec)
+		throw std::runtime_error("cannot write image '" + (fs::path(images_) / name).string() + "' (copied from '" +
+								 source + "'): " + ec.message() + (ec.value() == EIO || ec.value() == EFBIG || ec.value() == ENOSPC
+																	   ? " (is the disk full?)"
+																	   : ""));
 	mrpt::img::CImage img;
 	img.setExternalStorage(name);
 	return img;

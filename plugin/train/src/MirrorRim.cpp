@@ -23,6 +23,9 @@ MirrorRim detectMirrorRim(const std::vector<std::string>& images)
 		else cv::max(brightest, gray, brightest);
 	}
 	if (brightest.empty()) throw std::runtime_error("no image to find the mirror in");
+	// Which images: the user's own names, in every message below.
+	const std::string named = images.size() == 1 ? "'" + images[0] + "'"
+												 : "'" + images[0] + "' and " + std::to_string(images.size() - 1) + " more";
 	cv::Mat mask;
 	const double otsu = cv::threshold(brightest, mask, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
 	cv::threshold(brightest, mask, 0.6 * otsu, 255, cv::THRESH_BINARY);
@@ -32,10 +35,11 @@ MirrorRim detectMirrorRim(const std::vector<std::string>& images)
 		return cv::contourArea(a) < cv::contourArea(b);
 	});
 	if (largest == contours.end() || largest->size() < 5 || cv::contourArea(*largest) < 0.01 * brightest.total())
-		throw std::runtime_error("no bright mirror disc found in the images");
+		throw std::runtime_error("no bright mirror disc found in " + named);
 	std::vector<cv::Point> hull;
 	cv::convexHull(*largest, hull);
-	if (hull.size() < 5) throw std::runtime_error("no mirror disc found in the images: the bright region has no round edge");
+	if (hull.size() < 5)
+		throw std::runtime_error("no mirror disc found in " + named + ": the bright region has no round edge");
 	const cv::RotatedRect e = cv::fitEllipse(hull);
 	const double a = std::max(e.size.width, e.size.height) / 2, b = std::min(e.size.width, e.size.height) / 2;
 	return {e.center.x, e.center.y, (a + b) / 2, 1.0 - b / a, brightest.cols, brightest.rows};

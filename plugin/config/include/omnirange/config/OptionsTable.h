@@ -331,6 +331,8 @@ void requireOnlySections(const std::string& path, const std::vector<std::string>
 
 /** Whether two keys (or section names) are one as MRPT reads them: in any mix of case. */
 bool sameKey(const std::string& a, const std::string& b);
+/** `s` in lower case (ASCII): a key as MRPT compares it. */
+std::string lowercase(std::string s);
 
 /** The parts of load() that do not depend on the struct: the section's
  * keys, each checked against `known` and `renamed`. Returns the keys present. */
