@@ -11,6 +11,7 @@
 #include <omnirange/config/LayeredIni.h>
 
 #include <omnirange/io/RawlogReader.h>
+#include <omnirange/io/RawlogWriter.h>
 #include <omnirange/config/Temporaries.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -174,6 +175,36 @@ CalibrateApp::Options calibrationOf(const std::string& dir, const std::string& k
 	return o;
 }
 }  // namespace
+
+TEST(AppClasses, AScanOfImagesStoredInsideTheRawlogLinksNoImagesFolder)
+{
+	// The sample's first two images stored inside a rawlog of their own, as some grabbers write them.
+	const std::string dir = workDir("embedded");
+	const std::string in = dir + "/emb.rawlog";
+	{
+		RawlogWriter w(in, "omnirange-test");
+		for (int k = 0; k < 2; ++k)
+		{
+			mrpt::obs::CObservationImage image;
+			image.sensorLabel = "OMNICAM";
+			image.timestamp = mrpt::Clock::fromDouble(100.0 + k);
+			char name[128];
+			std::snprintf(name, sizeof name, "/rawlogs/factory-sample_Images/factory-sample_OMNICAM_%06d.jpg", k);
+			image.image = mrpt::img::CImage(cv::imread(kSource + name), mrpt::img::DEEP_COPY);
+			w.write(image);
+		}
+		w.commit();
+	}
+	ASSERT_FALSE(fs::exists(dir + "/emb_Images"));
+	ScanApp::Options s;
+	s.ini = kIni;
+	s.histogram = trainHistogram(dir);
+	s.scan.input = in;
+	s.scan.output = dir + "/scanned.rawlog";
+	s.verbosity = mrpt::system::LVL_ERROR;
+	EXPECT_EQ(ScanApp(s).run().images, 2u);
+	EXPECT_FALSE(fs::exists(fs::symlink_status(dir + "/scanned_Images"))) << "a link to a folder that does not exist";
+}
 
 TEST(AppClasses, CalibrateRecoversTheMirrorRadius)
 {

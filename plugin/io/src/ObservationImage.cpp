@@ -218,6 +218,8 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
 		// threads and reports a missing file with a stack trace.
 		return decodeImageFile(obs.image.getExternalStorageFileAbsolutePath(), obs.sensorLabel);
 	}
+	if (obs.image.isEmpty())  // MRPT's own access would throw a stack trace
+		throw std::runtime_error("an empty " + obs.sensorLabel + " image stored in the rawlog");
 	img = obs.image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
 	if (img.empty()) throw std::runtime_error("an empty " + obs.sensorLabel + " image");
 	if (img.channels() == 1) cv::cvtColor(img, img, cv::COLOR_GRAY2BGR);

@@ -143,7 +143,8 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	if (!o.decode_only)
 	{
 		writer.emplace(o.output, kScanProgram);
-		writer->linkImagesTo(imagesDirFor(o.input));
+		// Images stored inside the input need no folder: a link to none would point at nothing.
+		if (std::filesystem::exists(imagesDirFor(o.input))) writer->linkImagesTo(imagesDirFor(o.input));
 		if (o.force) writer->replaceAnyImagesFolder();
 	}
 	const std::size_t batch_images = 8 * static_cast<std::size_t>(o.threads);
