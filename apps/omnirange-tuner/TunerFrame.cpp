@@ -417,6 +417,9 @@ void TunerFrame::scoreAll()
 	if (!s_.hasColours()) return status("no histogram yet: train one first", Say::Error);
 	wxProgressDialog progress("omnirange-tuner", "scanning every frame", s_.frames(), this, wxPD_APP_MODAL | wxPD_AUTO_HIDE);
 	const auto a = s_.scoreAll([&](int done, int) { progress.Update(done); });
+	if (a.compared == 0)  // a mean over nothing would read as a perfect score
+		return status("whole rawlog: nothing to score against: no laser scan pairs with an image, or none with a hit",
+					  Say::Error);
 	wxString text = wxString::Format("whole rawlog: mean abs %.4f m over %zu rays of %d frames with a laser",
 									 a.mean_abs, a.compared, a.frames);
 	if (a.unreadable > 0) text += wxString::Format(" (%d frames could not be read and are left out)", a.unreadable);
@@ -428,6 +431,14 @@ void TunerFrame::train()
 {
 	const std::string out = std::filesystem::path(save_to_).replace_extension(".hist").string();
 	const bool exists = std::filesystem::exists(out);
+	try  // an input is never replaced: say so before asking whether to replace it
+	{
+		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner", {s_.options().rawlog, s_.options().ini}, true);
+	}
+	catch (const std::exception& e)
+	{
+		return status(wxString::FromUTF8(omnirange::app::errorText(e)), Say::Error);
+	}
 	if (exists && wxMessageDialog(this, out + " exists. Train a new histogram and replace it?",
 								  "omnirange-tuner: replace the histogram?", wxYES_NO | wxNO_DEFAULT | wxICON_WARNING)
 						  .ShowModal() != wxID_YES)
