@@ -1,5 +1,7 @@
 #include "omnirange_tuner/TunerSession.h"
 
+#include <mrpt/config/CConfigFile.h>
+
 #include <omnirange/config/IniSectionWriter.h>
 #include <omnirange/io/ObservationImage.h>
 #include <omnirange/config/OptionsTable.h>
@@ -195,11 +197,17 @@ RawlogTrainingResult TunerSession::train(const std::string& histogram, TrainingP
 
 void TunerSession::saveIni(const std::string& ini)
 {
-	std::vector<std::pair<std::string, std::string>> values;
-	for (const auto& f : RangefinderParams::table().fields()) values.emplace_back(f.info.key, f.print(params_));
 	const std::string target = ini.empty() ? o_.ini : ini;
 	RangefinderParams::requireWritable(target, o_.section);  // the file may have changed since the start
-	writeIniSection(target, o_.section, values, RangefinderParams::table().comments());
+	// Only the keys whose value differs from what the file gives now (through
+	// its base, or the defaults): every other line stays as the user wrote it.
+	RangefinderParams given;
+	if (std::filesystem::exists(target) && mrpt::config::CConfigFile(target).sectionExists(o_.section))
+		given = RangefinderParams::loadFromFile(target, o_.section);
+	std::vector<std::pair<std::string, std::string>> values;
+	for (const auto& f : RangefinderParams::table().fields())
+		if (f.print(params_) != f.print(given)) values.emplace_back(f.info.key, f.print(params_));
+	if (!values.empty()) writeIniSection(target, o_.section, values, RangefinderParams::table().comments());
 	saved_ = params_;
 }
 
