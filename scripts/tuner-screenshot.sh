@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # omnirange-tuner on the factory sample at frame 5 (histogram trained on the
-# sample, the ini's parameters), under Xvfb: the picture in docs/tuner.md.
+# sample, the ini's parameters), under Xvfb on a 1280x720 screen: the picture
+# in docs/tuner.md.
 #   scripts/tuner-screenshot.sh OUT.png
 # Needs Debian's xvfb, xdotool, x11-apps and imagemagick, and a build in build/.
 set -euo pipefail
@@ -8,7 +9,7 @@ src="$(cd "$(dirname "$0")/.." && pwd)"; apps="$src/build/apps"; out=$(realpath 
 work=$(mktemp -d)
 "$apps/omnirange-train" -q -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -o "$work/f.hist"
 export DISPLAY=:96
-Xvfb :96 -screen 0 1600x1000x24 >/dev/null 2>&1 & xvfb=$!
+Xvfb :96 -screen 0 1280x720x24 >/dev/null 2>&1 & xvfb=$!
 tuner=""
 trap 'kill $tuner $xvfb 2>/dev/null || true; rm -rf "$work"' EXIT
 sleep 2

@@ -13,9 +13,12 @@
 #include <omnirange/io/OutputRule.h>
 
 #include <wx/button.h>
+#include <wx/display.h>
+#include <wx/scrolwin.h>
 #include <wx/msgdlg.h>
 #include <wx/progdlg.h>
 #include <wx/sizer.h>
+#include <wx/wrapsizer.h>
 #include <wx/statusbr.h>
 
 #include <cctype>
@@ -28,8 +31,9 @@ using namespace omnirange;
 
 namespace
 {
-constexpr int kImageWidth = 768;  // the omnicam image is shown at this width
-constexpr int kPlotSize = 340, kSmall = 168;
+constexpr int kPlotSize = 300, kSmall = 146;
+constexpr int kControlsWidth = 560;  // the right-hand column, scrolled when the window is short
+constexpr int kMinImageWidth = 320, kMaxImageWidth = 1024;
 
 wxBitmap toBitmap(const cv::Mat& bgr, int width)
 {
@@ -71,6 +75,14 @@ std::string shownText(const KeyControl& c)
 }
 }  // namespace
 
+int TunerFrame::imageWidthFor(const wxSize& client)
+{
+	// 4:3 image; below it the frame's buttons, the overlays' switches, the actions
+	// and the keys (about 170 px), and the status bar.
+	const int by_height = (client.GetHeight() - 200) * 4 / 3, by_width = client.GetWidth() - kControlsWidth - 16;
+	return std::clamp(std::min(by_height, by_width), kMinImageWidth, kMaxImageWidth);
+}
+
 template <class Event, class Handler>
 void TunerFrame::bindGuarded(wxEvtHandler* source, const wxEventTypeTag<Event>& type, Handler handler)
 {
@@ -95,7 +107,12 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	auto* panel = new wxPanel(this);
 	auto* main = new wxBoxSizer(wxHORIZONTAL);
 	auto* left = new wxBoxSizer(wxVERTICAL);
-	image_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kImageWidth, kImageWidth * 3 / 4));
+	// The window fits the screen (a 1280x720 laptop too): the image takes what
+	// the controls' column leaves, and that column scrolls.
+	const wxRect screen = wxDisplay(static_cast<unsigned>(std::max(0, wxDisplay::GetFromWindow(this)))).GetClientArea();
+	const wxSize window(std::min(screen.width, 1600), std::min(screen.height, 1000));
+	image_width_ = imageWidthFor(window);
+	image_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(image_width_, image_width_ * 3 / 4));
 	left->Add(image_, 0, wxALL, 4);
 	auto* nav = new wxBoxSizer(wxHORIZONTAL);
 	auto* prev = new wxButton(panel, wxID_ANY, "<", wxDefaultPosition, wxSize(36, -1));
@@ -109,31 +126,48 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	nav->Add(slider_, 1, wxALL | wxEXPAND, 2);
 	nav->Add(frame_label_, 0, wxALL | wxALIGN_CENTER_VERTICAL, 4);
 	left->Add(nav, 0, wxEXPAND);
+	buildShowsAndActions(panel, left);  // under the image: always in view, however short the window
 	main->Add(left, 0);
 
+	auto* column = new wxScrolledWindow(panel, wxID_ANY, wxDefaultPosition, wxSize(kControlsWidth, -1), wxVSCROLL);
+	column->SetScrollRate(0, 12);
 	auto* right = new wxBoxSizer(wxVERTICAL);
-	plot_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kPlotSize, kPlotSize));
-	right->Add(new wxStaticText(panel, wxID_ANY,
-								"scan from above (1 m circles): omnicam hit green, no hit yellow, too close red, "
-								"outlier magenta; laser cyan; truth white"),
-			   0, wxALL, 2);
-	right->Add(plot_, 0, wxALL, 2);
-	auto* smalls = new wxBoxSizer(wxHORIZONTAL);
-	birdseye_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kSmall, kSmall));
-	colours_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kSmall, kSmall));
+	plot_ = new wxStaticBitmap(column, wxID_ANY, wxBitmap(kPlotSize, kPlotSize));
+	auto* plot_key = new wxStaticText(column, wxID_ANY,
+									  "scan from above (1 m circles, the max range grey): omnicam hit green, no hit "
+									  "yellow, too close red, outlier magenta; laser cyan; truth white");
+	plot_key->Wrap(kControlsWidth - 30);
+	right->Add(plot_key, 0, wxALL, 2);
+	// The plot, and beside it the bird's-eye view over the colours called floor.
+	auto* views = new wxBoxSizer(wxHORIZONTAL), *smalls = new wxBoxSizer(wxVERTICAL);
+	birdseye_ = new wxStaticBitmap(column, wxID_ANY, wxBitmap(kSmall, kSmall));
+	colours_ = new wxStaticBitmap(column, wxID_ANY, wxBitmap(kSmall, kSmall));
+	birdseye_->SetToolTip("bird's-eye view of the floor (the paper's eqs. 1-3)");
+	colours_->SetToolTip("the colours the classifier calls floor, most frequent first");
 	smalls->Add(birdseye_, 0, wxALL, 2);
 	smalls->Add(colours_, 0, wxALL, 2);
-	right->Add(new wxStaticText(panel, wxID_ANY, "bird's-eye view (eqs. 1-3)  |  colours called floor"), 0, wxALL, 2);
-	right->Add(smalls, 0);
-	frame_score_ = new wxStaticText(panel, wxID_ANY, "");
+	views->Add(plot_, 0, wxALL, 2);
+	views->Add(smalls, 0);
+	right->Add(views, 0);
+	right->Add(new wxStaticText(column, wxID_ANY, "right: bird's-eye view; colours called floor"), 0, wxALL, 2);
+	frame_score_ = new wxStaticText(column, wxID_ANY, "");
 	right->Add(frame_score_, 0, wxALL, 4);
-	buildControls(panel, right);
-	main->Add(right, 1, wxEXPAND);
+	buildControls(column, right);
+	column->SetSizer(right);
+	column->FitInside();
+	main->Add(column, 1, wxEXPAND);
 	panel->SetSizer(main);
 	auto* frame_sizer = new wxBoxSizer(wxVERTICAL);
 	frame_sizer->Add(panel, 1, wxEXPAND);
-	SetSizerAndFit(frame_sizer);
+	SetSizer(frame_sizer);
 	CreateStatusBar();
+	SetSize(window);
+	SetMinSize(wxSize(std::min(window.GetWidth(), 900), std::min(window.GetHeight(), 560)));
+	Bind(wxEVT_SIZE, [this](wxSizeEvent& e) {
+		e.Skip();
+		const int width = imageWidthFor(GetClientSize());
+		if (width != image_width_) image_width_ = width, refresh();
+	});
 
 	bindGuarded(prev, wxEVT_BUTTON, [this](wxCommandEvent&) { setFrame(frame_ - 1); });
 	bindGuarded(next, wxEVT_BUTTON, [this](wxCommandEvent&) { setFrame(frame_ + 1); });
@@ -148,11 +182,12 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 
 	controlsFromParams();
 	setFrame(std::clamp(first_frame, 0, s_.frames() - 1));
+	slider_->SetFocus();  // not a number field: the arrow keys step frames from the start
 }
 
 void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 {
-	auto* grid = new wxFlexGridSizer(4, 4, 4);
+	auto* grid = new wxFlexGridSizer(2, 4, 8);  // label, control: narrow enough for the column
 	const auto& table = RangefinderParams::table();
 	const auto add = [&](const std::string& key, wxWindow* control, KeyControl c) {
 		const FieldInfo& f = table.field(key).info;
@@ -166,7 +201,7 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 	const auto number = [&](const std::string& key, double inc, int digits, Range shown = Range::finite()) {
 		const Range r = table.field(key).info.range.value_or(shown);
 		const double lo = std::isfinite(r.lo) ? r.lo : shown.lo, hi = std::isfinite(r.hi) ? r.hi : shown.hi;
-		auto* c = new wxSpinCtrlDouble(p, wxID_ANY, "", wxDefaultPosition, wxSize(130, -1), wxSP_ARROW_KEYS, lo, hi,
+		auto* c = new wxSpinCtrlDouble(p, wxID_ANY, "", wxDefaultPosition, wxDefaultSize, wxSP_ARROW_KEYS, lo, hi,
 									   lo, inc);
 		c->SetDigits(digits);
 		bindGuarded(c, wxEVT_SPINCTRLDOUBLE, [this](wxSpinDoubleEvent&) { onParamsChanged(); });
@@ -193,17 +228,16 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 	number("R", 0.5, 1), number("forward_azimuth_deg", 1, 1, Range::closed(-360, 360));
 	check("mirrored"), check("wall_fit"), check("exposure_compensation");
 	sizer->Add(grid, 0, wxALL, 4);
-	buildShowsAndActions(p, sizer);
 }
 
 void TunerFrame::buildShowsAndActions(wxWindow* p, wxSizer* sizer)
 {
 
-	auto* shows = new wxBoxSizer(wxHORIZONTAL);
+	auto* shows = new wxWrapSizer(wxHORIZONTAL);
 	const std::vector<std::pair<const char*, bool*>> boxes = {
 		{"free", &overlay_.classification}, {"scanlines", &overlay_.scanlines}, {"rays", &overlay_.rays},
 		{"K-rejected", &overlay_.candidates}, {"laser", &overlay_.laser},    {"truth", &overlay_.truth},
-		{"set-up", &overlay_.camera}};
+		{"set-up", &overlay_.camera},         {"legend", &overlay_.legend}};
 	for (const auto& [name, flag] : boxes)
 	{
 		auto* box = new wxCheckBox(p, wxID_ANY, name);
@@ -216,7 +250,7 @@ void TunerFrame::buildShowsAndActions(wxWindow* p, wxSizer* sizer)
 	}
 	sizer->Add(shows, 0, wxALL, 2);
 
-	auto* actions = new wxBoxSizer(wxHORIZONTAL);
+	auto* actions = new wxWrapSizer(wxHORIZONTAL);
 	auto* score = new wxButton(p, wxID_ANY, "Score all frames");
 	auto* train = new wxButton(p, wxID_ANY, "Train histogram here (Ctrl+H)");
 	auto* save = new wxButton(p, wxID_ANY, "Save ini (Ctrl+S)");
@@ -225,10 +259,12 @@ void TunerFrame::buildShowsAndActions(wxWindow* p, wxSizer* sizer)
 	bindGuarded(save, wxEVT_BUTTON, [this](wxCommandEvent&) { this->save(); });
 	for (auto* b : {score, train, save}) actions->Add(b, 0, wxALL, 2);
 	sizer->Add(actions, 0, wxALL, 2);
-	sizer->Add(new wxStaticText(p, wxID_ANY,
-								"keys: Left/Right frame, Home/End first/last, [ and ] halve/double the threshold, "
-								"Ctrl+T type the threshold, Ctrl+S save, Ctrl+W close"),
-			   0, wxALL, 4);
+	auto* keys = new wxStaticText(p, wxID_ANY,
+								  "keys: Page Up/Down frame (Left/Right too outside a number field), Home/End "
+								  "first/last, [ and ] halve/double the threshold, Ctrl+T type the threshold, Ctrl+S "
+								  "save, Ctrl+W close");
+	keys->Wrap(std::max(kMinImageWidth, image_width_ - 10));
+	sizer->Add(keys, 0, wxALL, 4);
 }
 
 void TunerFrame::controlsFromParams()
@@ -304,7 +340,7 @@ void TunerFrame::showUnreadable(const std::string& why)
 {
 	const RangefinderParams& p = s_.params();
 	const cv::Size size(p.camera.image_width, p.camera.image_height);
-	image_->SetBitmap(toBitmap(tuner::drawPlaceholder(size, "frame " + std::to_string(frame_) + ": " + why), kImageWidth));
+	image_->SetBitmap(toBitmap(tuner::drawPlaceholder(size, "frame " + std::to_string(frame_) + ": " + why), image_width_));
 	plot_->SetBitmap(toBitmap(tuner::drawPlaceholder({kPlotSize, kPlotSize}, "no scan"), kPlotSize));
 	birdseye_->SetBitmap(toBitmap(tuner::drawPlaceholder({kSmall, kSmall}, ""), kSmall));
 	frame_score_->SetLabel("frame " + std::to_string(frame_) + " cannot be shown");
@@ -319,7 +355,7 @@ void TunerFrame::refresh()
 	{
 		if (!s_.hasColours())
 		{
-			image_->SetBitmap(toBitmap(s_.image(frame_), kImageWidth));
+			image_->SetBitmap(toBitmap(s_.image(frame_), image_width_));
 			return status("no histogram: train one on this rawlog (Ctrl+H) or start with -H FILE", Say::Routine);
 		}
 		scan = s_.scan(frame_);
@@ -329,7 +365,7 @@ void TunerFrame::refresh()
 		return showUnreadable(omnirange::app::errorText(e));
 	}
 	const Rangefinder& rf = s_.rangefinder();
-	image_->SetBitmap(toBitmap(tuner::drawOmniOverlay(scan, rf, overlay_), kImageWidth));
+	image_->SetBitmap(toBitmap(tuner::drawOmniOverlay(scan, rf, overlay_), image_width_));
 	plot_->SetBitmap(toBitmap(tuner::drawScanPlot(scan, s_.params(), kPlotSize), kPlotSize));
 	if (rangefinder_changed_)
 	{
@@ -365,6 +401,9 @@ void TunerFrame::onKey(wxKeyEvent& e)
 		if (key == 'W' || key == 'Q') return static_cast<void>(Close());
 		if (key == 'T') return threshold_->SetFocus(), threshold_->SetSelection(-1, -1);
 	}
+	// Page Up/Down step frames whatever has the focus; a number field keeps its arrows and Home/End.
+	if (key == WXK_PAGEDOWN) return setFrame(frame_ + 1);
+	if (key == WXK_PAGEUP) return setFrame(frame_ - 1);
 	if (!typing)
 	{
 		if (key == WXK_RIGHT) return setFrame(frame_ + 1);

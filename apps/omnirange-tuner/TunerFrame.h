@@ -32,7 +32,7 @@ class TunerFrame : public wxFrame
 	/** Binds `handler` to `type` on `source` so that what it throws is shown, not fatal. */
 	template <class Event, class Handler>
 	void bindGuarded(wxEvtHandler* source, const wxEventTypeTag<Event>& type, Handler handler);
-	/** A control per tunable key, then buildShowsAndActions(). */
+	/** A control per tunable key. */
 	void buildControls(wxWindow* parent, wxSizer* sizer);
 	/** The overlays' switches, the buttons and the keys' legend. */
 	void buildShowsAndActions(wxWindow* parent, wxSizer* sizer);
@@ -53,7 +53,11 @@ class TunerFrame : public wxFrame
 	enum class Say { Routine, Note, Error };  // Note and Error are also printed on stdout
 	void status(const wxString& text, Say how = Say::Note);
 
+	/** The omnicam image's shown width for a client area of `client`. */
+	static int imageWidthFor(const wxSize& client);
+
 	omnirange::tuner::TunerSession& s_;
+	int image_width_{768};
 	std::string save_to_;
 	omnirange::tuner::OverlayOptions overlay_;
 	int frame_{0};

@@ -30,7 +30,7 @@ static void BM_TunerUpdate(benchmark::State& state)
 {
 	auto& s = session();
 	s.scan(5);  // the frame decoded once, as when a control changes
-	const omnirange::tuner::OverlayOptions all{true, true, true, true, true, true, true, 8};
+	const omnirange::tuner::OverlayOptions all{true, true, true, true, true, true, true, true, 8};
 	for (auto _ : state)
 	{
 		const auto f = s.scan(5);
@@ -47,7 +47,7 @@ static void BM_TunerNextFrame(benchmark::State& state)
 {
 	auto& s = session();
 	int k = 0;
-	const omnirange::tuner::OverlayOptions all{true, true, true, true, true, true, true, 8};
+	const omnirange::tuner::OverlayOptions all{true, true, true, true, true, true, true, true, 8};
 	for (auto _ : state)
 	{
 		const auto f = s.scan(k = (k + 1) % s.frames());

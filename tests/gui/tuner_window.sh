@@ -1,13 +1,14 @@
 # Sourced by the tuner's Xvfb tests: a virtual display, the tuner on it, and
 # a pixel count of a screenshot.
-#   start_tuner LOG ARGS...  starts Xvfb and omnirange-tuner ARGS (from $apps),
+#   start_tuner LOG ARGS...  starts Xvfb (a screen of $SCREEN, 1600x1000x24 unless set) and
+#                            omnirange-tuner ARGS (from $apps),
 #                            its output into LOG; sets $win (its window), $tuner, $xvfb
 #   count_colour SHOT COLOUR pixels of exactly COLOUR in the image SHOT
 
 start_tuner() {
   local log=$1; shift
   local display=:$(( 80 + RANDOM % 19 ))
-  Xvfb "$display" -screen 0 1600x1000x24 >/dev/null 2>&1 & xvfb=$!
+  Xvfb "$display" -screen 0 "${SCREEN:-1600x1000x24}" >/dev/null 2>&1 & xvfb=$!
   tuner=""
   trap 'kill $tuner $xvfb 2>/dev/null || true' EXIT
   export DISPLAY=$display

@@ -218,7 +218,7 @@ TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOf
 	const FrameScan f = s.scan(5);
 	const Rangefinder& rf = s.rangefinder();
 	OverlayOptions none;
-	none.classification = none.rays = none.candidates = none.laser = none.truth = none.camera = false;
+	none.classification = none.rays = none.candidates = none.laser = none.truth = none.camera = none.legend = false;
 	const cv::Mat plain = drawOmniOverlay(f, rf, none);
 	EXPECT_EQ(cv::norm(plain, f.bgr, cv::NORM_INF), 0.0);
 
@@ -248,13 +248,21 @@ TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOf
 
 	OverlayOptions tint = none;
 	tint.classification = true;
+	tint.legend = false;
 	const cv::Mat tinted = drawOmniOverlay(f, rf, tint);
-	// Just beyond the base ahead is free floor: tinted towards blue.
-	const Pixel ahead = rf.camera().pixelFromPolar(0.0, rf.params().scanner.base_radius + 5);
-	const cv::Vec3b a = tinted.at<cv::Vec3b>(static_cast<int>(ahead.v), static_cast<int>(ahead.u));
-	const cv::Vec3b b = f.bgr.at<cv::Vec3b>(static_cast<int>(ahead.v), static_cast<int>(ahead.u));
-	EXPECT_GT(a[0], b[0]);
-	EXPECT_LT(a[2], b[2]);
+	// Just beyond the base ahead is free floor: tinted towards blue in stripes,
+	// so about half of a patch there is tinted and half is not.
+	const Pixel ahead = rf.camera().pixelFromPolar(0.0, rf.params().scanner.base_radius + 8);
+	int tinted_px = 0, patch = 0;
+	for (int dv = -3; dv <= 3; ++dv)
+		for (int du = -3; du <= 3; ++du, ++patch)
+		{
+			const cv::Point at(static_cast<int>(ahead.u) + du, static_cast<int>(ahead.v) + dv);
+			const cv::Vec3b a = tinted.at<cv::Vec3b>(at), b = f.bgr.at<cv::Vec3b>(at);
+			tinted_px += a[0] > b[0] && a[2] < b[2];
+		}
+	EXPECT_GT(tinted_px, patch / 4);
+	EXPECT_LT(tinted_px, 3 * patch / 4);
 
 	// In dimmer light, with exposure compensation on, the tint shows what the
 	// scan classified: the compensated floor, which the trained classifier
@@ -264,11 +272,18 @@ TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOf
 	const Rangefinder dim_rf(compensated, s.colours());
 	FrameScan dim = f;
 	f.bgr.convertTo(dim.bgr, -1, 0.6);
-	const cv::Vec3b d = dim.bgr.at<cv::Vec3b>(static_cast<int>(ahead.v), static_cast<int>(ahead.u));
-	ASSERT_FALSE(rf.classifier().isFree(&d[0])) << "the dimmed floor must be outside the trained colours";
-	const cv::Vec3b dt =
-		drawOmniOverlay(dim, dim_rf, tint).at<cv::Vec3b>(static_cast<int>(ahead.v), static_cast<int>(ahead.u));
-	EXPECT_GT(dt[0], d[0]);
+	const cv::Mat dim_tinted = drawOmniOverlay(dim, dim_rf, tint);
+	int dim_free = 0, dim_tinted_px = 0;
+	for (int dv = -3; dv <= 3; ++dv)
+		for (int du = -3; du <= 3; ++du)
+		{
+			const cv::Point at(static_cast<int>(ahead.u) + du, static_cast<int>(ahead.v) + dv);
+			const cv::Vec3b d = dim.bgr.at<cv::Vec3b>(at);
+			dim_free += rf.classifier().isFree(&d[0]);
+			dim_tinted_px += dim_tinted.at<cv::Vec3b>(at)[0] > d[0];
+		}
+	ASSERT_EQ(dim_free, 0) << "the dimmed floor must be outside the trained colours";
+	EXPECT_GT(dim_tinted_px, patch / 4);
 
 	const cv::Mat plot = drawScanPlot(f, s.params(), 300);
 	EXPECT_GT(countColour(plot, colour::kHit), 50);

@@ -62,12 +62,39 @@ void tintFreePixels(cv::Mat& img, const Rangefinder& rf)
 			classifier.classify(img.data, pixels.data(), static_cast<int>(pixels.size()), free.data());
 			for (std::size_t k = 0; k < pixels.size(); ++k)
 			{
-				if (!free[k]) continue;
+				const int u = pixels[k] % img.cols;
+				if (!free[k] || (u + v) / 3 % 2 != 0) continue;  // stripes 3 px wide
 				std::uint8_t* px = img.data + 3 * static_cast<std::size_t>(pixels[k]);
 				for (int c = 0; c < 3; ++c) px[c] = static_cast<std::uint8_t>((3 * px[c] + 2 * static_cast<int>(tint[c])) / 5);
 			}
 		}
 	});
+}
+/** A key to the colours the overlays `o` show, top left, where an omnicam
+ * image has only the corner outside its mirror. */
+void drawLegend(cv::Mat& img, const OverlayOptions& o)
+{
+	std::vector<std::pair<std::string, cv::Scalar>> items;
+	if (o.rays)
+		items.insert(items.end(), {{"hit", colour::kHit}, {"no hit (max range)", colour::kNoHit},
+								   {"too close (base)", colour::kTooClose}, {"outlier", colour::kOutlier}});
+	if (o.candidates) items.push_back({"K-rejected", colour::kRejectedCandidate});
+	if (o.laser) items.push_back({"laser", colour::kLaser});
+	if (o.truth) items.push_back({"truth", colour::kTruth});
+	if (o.classification) items.push_back({"free (striped)", colour::kFree});
+	if (o.camera) items.push_back({"max range circle", colour::kMaxRange});
+	const double scale = std::max(0.4, img.cols / 2048.0);
+	const int line = static_cast<int>(std::lround(44 * scale)), box = line * 2 / 3;
+	if (items.empty()) return;
+	cv::rectangle(img, cv::Rect(0, 0, static_cast<int>(380 * scale), line * static_cast<int>(items.size()) + line / 2),
+				  colour::kLegend, cv::FILLED);
+	for (std::size_t i = 0; i < items.size(); ++i)
+	{
+		const int y = line / 4 + line * static_cast<int>(i);
+		cv::rectangle(img, cv::Rect(line / 4, y, box, box), items[i].second, cv::FILLED);
+		cv::putText(img, items[i].first, {line / 4 + box + line / 3, y + box}, cv::FONT_HERSHEY_SIMPLEX, 1.2 * scale,
+					cv::Scalar(235, 235, 235), std::max(1, static_cast<int>(std::lround(2 * scale))), cv::LINE_AA);
+	}
 }
 }  // namespace
 
@@ -86,8 +113,10 @@ cv::Mat drawOmniOverlay(const FrameScan& s, const Rangefinder& rf, const Overlay
 	{
 		const cv::Point c(static_cast<int>(std::lround(cam.params().cx)), static_cast<int>(std::lround(cam.params().cy)));
 		cv::circle(img, c, static_cast<int>(std::lround(base)), colour::kCircle, 1, cv::LINE_AA);
-		cv::circle(img, c, static_cast<int>(std::lround(outer)), colour::kNoHit, 1, cv::LINE_AA);
+		cv::circle(img, c, static_cast<int>(std::lround(outer)), colour::kMaxRange, 2, cv::LINE_AA);
 		cv::circle(img, c, static_cast<int>(std::lround(cam.horizonRho())), colour::kCircle, 1, cv::LINE_AA);
+		// White edged in black: seen on a light floor and a dark one alike.
+		cv::arrowedLine(img, c, at(cam.pixelFromPolar(0.0, outer)), cv::Scalar(0, 0, 0), 5, cv::LINE_AA, 0, 0.05);
 		cv::arrowedLine(img, c, at(cam.pixelFromPolar(0.0, outer)), colour::kForward, 2, cv::LINE_AA, 0, 0.05);
 	}
 	if (o.laser)
@@ -108,6 +137,7 @@ cv::Mat drawOmniOverlay(const FrameScan& s, const Rangefinder& rf, const Overlay
 		cv::circle(img, end, 2, statusColour(r.status), -1);
 		if (r.by_step) cv::circle(img, end, 4, colour::kByStep, 1);  // the brightness step ended it, not colour
 	}
+	if (o.legend) drawLegend(img, o);
 	return img;
 }
 
@@ -121,7 +151,7 @@ cv::Mat drawScanPlot(const FrameScan& s, const RangefinderParams& p, int size)
 	};
 	for (int m = 1; m <= static_cast<int>(p.scanner.max_range); ++m)
 		cv::circle(img, {int(c), int(c)}, static_cast<int>(std::lround(m * scale)), cv::Scalar(70, 70, 70), 1, cv::LINE_AA);
-	cv::circle(img, {int(c), int(c)}, static_cast<int>(std::lround(p.scanner.max_range * scale)), colour::kNoHit, 1,
+	cv::circle(img, {int(c), int(c)}, static_cast<int>(std::lround(p.scanner.max_range * scale)), colour::kMaxRange, 1,
 			   cv::LINE_AA);
 	cv::arrowedLine(img, {int(c), int(c)}, to(0.0, 0.5), colour::kForward, 2, cv::LINE_AA, 0, 0.3);
 	for (const auto& q : s.truth_pairs)

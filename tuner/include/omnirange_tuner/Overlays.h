@@ -11,22 +11,27 @@ namespace omnirange::tuner
 {
 struct OverlayOptions
 {
-	bool classification{true};  ///< free-floor pixels tinted blue
+	bool classification{true};  ///< free-floor pixels tinted blue in diagonal stripes
 	bool scanlines{false};  ///< every scanline_step-th scanline, grey
 	bool rays{true};  ///< each ray's end, coloured by its status
 	bool candidates{true};  ///< the last candidate each ray's K filter turned down, orange
 	bool laser{true};  ///< the laser's hits, cyan
 	bool truth{true};  ///< where the floor really ends (TRUTH), white
 	bool camera{true};  ///< the set-up checks: base, max-range and horizon circles, forward arrow
+	bool legend{true};  ///< a key to the colours shown, in the image's top-left corner
 	int scanline_step{8};
 };
 
 /** The colours (B, G, R) of the overlays, for the legend and the tests. */
 namespace colour
 {
+// Each colour means one thing: the max-range circle is not no-hit's yellow,
+// the forward arrow not too-close's red; free floor is striped, not a solid
+// tint an obstacle of that colour could be taken for.
 inline const cv::Scalar kHit{0, 255, 0}, kNoHit{0, 255, 255}, kTooClose{0, 0, 255}, kOutlier{255, 0, 255},
 	kRejectedCandidate{0, 165, 255}, kLaser{255, 255, 0}, kTruth{255, 255, 255}, kFree{255, 0, 0},
-	kForward{0, 0, 255}, kCircle{200, 200, 200}, kByStep{0, 90, 0}, kPlaceholder{40, 40, 90};
+	kForward{255, 255, 255}, kCircle{200, 200, 200}, kMaxRange{160, 160, 160}, kByStep{0, 90, 0},
+	kPlaceholder{40, 40, 90}, kLegend{20, 20, 20};
 }
 
 /** What is shown instead of a frame that cannot be: `size`, filled with

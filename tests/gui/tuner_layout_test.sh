@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# omnirange-tuner on a 1280x720 screen, a small laptop's, under Xvfb:
+#  - the window fits the screen, and GTK prints no warning at start;
+#  - the image with its legend, and the buttons under it, are in view;
+#  - Page Down steps frames even from a number field;
+#  - Save changes only the line of the key changed (and adds its comment).
+#   tuner_layout_test.sh SOURCE_DIR APPS_DIR WORK_DIR
+set -euo pipefail
+src=$1; apps=$2; work=$3
+rm -rf "$work" && mkdir -p "$work"
+"$apps/omnirange-train" -q -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -o "$work/f.hist"
+cp "$src/ini/factory.ini" "$work/user.ini"
+cp "$src/ini/experiment-base.ini" "$work/"  # user.ini's base
+fail=0
+check() {  # check DESCRIPTION COMMAND...
+  if "${@:2}"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi
+}
+
+. "$(dirname "$0")/tuner_window.sh"
+SCREEN=1280x720x24 start_tuner "$work/tuner.log" -i "$src/rawlogs/factory-sample.rawlog" -c "$work/user.ini" -H "$work/f.hist"
+eval "$(xdotool getwindowgeometry --shell "$win")"  # X, Y, WIDTH, HEIGHT
+echo "window: ${WIDTH}x${HEIGHT} at $X,$Y"
+check "the window fits a 1280x720 screen" [ $((X + WIDTH)) -le 1280 -a $((Y + HEIGHT)) -le 720 ]
+check "no GTK warning at start" bash -c "! grep -q 'Gtk-' '$work/tuner.log'"
+xwd -root -silent | /usr/bin/convert xwd:- "$work/shot.png"
+green=$(count_colour "$work/shot.png" "rgb(0,255,0)"); legend=$(count_colour "$work/shot.png" "rgb(20,20,20)")
+echo "screenshot: $green hit-green pixels, $legend legend-background pixels"
+check "the image's rays are in view" [ "$green" -gt 200 ]
+check "the legend is in view" [ "$legend" -gt 3000 ]
+
+key() { xdotool key --window "$win" "$@"; sleep 0.7; }
+key ctrl+t  # the threshold's field has the focus
+xdotool type --window "$win" "0.1"; sleep 0.3
+key Next  # Page Down, from inside the number field
+check "Page Down steps a frame from a number field" grep -q "frame 1 / 19" <(xdotool getwindowname "$win")
+key ctrl+s
+sleep 1
+added=$(diff "$src/ini/factory.ini" "$work/user.ini" | grep '^>' | sed 's/^> //' || true)
+removed=$(diff "$src/ini/factory.ini" "$work/user.ini" | grep -c '^<' || true)
+echo "saved lines added:"; printf '%s\n' "$added"
+check "Save wrote the threshold" grep -qx "threshold = 0.1" "$work/user.ini"
+# The user's ini had no [rangefinder] (its base has): the section comes with the key.
+check "Save changed no other line" [ "$removed" -eq 0 -a "$(printf '%s\n' "$added" | grep -vc '^;\|^threshold = 0.1$\|^\[rangefinder\]$\|^$')" -eq 0 ]
+[ $fail -eq 0 ] && echo "1 passed, 0 failed" || { echo "0 passed, 1 failed"; cat "$work/tuner.log"; exit 1; }
