@@ -19,6 +19,7 @@
 #include <wx/progdlg.h>
 #include <wx/sizer.h>
 #include <wx/wrapsizer.h>
+#include <wx/dcclient.h>
 #include <wx/statusbr.h>
 
 #include <cctype>
@@ -34,6 +35,8 @@ namespace
 constexpr int kPlotSize = 300, kSmall = 146;
 constexpr int kControlsWidth = 560;  // the right-hand column, scrolled when the window is short
 constexpr int kMinImageWidth = 320, kMaxImageWidth = 1024;
+constexpr int kErrorPlotHeight = 64;
+constexpr int kGrab = 8;  // [display px] how near a circle or the arrow's tip a press takes it
 
 wxBitmap toBitmap(const cv::Mat& bgr, int width)
 {
@@ -112,7 +115,8 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	const wxRect screen = wxDisplay(static_cast<unsigned>(std::max(0, wxDisplay::GetFromWindow(this)))).GetClientArea();
 	const wxSize window(std::min(screen.width, 1600), std::min(screen.height, 1000));
 	image_width_ = imageWidthFor(window);
-	image_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(image_width_, image_width_ * 3 / 4));
+	image_ = new wxGenericStaticBitmap(panel, wxID_ANY, wxBitmap(image_width_, image_width_ * 3 / 4));
+	image_->SetToolTip("drag the centre, the base, max-range or horizon (R) circle, or the forward arrow; Shift+click places the centre");
 	left->Add(image_, 0, wxALL, 4);
 	auto* nav = new wxBoxSizer(wxHORIZONTAL);
 	auto* prev = new wxButton(panel, wxID_ANY, "<", wxDefaultPosition, wxSize(36, -1));
@@ -132,6 +136,10 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	auto* column = new wxScrolledWindow(panel, wxID_ANY, wxDefaultPosition, wxSize(kControlsWidth, -1), wxVSCROLL);
 	column->SetScrollRate(0, 12);
 	auto* right = new wxBoxSizer(wxVERTICAL);
+	error_plot_ = new wxGenericStaticBitmap(column, wxID_ANY, wxBitmap(kControlsWidth - 40, kErrorPlotHeight));
+	error_plot_->SetToolTip("each frame's mean error over the whole log: laser cyan, truth white; click to go to that frame");
+	right->Add(new wxStaticText(column, wxID_ANY, "error per frame (Score all frames; click to go there)"), 0, wxALL, 2);
+	right->Add(error_plot_, 0, wxALL, 2);
 	plot_ = new wxStaticBitmap(column, wxID_ANY, wxBitmap(kPlotSize, kPlotSize));
 	auto* plot_key = new wxStaticText(column, wxID_ANY,
 									  "scan from above (1 m circles, the max range grey): omnicam hit green, no hit "
@@ -178,6 +186,11 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	bindGuarded(this, wxEVT_TIMER, [this](wxTimerEvent&) { setFrame(frame_ + 1 < s_.frames() ? frame_ + 1 : 0); });
 	bindGuarded(slider_, wxEVT_SLIDER, [this](wxCommandEvent&) { setFrame(slider_->GetValue()); });
 	bindGuarded(this, wxEVT_CHAR_HOOK, [this](wxKeyEvent& e) { onKey(e); });
+	for (const auto type : {wxEVT_LEFT_DOWN, wxEVT_MOTION, wxEVT_LEFT_UP})
+		bindGuarded(image_, type, [this](wxMouseEvent& e) { onImageMouse(e); });
+	bindGuarded(error_plot_, wxEVT_LEFT_DOWN, [this](wxMouseEvent& e) {
+		if (score_) setFrame(tuner::frameAtColumn(e.GetX(), error_plot_->GetSize().GetWidth(), s_.frames()));
+	});
 	Bind(wxEVT_CLOSE_WINDOW, &TunerFrame::onClose, this);
 
 	controlsFromParams();
@@ -226,6 +239,8 @@ void TunerFrame::buildControls(wxWindow* p, wxSizer* sizer)
 	choice("boundary_model"), choice("outlier_filter");
 	number("cx", 0.5, 1, pixels), number("cy", 0.5, 1, pixels);
 	number("R", 0.5, 1), number("forward_azimuth_deg", 1, 1, Range::closed(-360, 360));
+	number("base_radius", 1, 1, pixels), number("min_range", 0.05, 2, Range::closed(0, 100));
+	number("max_range", 0.1, 2, Range::closed(0, 100));
 	check("mirrored"), check("wall_fit"), check("exposure_compensation");
 	sizer->Add(grid, 0, wxALL, 4);
 }
@@ -254,10 +269,18 @@ void TunerFrame::buildShowsAndActions(wxWindow* p, wxSizer* sizer)
 	auto* score = new wxButton(p, wxID_ANY, "Score all frames");
 	auto* train = new wxButton(p, wxID_ANY, "Train histogram here (Ctrl+H)");
 	auto* save = new wxButton(p, wxID_ANY, "Save ini (Ctrl+S)");
+	auto* undo = new wxButton(p, wxID_ANY, "Undo (Ctrl+Z)");
+	auto* reset = new wxButton(p, wxID_ANY, "Reset to loaded");
+	bindGuarded(undo, wxEVT_BUTTON, [this](wxCommandEvent&) {
+		if (!s_.undo()) return status("nothing to undo");
+		controlsFromParams(), rangefinder_changed_ = true, updateTitle(), refresh();
+	});
+	bindGuarded(reset, wxEVT_BUTTON, [this](wxCommandEvent&) { s_.resetToLoaded(), controlsFromParams(),
+																rangefinder_changed_ = true, updateTitle(), refresh(); });
 	bindGuarded(score, wxEVT_BUTTON, [this](wxCommandEvent&) { scoreAll(); });
 	bindGuarded(train, wxEVT_BUTTON, [this](wxCommandEvent&) { this->train(); });
 	bindGuarded(save, wxEVT_BUTTON, [this](wxCommandEvent&) { this->save(); });
-	for (auto* b : {score, train, save}) actions->Add(b, 0, wxALL, 2);
+	for (auto* b : {score, train, save, undo, reset}) actions->Add(b, 0, wxALL, 2);
 	sizer->Add(actions, 0, wxALL, 2);
 	auto* keys = new wxStaticText(p, wxID_ANY,
 								  "keys: Page Up/Down frame (Left/Right too outside a number field), Home/End "
@@ -300,7 +323,7 @@ bool TunerFrame::applyControls()
 				throw std::invalid_argument(c.key + " '" + text + "': " + e.what());
 			}
 		}
-		s_.setParams(p);
+		s_.changeParams(p);
 	}
 	catch (const std::exception& e)
 	{
@@ -374,6 +397,7 @@ void TunerFrame::refresh()
 		rangefinder_changed_ = false;
 	}
 	birdseye_->SetBitmap(toBitmap(view_->render(scan.bgr), kSmall));
+	drawErrorPlot();
 	const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	const int hits = scan.scan.count(RayStatus::Hit), rays = static_cast<int>(scan.scan.rays.size());
 	wxString score = wxString::Format("hits %d of %d rays", hits, rays);
@@ -400,6 +424,11 @@ void TunerFrame::onKey(wxKeyEvent& e)
 		if (key == 'H') return train();
 		if (key == 'W' || key == 'Q') return static_cast<void>(Close());
 		if (key == 'T') return threshold_->SetFocus(), threshold_->SetSelection(-1, -1);
+		if (key == 'Z')
+		{
+			if (!s_.undo()) return status("nothing to undo");
+			return controlsFromParams(), rangefinder_changed_ = true, updateTitle(), refresh();
+		}
 	}
 	// Page Up/Down step frames whatever has the focus; a number field keeps its arrows and Home/End.
 	if (key == WXK_PAGEDOWN) return setFrame(frame_ + 1);
@@ -417,6 +446,114 @@ void TunerFrame::onKey(wxKeyEvent& e)
 		return onParamsChanged();
 	}
 	e.Skip();
+}
+
+void TunerFrame::drawErrorPlot()
+{
+	const wxSize size = error_plot_->GetSize();
+	if (!score_)
+	{
+		error_plot_->SetBitmap(toBitmap(tuner::drawPlaceholder({size.GetWidth(), size.GetHeight()}, ""), size.GetWidth()));
+		return;
+	}
+	error_plot_->SetBitmap(
+		toBitmap(tuner::drawErrorPlot(*score_, frame_, {size.GetWidth(), size.GetHeight()}), size.GetWidth()));
+}
+
+void TunerFrame::change(const RangefinderParams& p)
+{
+	try
+	{
+		s_.changeParams(p);
+	}
+	catch (const std::exception& e)
+	{
+		return status(wxString::FromUTF8(std::string("refused: ") + omnirange::app::errorText(e)), Say::Error);
+	}
+	controlsFromParams(), rangefinder_changed_ = true, updateTitle(), refresh();
+}
+
+cv::Point2d TunerFrame::imagePixel(const wxPoint& at) const
+{
+	const double scale = static_cast<double>(s_.params().camera.image_width) / image_width_;
+	return {at.x * scale, at.y * scale};
+}
+
+TunerFrame::Handle TunerFrame::handleAt(const cv::Point2d& px) const
+{
+	if (!s_.hasColours()) return Handle::None;
+	const Rangefinder& rf = s_.rangefinder();
+	const CameraParams& cam = s_.params().camera;
+	const double grab = kGrab * static_cast<double>(cam.image_width) / image_width_;
+	const Pixel tip = rf.camera().pixelFromPolar(0.0, rf.scanner().maxRangeRho());
+	if (std::hypot(px.x - tip.u, px.y - tip.v) <= 2 * grab) return Handle::Forward;
+	const double d = std::hypot(px.x - cam.cx, px.y - cam.cy);
+	if (d <= grab) return Handle::Centre;
+	const std::pair<Handle, double> circles[] = {{Handle::Base, s_.params().scanner.base_radius},
+												 {Handle::MaxRange, rf.scanner().maxRangeRho()},
+												 {Handle::Horizon, rf.camera().horizonRho()}};
+	Handle nearest = Handle::None;
+	double best = grab;
+	for (const auto& [h, rho] : circles)
+		if (std::abs(d - rho) <= best) best = std::abs(d - rho), nearest = h;
+	return nearest;
+}
+
+RangefinderParams TunerFrame::movedTo(Handle h, const cv::Point2d& px) const
+{
+	RangefinderParams p = s_.params();
+	const double du = px.x - p.camera.cx, dv = px.y - p.camera.cy, rho = std::hypot(du, dv);
+	switch (h)
+	{
+		case Handle::Centre: p.camera.cx = std::round(px.x * 2) / 2, p.camera.cy = std::round(px.y * 2) / 2; break;
+		case Handle::Base: p.scanner.base_radius = std::round(rho); break;
+		case Handle::MaxRange:
+			p.scanner.max_range = std::round(s_.rangefinder().camera().distanceFromRho(rho) * 100) / 100;
+			break;
+		case Handle::Horizon:  // the horizon circle's radius is R for the paraboloid only
+			if (p.camera.mirror_model != MirrorModel::Paraboloid)
+				throw std::invalid_argument("the horizon circle is R's for the paraboloid only; set this mirror's model by its keys");
+			p.camera.R = std::round(rho * 2) / 2;
+			break;
+		case Handle::Forward:  // counter-clockwise from +u as the picture is viewed
+			p.camera.forward_azimuth = std::round(std::atan2(-dv, du) * 180 / M_PI) * M_PI / 180;
+			break;
+		case Handle::None: break;
+	}
+	return p;
+}
+
+void TunerFrame::onImageMouse(wxMouseEvent& e)
+{
+	const cv::Point2d px = imagePixel(e.GetPosition());
+	if (e.LeftDown())
+	{
+		if (e.ShiftDown()) return change(movedTo(Handle::Centre, px));
+		dragged_ = handleAt(px), drag_start_ = s_.params();
+		if (dragged_ != Handle::None) image_->CaptureMouse();
+		return;
+	}
+	if (dragged_ == Handle::None) return;
+	if (e.Dragging() || e.LeftUp())
+	{
+		try
+		{
+			s_.setParams(movedTo(dragged_, px));  // live, while the button is down
+		}
+		catch (const std::exception& ex)
+		{
+			status(wxString::FromUTF8(std::string("refused: ") + omnirange::app::errorText(ex)), Say::Error);
+		}
+		controlsFromParams(), rangefinder_changed_ = true, refresh();
+	}
+	if (e.LeftUp())
+	{
+		if (image_->HasCapture()) image_->ReleaseMouse();
+		dragged_ = Handle::None;
+		const RangefinderParams end = s_.params();
+		s_.setParams(drag_start_);
+		change(end);  // one undo step for the whole drag
+	}
 }
 
 bool TunerFrame::save()
@@ -456,6 +593,7 @@ void TunerFrame::scoreAll()
 	if (!s_.hasColours()) return status("no histogram yet: train one first", Say::Error);
 	wxProgressDialog progress("omnirange-tuner", "scanning every frame", s_.frames(), this, wxPD_APP_MODAL | wxPD_AUTO_HIDE);
 	const auto a = s_.scoreAll([&](int done, int) { progress.Update(done); });
+	score_ = a;
 	if (a.compared == 0)  // a mean over nothing would read as a perfect score
 		return status("whole rawlog: nothing to score against: no laser scan pairs with an image, or none with a hit",
 					  Say::Error);

@@ -12,6 +12,7 @@
 #include <wx/checkbox.h>
 #include <wx/choice.h>
 #include <wx/frame.h>
+#include <wx/generic/statbmpg.h>
 #include <wx/slider.h>
 #include <wx/spinctrl.h>
 #include <wx/statbmp.h>
@@ -19,6 +20,7 @@
 #include <wx/timer.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,7 +65,25 @@ class TunerFrame : public wxFrame
 	int frame_{0};
 	bool updating_{false};  // controls being set from the parameters
 
-	wxStaticBitmap *image_{}, *plot_{}, *birdseye_{}, *colours_{};
+	wxStaticBitmap *plot_{}, *birdseye_{}, *colours_{};
+	// Windows of their own (a native static bitmap gets no mouse): the image
+	// takes drags and clicks, the error plot clicks.
+	wxGenericStaticBitmap *image_{}, *error_plot_{};
+	std::optional<omnirange::tuner::LogScore> score_;  ///< the last "Score all frames", for the error plot
+
+	/** What a drag on the image moves: the centre, the set-up's circles, the forward arrow. */
+	enum class Handle { None, Centre, Base, MaxRange, Horizon, Forward };
+	Handle dragged_{Handle::None};
+	omnirange::RangefinderParams drag_start_;
+	/** The image pixel under the mouse at display position `at`. */
+	cv::Point2d imagePixel(const wxPoint& at) const;
+	Handle handleAt(const cv::Point2d& px) const;
+	void onImageMouse(wxMouseEvent& e);
+	/** The parameters with the dragged handle (or, with Shift, the centre) at `px`. */
+	omnirange::RangefinderParams movedTo(Handle h, const cv::Point2d& px) const;
+	void drawErrorPlot();
+	/** Takes `p` as a change that Ctrl+Z undoes; refused values are said. */
+	void change(const omnirange::RangefinderParams& p);
 	wxSlider* slider_{};
 	wxStaticText *frame_label_{}, *frame_score_{};
 	/** A control for one key of the rangefinder's options table, which gives

@@ -3,7 +3,8 @@
 #  - the window fits the screen, and GTK prints no warning at start;
 #  - the image with its legend, and the buttons under it, are in view;
 #  - Page Down steps frames even from a number field;
-#  - Save changes only the line of the key changed (and adds its comment).
+#  - Save changes only the line of the key changed (and adds its comment);
+#  - Shift+click places the centre, a drag moves it, Ctrl+Z undoes the drag.
 #   tuner_layout_test.sh SOURCE_DIR APPS_DIR WORK_DIR
 set -euo pipefail
 src=$1; apps=$2; work=$3
@@ -41,4 +42,17 @@ echo "saved lines added:"; printf '%s\n' "$added"
 check "Save wrote the threshold" grep -qx "threshold = 0.1" "$work/user.ini"
 # The user's ini had no [rangefinder] (its base has): the section comes with the key.
 check "Save changed no other line" [ "$removed" -eq 0 -a "$(printf '%s\n' "$added" | grep -vc '^;\|^threshold = 0.1$\|^\[rangefinder\]$\|^$')" -eq 0 ]
+# The centre: Shift+click places it, a drag from it moves it (40 px right, 30 px up on screen).
+xdotool mousemove --window "$win" 300 200 keydown shift click 1 keyup shift; sleep 0.8
+xdotool mousemove --window "$win" 300 200 mousedown 1; sleep 0.3
+xdotool mousemove --window "$win" 320 185; sleep 0.3
+xdotool mousemove --window "$win" 340 170 mouseup 1; sleep 0.8
+key ctrl+s
+cx=$(grep "^cx = " "$work/user.ini" | cut -d' ' -f3); cy=$(grep "^cy = " "$work/user.ini" | cut -d' ' -f3)
+echo "centre saved at ($cx, $cy); the ini's was (512, 384)"
+# Placed at display (296, 196) (the image sits 4 px in), 1.4 to 1.7 image px per display px at this size.
+check "Shift+click then a drag put the centre right of and above where the ini had it" \
+  awk -v x="$cx" -v y="$cy" 'BEGIN { exit !(x > 296 * 1.4 + 40 * 1.4 && x < 336 * 1.7 && y < 196 * 1.7 - 30 * 1.4 && y > 166 * 1.4) }'
+check "Ctrl+Z undoes the drag" bash -c "xdotool key --window $win ctrl+z; sleep 0.8; xdotool key --window $win ctrl+s; sleep 0.8; \
+  awk -v x=\$(grep '^cx = ' '$work/user.ini' | cut -d' ' -f3) -v c=$cx 'BEGIN { exit !(x < c - 20) }'"
 [ $fail -eq 0 ] && echo "1 passed, 0 failed" || { echo "0 passed, 1 failed"; cat "$work/tuner.log"; exit 1; }

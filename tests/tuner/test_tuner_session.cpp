@@ -72,9 +72,48 @@ TEST(TunerSession, FramesScansAndTheLaserAgreement)
 	const Agreement a = agreementOf(f.laser_pairs);
 	EXPECT_GT(a.compared, 40u);
 	EXPECT_LT(a.mean_abs, 0.1375);  // the paper's worst Table II figure
-	const Agreement all = s.scoreAll();
+	const LogScore all = s.scoreAll();
 	EXPECT_EQ(all.frames, 20);
 	EXPECT_LT(all.mean_abs, 0.1375);
+	// Each frame's own figure, against the laser and the simulator's truth; frame 5's is the one scanned above.
+	ASSERT_EQ(all.laser_by_frame.size(), 20u);
+	EXPECT_NEAR(all.laser_by_frame[5], a.mean_abs, 1e-12);
+	for (int k = 0; k < 20; ++k)
+		EXPECT_EQ(std::isfinite(all.truth_by_frame[static_cast<std::size_t>(k)]), s.frame(k).truth != nullptr) << k;
+	// The plot of them: a click at its left edge is frame 0, at its right edge the last.
+	const cv::Mat plot = drawErrorPlot(all, 5, cv::Size(400, 64));
+	EXPECT_GT(countColour(plot, colour::kLaser), 20);
+	EXPECT_EQ(countColour(plot, colour::kTruth) > 20, s.frame(0).truth != nullptr);
+	EXPECT_EQ(frameAtColumn(0, 400, 20), 0);
+	EXPECT_EQ(frameAtColumn(399, 400, 20), 19);
+	EXPECT_EQ(frameAtColumn(105, 400, 20), 5);
+}
+
+TEST(TunerSession, ChangesCanBeUndoneOneByOneAndResetToWhatTheIniHeld)
+{
+	const std::string dir = workDir("undo");
+	TunerSession s = trainedSession(dir);
+	const double loaded = s.params().threshold;
+	EXPECT_FALSE(s.undo());  // nothing changed yet
+	for (const double t : {0.1, 0.2, 0.3})
+	{
+		RangefinderParams p = s.params();
+		p.threshold = t;
+		s.changeParams(p);
+	}
+	s.changeParams(s.params());  // the same values: no step to undo
+	ASSERT_TRUE(s.undo());
+	EXPECT_DOUBLE_EQ(s.params().threshold, 0.2);
+	s.resetToLoaded();
+	EXPECT_DOUBLE_EQ(s.params().threshold, loaded);
+	EXPECT_FALSE(s.unsaved());
+	ASSERT_TRUE(s.undo());  // the reset itself is a step
+	EXPECT_DOUBLE_EQ(s.params().threshold, 0.2);
+	ASSERT_TRUE(s.undo());
+	EXPECT_DOUBLE_EQ(s.params().threshold, 0.1);
+	ASSERT_TRUE(s.undo());
+	EXPECT_DOUBLE_EQ(s.params().threshold, loaded);
+	EXPECT_FALSE(s.undo());
 }
 
 TEST(TunerSession, ParameterChangesRescanAndImpossibleOnesAreRefused)

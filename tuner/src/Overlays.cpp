@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace omnirange::tuner
@@ -159,6 +160,36 @@ cv::Mat drawScanPlot(const FrameScan& s, const RangefinderParams& p, int size)
 	for (const auto& q : s.laser_pairs)
 		if (q.status != PairStatus::LaserBeyondMaxRange) cv::circle(img, to(q.bearing, q.laser), 1, colour::kLaser, -1);
 	for (const Ray& r : s.scan.rays) cv::circle(img, to(r.bearing, r.range), 2, statusColour(r.status), -1);
+	return img;
+}
+
+int frameAtColumn(int x, int width, int frames)
+{
+	if (frames <= 1 || width <= 1) return 0;
+	return std::clamp(static_cast<int>(std::lround(static_cast<double>(x) * (frames - 1) / (width - 1))), 0, frames - 1);
+}
+
+cv::Mat drawErrorPlot(const LogScore& score, int current, cv::Size size)
+{
+	cv::Mat img(size, CV_8UC3, cv::Scalar(30, 30, 30));
+	const int n = static_cast<int>(score.laser_by_frame.size());
+	if (n == 0) return img;
+	std::vector<double> all;
+	for (const auto* v : {&score.laser_by_frame, &score.truth_by_frame})
+		for (const double e : *v)
+			if (std::isfinite(e)) all.push_back(e);
+	std::sort(all.begin(), all.end());
+	const double top = std::max(0.1, all.empty() ? 0.0 : all[std::min(all.size() - 1, all.size() * 95 / 100)]);
+	const auto x = [&](int k) { return n == 1 ? size.width / 2 : k * (size.width - 1) / (n - 1); };
+	const auto y = [&](double e) { return size.height - 1 - static_cast<int>(std::lround(std::min(e, top) / top * (size.height - 14))); };
+	cv::line(img, {x(current), 0}, {x(current), size.height - 1}, cv::Scalar(110, 110, 110), 1);
+	for (const auto& [v, c] : {std::pair{&score.truth_by_frame, colour::kTruth}, std::pair{&score.laser_by_frame, colour::kLaser}})
+		for (int k = 0; k < n; ++k)
+			if (std::isfinite((*v)[static_cast<std::size_t>(k)]))
+				cv::circle(img, {x(k), y((*v)[static_cast<std::size_t>(k)])}, 1, c, -1);
+	char label[32];
+	std::snprintf(label, sizeof label, "%.2f m", top);
+	cv::putText(img, label, {4, 11}, cv::FONT_HERSHEY_SIMPLEX, 0.35, cv::Scalar(200, 200, 200), 1, cv::LINE_AA);
 	return img;
 }
 

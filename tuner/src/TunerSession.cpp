@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -56,7 +57,7 @@ TunerSession::TunerSession(SessionOptions options) : o_(std::move(options))
 	loop.run();
 	if (frames_.empty())
 		throw std::runtime_error("no " + o_.omni_label + " image in '" + o_.rawlog + "' (" + loop.describeLabels() + ")");
-	saved_ = params_;
+	saved_ = loaded_ = params_;
 	checkImages();
 	if (!o_.histogram.empty())
 	{
@@ -97,12 +98,18 @@ void TunerSession::checkImages()
 	throw std::runtime_error(first_error + (frames() > 1 ? " (nor does any of the first frames decode)" : ""));
 }
 
-bool TunerSession::unsaved() const
+namespace
+{
+/** Whether every key reads the same in `a` and `b`, as the ini would hold them. */
+bool sameValues(const RangefinderParams& a, const RangefinderParams& b)
 {
 	for (const auto& f : RangefinderParams::table().fields())
-		if (f.print(params_) != f.print(saved_)) return true;
-	return false;
+		if (f.print(a) != f.print(b)) return false;
+	return true;
 }
+}  // namespace
+
+bool TunerSession::unsaved() const { return !sameValues(params_, saved_); }
 
 const Rangefinder& TunerSession::rangefinder() const
 {
@@ -120,6 +127,24 @@ void TunerSession::setParams(const RangefinderParams& params)
 	params_ = params;
 	rf_ = std::move(rf);
 }
+
+void TunerSession::changeParams(const RangefinderParams& params)
+{
+	if (sameValues(params, params_)) return;  // no step to undo
+	const RangefinderParams before = params_;
+	setParams(params);
+	undo_.push_back(before);
+}
+
+bool TunerSession::undo()
+{
+	if (undo_.empty()) return false;
+	setParams(undo_.back());
+	undo_.pop_back();
+	return true;
+}
+
+void TunerSession::resetToLoaded() { changeParams(loaded_); }
 
 const cv::Mat& TunerSession::image(int k)
 {
@@ -147,14 +172,17 @@ FrameScan TunerSession::scan(int k)
 	return out;
 }
 
-Agreement TunerSession::scoreAll(const std::function<void(int, int)>& progress)
+LogScore TunerSession::scoreAll(const std::function<void(int, int)>& progress)
 {
-	Agreement all;
+	LogScore all;
+	const double none = std::numeric_limits<double>::quiet_NaN();
+	all.laser_by_frame.assign(static_cast<std::size_t>(frames()), none);
+	all.truth_by_frame.assign(static_cast<std::size_t>(frames()), none);
 	double sum = 0;
 	for (int k = 0; k < frames(); ++k)
 	{
 		if (progress) progress(k, frames());
-		if (!frames_[k].laser) continue;
+		if (!frames_[k].laser && !frames_[k].truth) continue;
 		FrameScan one;
 		try
 		{
@@ -162,10 +190,14 @@ Agreement TunerSession::scoreAll(const std::function<void(int, int)>& progress)
 		}
 		catch (const std::runtime_error&)  // an unreadable image; the rest of the log still counts
 		{
-			++all.unreadable;
+			all.unreadable += frames_[k].laser != nullptr;
 			continue;
 		}
+		if (const Agreement t = agreementOf(one.truth_pairs); t.compared > 0)
+			all.truth_by_frame[static_cast<std::size_t>(k)] = t.mean_abs;
+		if (!frames_[k].laser) continue;
 		const Agreement a = agreementOf(one.laser_pairs);
+		if (a.compared > 0) all.laser_by_frame[static_cast<std::size_t>(k)] = a.mean_abs;
 		sum += a.mean_abs * static_cast<double>(a.compared);
 		all.compared += a.compared;
 		++all.frames;

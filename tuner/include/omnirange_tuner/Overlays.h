@@ -46,6 +46,15 @@ cv::Mat drawOmniOverlay(const FrameScan& scan, const Rangefinder& rangefinder, c
  * omnicam's hits by status, the laser's (cyan) and the truth (white). */
 cv::Mat drawScanPlot(const FrameScan& scan, const RangefinderParams& params, int size);
 
+/** Each frame's mean absolute difference over the whole rawlog (score from
+ * TunerSession::scoreAll()), `size` px: against the laser (cyan) and the
+ * truth (white), frame 0 at the left; a grey line at frame `current`. The
+ * vertical scale ends at the 95th percentile of the errors (at least 0.1 m),
+ * written in the corner; larger errors are drawn at the top. */
+cv::Mat drawErrorPlot(const LogScore& score, int current, cv::Size size);
+/** The frame a click at column `x` of drawErrorPlot()'s picture `width` px wide stands for. */
+int frameAtColumn(int x, int width, int frames);
+
 /** The colours the classifier calls free, most frequent floor colour first,
  * as swatches in a `size` image (one representative colour per bin). */
 cv::Mat drawFloorColours(const ColourModel& colours, const FreeSpaceClassifier& classifier, cv::Size size);

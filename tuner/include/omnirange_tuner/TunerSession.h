@@ -61,6 +61,14 @@ struct Agreement
 };
 Agreement agreementOf(const std::vector<RangePair>& pairs);
 
+/** The whole rawlog scored: the agreement over all frames with a laser, and
+ * each frame's own mean absolute difference against its laser and its truth
+ * (NaN where the frame has none, or its image could not be read). */
+struct LogScore : Agreement
+{
+	std::vector<double> laser_by_frame, truth_by_frame;
+};
+
 class TunerSession
 {
    public:
@@ -88,9 +96,17 @@ class TunerSession
 	const cv::Mat& image(int k);
 	/** Scans frame k (0-based) with the current parameters. */
 	FrameScan scan(int k);
-	/** Every frame scanned and compared with its laser; `progress(done, total)`.
-	 * A frame whose image cannot be read is counted and left out. */
-	Agreement scoreAll(const std::function<void(int, int)>& progress = {});
+	/** Every frame scanned and compared with its laser (and truth, where the
+	 * rawlog has it); `progress(done, total)`. A frame whose image cannot be
+	 * read is counted and left out. */
+	LogScore scoreAll(const std::function<void(int, int)>& progress = {});
+	/** Takes new parameters as setParams() does, remembering the ones in force
+	 * for undo() (nothing, when every key reads as before). */
+	void changeParams(const RangefinderParams& params);
+	/** Back to the parameters before the last changeParams(); false if none. */
+	bool undo();
+	/** Back to the parameters the ini held at the start (undoable). */
+	void resetToLoaded();
 	/** Trains the colour model on the open rawlog (its laser-labelled pairs)
 	 * with the current camera, saves it to `histogram` and uses it. */
 	RawlogTrainingResult train(const std::string& histogram, TrainingParams training = {},
@@ -106,6 +122,8 @@ class TunerSession
 	std::vector<Frame> frames_;
 	RangefinderParams params_;
 	RangefinderParams saved_;  ///< what the ini holds
+	RangefinderParams loaded_;  ///< what the ini held at the start
+	std::vector<RangefinderParams> undo_;  ///< the parameters before each change, latest last
 	ColourModel colours_;
 	std::unique_ptr<Rangefinder> rf_;
 	int cached_{-1};
