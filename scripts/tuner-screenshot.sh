@@ -17,6 +17,8 @@ sleep 2
   </dev/null >/dev/null 2>&1 & tuner=$!
 win=$(timeout 30 xdotool search --sync --onlyvisible --name "omnirange-tuner" | head -1)
 sleep 3
+xdotool mousemove 1279 719  # no tooltip in the picture
+sleep 1
 eval "$(xdotool getwindowgeometry --shell "$win")"
 xwd -root -silent | /usr/bin/convert xwd:- -crop "${WIDTH}x${HEIGHT}+${X}+${Y}" +repage "$out"
 echo "screenshot: $out (${WIDTH}x${HEIGHT})"

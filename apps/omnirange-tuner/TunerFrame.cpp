@@ -451,13 +451,9 @@ void TunerFrame::onKey(wxKeyEvent& e)
 void TunerFrame::drawErrorPlot()
 {
 	const wxSize size = error_plot_->GetSize();
-	if (!score_)
-	{
-		error_plot_->SetBitmap(toBitmap(tuner::drawPlaceholder({size.GetWidth(), size.GetHeight()}, ""), size.GetWidth()));
-		return;
-	}
-	error_plot_->SetBitmap(
-		toBitmap(tuner::drawErrorPlot(*score_, frame_, {size.GetWidth(), size.GetHeight()}), size.GetWidth()));
+	error_plot_->SetBitmap(toBitmap(
+		tuner::drawErrorPlot(score_.value_or(tuner::LogScore{}), frame_, {size.GetWidth(), size.GetHeight()}),
+		size.GetWidth()));
 }
 
 void TunerFrame::change(const RangefinderParams& p)

@@ -173,7 +173,12 @@ cv::Mat drawErrorPlot(const LogScore& score, int current, cv::Size size)
 {
 	cv::Mat img(size, CV_8UC3, cv::Scalar(30, 30, 30));
 	const int n = static_cast<int>(score.laser_by_frame.size());
-	if (n == 0) return img;
+	if (n == 0)
+	{
+		cv::putText(img, "Score all frames to see each frame's error here", {8, size.height / 2 + 4},
+					cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(200, 200, 200), 1, cv::LINE_AA);
+		return img;
+	}
 	std::vector<double> all;
 	for (const auto* v : {&score.laser_by_frame, &score.truth_by_frame})
 		for (const double e : *v)

@@ -50,7 +50,8 @@ cv::Mat drawScanPlot(const FrameScan& scan, const RangefinderParams& params, int
  * TunerSession::scoreAll()), `size` px: against the laser (cyan) and the
  * truth (white), frame 0 at the left; a grey line at frame `current`. The
  * vertical scale ends at the 95th percentile of the errors (at least 0.1 m),
- * written in the corner; larger errors are drawn at the top. */
+ * written in the corner; larger errors are drawn at the top. Not scored yet
+ * (no frames in `score`): a line saying how to score. */
 cv::Mat drawErrorPlot(const LogScore& score, int current, cv::Size size);
 /** The frame a click at column `x` of drawErrorPlot()'s picture `width` px wide stands for. */
 int frameAtColumn(int x, int width, int frames);
