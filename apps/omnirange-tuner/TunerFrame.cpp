@@ -116,7 +116,8 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	const wxSize window(std::min(screen.width, 1600), std::min(screen.height, 1000));
 	image_width_ = imageWidthFor(window);
 	image_ = new wxGenericStaticBitmap(panel, wxID_ANY, wxBitmap(image_width_, image_width_ * 3 / 4));
-	image_->SetToolTip("drag the centre, the base, max-range or horizon (R) circle, or the forward arrow; Shift+click places the centre");
+	image_->SetToolTip("drag the centre, the base, max-range or horizon (R) circle, or the forward arrow; Shift+click "
+					   "places the centre; the wheel zooms, a right-button drag pans");
 	left->Add(image_, 0, wxALL, 4);
 	auto* nav = new wxBoxSizer(wxHORIZONTAL);
 	auto* prev = new wxButton(panel, wxID_ANY, "<", wxDefaultPosition, wxSize(36, -1));
@@ -168,7 +169,9 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	auto* frame_sizer = new wxBoxSizer(wxVERTICAL);
 	frame_sizer->Add(panel, 1, wxEXPAND);
 	SetSizer(frame_sizer);
-	CreateStatusBar();
+	CreateStatusBar(2);
+	const int widths[] = {-1, -3};
+	GetStatusBar()->SetStatusWidths(2, widths);
 	SetSize(window);
 	SetMinSize(wxSize(std::min(window.GetWidth(), 900), std::min(window.GetHeight(), 560)));
 	Bind(wxEVT_SIZE, [this](wxSizeEvent& e) {
@@ -187,7 +190,9 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	bindGuarded(slider_, wxEVT_SLIDER, [this](wxCommandEvent&) { setFrame(slider_->GetValue()); });
 	bindGuarded(this, wxEVT_CHAR_HOOK, [this](wxKeyEvent& e) { onKey(e); });
 	for (const auto type : {wxEVT_LEFT_DOWN, wxEVT_MOTION, wxEVT_LEFT_UP})
-		bindGuarded(image_, type, [this](wxMouseEvent& e) { onImageMouse(e); });
+		bindGuarded(image_, type, [this](wxMouseEvent& e) { onImageMouse(e), e.Skip(); });
+	for (const auto type : {wxEVT_MOUSEWHEEL, wxEVT_RIGHT_DOWN, wxEVT_MOTION})
+		bindGuarded(image_, type, [this](wxMouseEvent& e) { onZoomOrPan(e), e.Skip(); });
 	bindGuarded(error_plot_, wxEVT_LEFT_DOWN, [this](wxMouseEvent& e) {
 		if (score_) setFrame(tuner::frameAtColumn(e.GetX(), error_plot_->GetSize().GetWidth(), s_.frames()));
 	});
@@ -378,7 +383,7 @@ void TunerFrame::refresh()
 	{
 		if (!s_.hasColours())
 		{
-			image_->SetBitmap(toBitmap(s_.image(frame_), image_width_));
+			image_->SetBitmap(toBitmap(inView(s_.image(frame_)), image_width_));
 			return status("no histogram: train one on this rawlog (Ctrl+H) or start with -H FILE", Say::Routine);
 		}
 		scan = s_.scan(frame_);
@@ -388,7 +393,7 @@ void TunerFrame::refresh()
 		return showUnreadable(omnirange::app::errorText(e));
 	}
 	const Rangefinder& rf = s_.rangefinder();
-	image_->SetBitmap(toBitmap(tuner::drawOmniOverlay(scan, rf, overlay_), image_width_));
+	image_->SetBitmap(toBitmap(inView(tuner::drawOmniOverlay(scan, rf, overlay_)), image_width_));
 	plot_->SetBitmap(toBitmap(tuner::drawScanPlot(scan, s_.params(), kPlotSize), kPlotSize));
 	if (rangefinder_changed_)
 	{
@@ -469,10 +474,49 @@ void TunerFrame::change(const RangefinderParams& p)
 	controlsFromParams(), rangefinder_changed_ = true, updateTitle(), refresh();
 }
 
+double TunerFrame::imageScale() const
+{
+	return static_cast<double>(s_.params().camera.image_width) / image_width_ / zoom_;
+}
+
 cv::Point2d TunerFrame::imagePixel(const wxPoint& at) const
 {
-	const double scale = static_cast<double>(s_.params().camera.image_width) / image_width_;
-	return {at.x * scale, at.y * scale};
+	return view_origin_ + cv::Point2d(at.x, at.y) * imageScale();
+}
+
+cv::Mat TunerFrame::inView(const cv::Mat& image) const
+{
+	if (zoom_ <= 1) return image;
+	const cv::Rect view(static_cast<int>(std::lround(view_origin_.x)), static_cast<int>(std::lround(view_origin_.y)),
+						static_cast<int>(std::lround(image.cols / zoom_)), static_cast<int>(std::lround(image.rows / zoom_)));
+	cv::Mat out;
+	cv::resize(image(view & cv::Rect(0, 0, image.cols, image.rows)), out, image.size(), 0, 0, cv::INTER_NEAREST);
+	return out;
+}
+
+void TunerFrame::onZoomOrPan(wxMouseEvent& e)
+{
+	const cv::Size size(s_.params().camera.image_width, s_.params().camera.image_height);
+	const auto keepInside = [&] {
+		view_origin_.x = std::clamp(view_origin_.x, 0.0, size.width * (1 - 1 / zoom_));
+		view_origin_.y = std::clamp(view_origin_.y, 0.0, size.height * (1 - 1 / zoom_));
+	};
+	if (e.GetEventType() == wxEVT_MOUSEWHEEL)
+	{
+		const cv::Point2d under = imagePixel(e.GetPosition());
+		zoom_ = std::clamp(zoom_ * (e.GetWheelRotation() > 0 ? 1.25 : 0.8), 1.0, 8.0);
+		view_origin_ = under - cv::Point2d(e.GetX(), e.GetY()) * imageScale();  // the same pixel stays under the mouse
+		keepInside();
+		return refresh();
+	}
+	if (e.RightDown()) pan_from_ = e.GetPosition();
+	if (e.Dragging() && e.RightIsDown())
+	{
+		view_origin_ -= cv::Point2d(e.GetX() - pan_from_.x, e.GetY() - pan_from_.y) * imageScale();
+		pan_from_ = e.GetPosition();
+		keepInside();
+		refresh();
+	}
 }
 
 TunerFrame::Handle TunerFrame::handleAt(const cv::Point2d& px) const
@@ -480,7 +524,7 @@ TunerFrame::Handle TunerFrame::handleAt(const cv::Point2d& px) const
 	if (!s_.hasColours()) return Handle::None;
 	const Rangefinder& rf = s_.rangefinder();
 	const CameraParams& cam = s_.params().camera;
-	const double grab = kGrab * static_cast<double>(cam.image_width) / image_width_;
+	const double grab = kGrab * imageScale();
 	const Pixel tip = rf.camera().pixelFromPolar(0.0, rf.scanner().maxRangeRho());
 	if (std::hypot(px.x - tip.u, px.y - tip.v) <= 2 * grab) return Handle::Forward;
 	const double d = std::hypot(px.x - cam.cx, px.y - cam.cy);
@@ -596,6 +640,11 @@ void TunerFrame::scoreAll()
 	wxString text = wxString::Format("whole rawlog: mean abs %.4f m over %zu rays of %d frames with a laser",
 									 a.mean_abs, a.compared, a.frames);
 	if (a.unreadable > 0) text += wxString::Format(" (%d frames could not be read and are left out)", a.unreadable);
+	if (s_.params().asIni() != s_.loaded().asIni())  // A/B: the same log with the values the ini held
+	{
+		const auto b = s_.scoreWith(s_.loaded(), [&](int done, int) { progress.Update(done); });
+		text += wxString::Format("; with the values loaded: %.4f m over %zu rays", b.mean_abs, b.compared);
+	}
 	status(text);
 	refresh();
 }
@@ -639,6 +688,7 @@ void TunerFrame::train()
 void TunerFrame::status(const wxString& text, Say how)
 {
 	const wxString line = how == Say::Error ? "error: " + text : text;
-	GetStatusBar()->SetStatusText(line);
+	// Two fields: the frame's timings, and the last result or error, which stays until the next one.
+	GetStatusBar()->SetStatusText(line, how == Say::Routine ? 0 : 1);
 	if (how != Say::Routine) std::cout << "omnirange-tuner: " << line.ToStdString() << std::endl;
 }

@@ -75,8 +75,18 @@ class TunerFrame : public wxFrame
 	enum class Handle { None, Centre, Base, MaxRange, Horizon, Forward };
 	Handle dragged_{Handle::None};
 	omnirange::RangefinderParams drag_start_;
+	/** Zoom (1: the whole image) and the image pixel at the view's top left. */
+	double zoom_{1};
+	cv::Point2d view_origin_{0, 0};
+	wxPoint pan_from_;  ///< where a right-button drag that pans started
+	/** The part of the image in view, scaled to the shown width. */
+	cv::Mat inView(const cv::Mat& image) const;
+	/** [image px per display px] at the current zoom. */
+	double imageScale() const;
 	/** The image pixel under the mouse at display position `at`. */
 	cv::Point2d imagePixel(const wxPoint& at) const;
+	/** The wheel zooms about the pixel under the mouse; a right-button drag pans. */
+	void onZoomOrPan(wxMouseEvent& e);
 	Handle handleAt(const cv::Point2d& px) const;
 	void onImageMouse(wxMouseEvent& e);
 	/** The parameters with the dragged handle (or, with Shift, the centre) at `px`. */

@@ -4,7 +4,8 @@
 #  - the image with its legend, and the buttons under it, are in view;
 #  - Page Down steps frames even from a number field;
 #  - Save changes only the line of the key changed (and adds its comment);
-#  - Shift+click places the centre, a drag moves it, Ctrl+Z undoes the drag.
+#  - Shift+click places the centre, a drag moves it, Ctrl+Z undoes the drag;
+#  - the wheel zooms in and out.
 #   tuner_layout_test.sh SOURCE_DIR APPS_DIR WORK_DIR
 set -euo pipefail
 src=$1; apps=$2; work=$3
@@ -55,4 +56,14 @@ check "Shift+click then a drag put the centre right of and above where the ini h
   awk -v x="$cx" -v y="$cy" 'BEGIN { exit !(x > 296 * 1.4 + 40 * 1.4 && x < 336 * 1.7 && y < 196 * 1.7 - 30 * 1.4 && y > 166 * 1.4) }'
 check "Ctrl+Z undoes the drag" bash -c "xdotool key --window $win ctrl+z; sleep 0.8; xdotool key --window $win ctrl+s; sleep 0.8; \
   awk -v x=\$(grep '^cx = ' '$work/user.ini' | cut -d' ' -f3) -v c=$cx 'BEGIN { exit !(x < c - 20) }'"
+# The wheel zooms about the pixel under the mouse: the legend in the corner leaves the view, and comes back.
+xdotool mousemove --window "$win" 330 250 click 4 click 4 click 4 click 4; sleep 1
+xwd -root -silent | /usr/bin/convert xwd:- "$work/zoomed.png"
+zoomed=$(count_colour "$work/zoomed.png" "rgb(20,20,20)")
+xdotool mousemove --window "$win" 330 250 click 5 click 5 click 5 click 5 click 5; sleep 1
+xwd -root -silent | /usr/bin/convert xwd:- "$work/unzoomed.png"
+unzoomed=$(count_colour "$work/unzoomed.png" "rgb(20,20,20)")
+echo "legend-background pixels: $zoomed zoomed in, $unzoomed zoomed out"
+check "zooming in at the centre takes the corner's legend out of view" [ "$zoomed" -lt 500 ]
+check "zooming out brings it back" [ "$unzoomed" -gt 3000 ]
 [ $fail -eq 0 ] && echo "1 passed, 0 failed" || { echo "0 passed, 1 failed"; cat "$work/tuner.log"; exit 1; }

@@ -114,6 +114,15 @@ TEST(TunerSession, ChangesCanBeUndoneOneByOneAndResetToWhatTheIniHeld)
 	ASSERT_TRUE(s.undo());
 	EXPECT_DOUBLE_EQ(s.params().threshold, loaded);
 	EXPECT_FALSE(s.undo());
+	// A/B: the log scored with the loaded values while others are in force, which stay.
+	const LogScore loaded_score = s.scoreAll();
+	RangefinderParams p = s.params();
+	p.threshold = 0.3;
+	s.changeParams(p);
+	const LogScore changed = s.scoreAll(), ab = s.scoreWith(s.loaded());
+	EXPECT_DOUBLE_EQ(ab.mean_abs, loaded_score.mean_abs);
+	EXPECT_NE(changed.mean_abs, loaded_score.mean_abs);
+	EXPECT_DOUBLE_EQ(s.params().threshold, 0.3);
 }
 
 TEST(TunerSession, ParameterChangesRescanAndImpossibleOnesAreRefused)

@@ -128,6 +128,23 @@ void TunerSession::setParams(const RangefinderParams& params)
 	rf_ = std::move(rf);
 }
 
+LogScore TunerSession::scoreWith(const RangefinderParams& with, const std::function<void(int, int)>& progress)
+{
+	const RangefinderParams in_force = params_;
+	setParams(with);
+	try
+	{
+		LogScore score = scoreAll(progress);
+		setParams(in_force);
+		return score;
+	}
+	catch (...)
+	{
+		setParams(in_force);
+		throw;
+	}
+}
+
 void TunerSession::changeParams(const RangefinderParams& params)
 {
 	if (sameValues(params, params_)) return;  // no step to undo

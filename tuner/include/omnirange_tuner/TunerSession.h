@@ -83,6 +83,8 @@ class TunerSession
 	const SessionOptions& options() const { return o_; }
 
 	const RangefinderParams& params() const { return params_; }
+	/** The parameters the ini held at the start. */
+	const RangefinderParams& loaded() const { return loaded_; }
 	/** Validates and takes new parameters; throws std::invalid_argument
 	 * (the old ones stay) if they are impossible. */
 	void setParams(const RangefinderParams& params);
@@ -100,6 +102,9 @@ class TunerSession
 	 * rawlog has it); `progress(done, total)`. A frame whose image cannot be
 	 * read is counted and left out. */
 	LogScore scoreAll(const std::function<void(int, int)>& progress = {});
+	/** scoreAll() with the parameters `with` (an A/B against those in force,
+	 * which are back in force after it). */
+	LogScore scoreWith(const RangefinderParams& with, const std::function<void(int, int)>& progress = {});
 	/** Takes new parameters as setParams() does, remembering the ones in force
 	 * for undo() (nothing, when every key reads as before). */
 	void changeParams(const RangefinderParams& params);
