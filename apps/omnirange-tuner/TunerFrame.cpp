@@ -33,7 +33,7 @@ using namespace omnirange;
 namespace
 {
 constexpr int kPlotSize = 300, kSmall = 146;
-constexpr int kControlsWidth = 560;  // the right-hand column, scrolled when the window is short
+constexpr int kControlsWidth = 390;  // the right-hand column, scrolled when the window is short
 constexpr int kMinImageWidth = 320, kMaxImageWidth = 1024;
 constexpr int kErrorPlotHeight = 64;
 constexpr int kGrab = 8;  // [display px] how near a circle or the arrow's tip a press takes it
@@ -82,7 +82,8 @@ int TunerFrame::imageWidthFor(const wxSize& client)
 {
 	// 4:3 image; below it the frame's buttons, the overlays' switches, the actions
 	// and the keys (about 170 px), and the status bar.
-	const int by_height = (client.GetHeight() - 200) * 4 / 3, by_width = client.GetWidth() - kControlsWidth - 16;
+	const int by_height = (client.GetHeight() - 200) * 4 / 3,
+			  by_width = client.GetWidth() - kPlotSize - kControlsWidth - 24;
 	return std::clamp(std::min(by_height, by_width), kMinImageWidth, kMaxImageWidth);
 }
 
@@ -134,31 +135,32 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	buildShowsAndActions(panel, left);  // under the image: always in view, however short the window
 	main->Add(left, 0);
 
-	auto* column = new wxScrolledWindow(panel, wxID_ANY, wxDefaultPosition, wxSize(kControlsWidth, -1), wxVSCROLL);
-	column->SetScrollRate(0, 12);
-	auto* right = new wxBoxSizer(wxVERTICAL);
-	error_plot_ = new wxGenericStaticBitmap(column, wxID_ANY, wxBitmap(kControlsWidth - 40, kErrorPlotHeight));
+	// The middle column: the error plot, the scan from above, the bird's-eye view and the colours.
+	auto* middle = new wxBoxSizer(wxVERTICAL);
+	error_plot_ = new wxGenericStaticBitmap(panel, wxID_ANY, wxBitmap(kPlotSize, kErrorPlotHeight));
 	error_plot_->SetToolTip("each frame's mean error over the whole log: laser cyan, truth white; click to go to that frame");
-	right->Add(new wxStaticText(column, wxID_ANY, "error per frame (Score all frames; click to go there)"), 0, wxALL, 2);
-	right->Add(error_plot_, 0, wxALL, 2);
-	plot_ = new wxStaticBitmap(column, wxID_ANY, wxBitmap(kPlotSize, kPlotSize));
-	auto* plot_key = new wxStaticText(column, wxID_ANY,
-									  "scan from above (1 m circles, the max range grey): omnicam hit green, no hit "
-									  "yellow, too close red, outlier magenta; laser cyan; truth white");
-	plot_key->Wrap(kControlsWidth - 30);
-	right->Add(plot_key, 0, wxALL, 2);
-	// The plot, and beside it the bird's-eye view over the colours called floor.
-	auto* views = new wxBoxSizer(wxHORIZONTAL), *smalls = new wxBoxSizer(wxVERTICAL);
-	birdseye_ = new wxStaticBitmap(column, wxID_ANY, wxBitmap(kSmall, kSmall));
-	colours_ = new wxStaticBitmap(column, wxID_ANY, wxBitmap(kSmall, kSmall));
+	middle->Add(new wxStaticText(panel, wxID_ANY, "error per frame (click to go there)"), 0, wxALL, 2);
+	middle->Add(error_plot_, 0, wxALL, 2);
+	plot_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kPlotSize, kPlotSize));
+	plot_->SetToolTip("the scan from above, forward up, 1 m circles, the max range grey: omnicam hit green, no hit "
+					  "yellow, too close red, outlier magenta; laser cyan; truth white");
+	middle->Add(new wxStaticText(panel, wxID_ANY, "scan from above (laser cyan, truth white)"), 0, wxALL, 2);
+	middle->Add(plot_, 0, wxALL, 2);
+	auto* smalls = new wxBoxSizer(wxHORIZONTAL);
+	birdseye_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kSmall, kSmall));
+	colours_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kSmall, kSmall));
 	birdseye_->SetToolTip("bird's-eye view of the floor (the paper's eqs. 1-3)");
 	colours_->SetToolTip("the colours the classifier calls floor, most frequent first");
 	smalls->Add(birdseye_, 0, wxALL, 2);
 	smalls->Add(colours_, 0, wxALL, 2);
-	views->Add(plot_, 0, wxALL, 2);
-	views->Add(smalls, 0);
-	right->Add(views, 0);
-	right->Add(new wxStaticText(column, wxID_ANY, "right: bird's-eye view; colours called floor"), 0, wxALL, 2);
+	middle->Add(new wxStaticText(panel, wxID_ANY, "bird's-eye view | colours called floor"), 0, wxALL, 2);
+	middle->Add(smalls, 0);
+	main->Add(middle, 0);
+
+	// The right column: the frame's figures and a control per key, scrolled if the window is short.
+	auto* column = new wxScrolledWindow(panel, wxID_ANY, wxDefaultPosition, wxSize(kControlsWidth, -1), wxVSCROLL);
+	column->SetScrollRate(0, 12);
+	auto* right = new wxBoxSizer(wxVERTICAL);
 	frame_score_ = new wxStaticText(column, wxID_ANY, "");
 	right->Add(frame_score_, 0, wxALL, 4);
 	buildControls(column, right);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # omnirange-tuner on a 1280x720 screen, a small laptop's, under Xvfb:
 #  - the window fits the screen, and GTK prints no warning at start;
-#  - the image with its legend, and the buttons under it, are in view;
+#  - the image with its legend, the buttons under it and every control are in view;
 #  - Page Down steps frames even from a number field;
 #  - Save changes only the line of the key changed (and adds its comment);
 #  - Shift+click places the centre, a drag moves it, Ctrl+Z undoes the drag;
@@ -29,6 +29,12 @@ green=$(count_colour "$work/shot.png" "rgb(0,255,0)"); legend=$(count_colour "$w
 echo "screenshot: $green hit-green pixels, $legend legend-background pixels"
 check "the image's rays are in view" [ "$green" -gt 200 ]
 check "the legend is in view" [ "$legend" -gt 3000 ]
+# Every control in view without scrolling: the last three keys are switches, all on in this ini,
+# and a checked box is GTK's blue (#3584E4); all three show in the screen's lower right.
+ticks=$(/usr/bin/convert "$work/shot.png" -crop 420x240+860+480 +repage -fill black +opaque "rgb(53,132,228)" \
+  -fill white -opaque "rgb(53,132,228)" -format "%[fx:round(mean*w*h)]" info:)
+echo "checked-box pixels in the controls' last rows: $ticks"
+check "every control is in view, the last ones too" [ "$ticks" -gt 180 ]
 
 key() { xdotool key --window "$win" "$@"; sleep 0.7; }
 key ctrl+t  # the threshold's field has the focus
@@ -51,9 +57,9 @@ xdotool mousemove --window "$win" 340 170 mouseup 1; sleep 0.8
 key ctrl+s
 cx=$(grep "^cx = " "$work/user.ini" | cut -d' ' -f3); cy=$(grep "^cy = " "$work/user.ini" | cut -d' ' -f3)
 echo "centre saved at ($cx, $cy); the ini's was (512, 384)"
-# Placed at display (296, 196) (the image sits 4 px in), 1.4 to 1.7 image px per display px at this size.
+# Placed at display (296, 196) (the image sits 4 px in), 1.4 to 2 image px per display px at this size.
 check "Shift+click then a drag put the centre right of and above where the ini had it" \
-  awk -v x="$cx" -v y="$cy" 'BEGIN { exit !(x > 296 * 1.4 + 40 * 1.4 && x < 336 * 1.7 && y < 196 * 1.7 - 30 * 1.4 && y > 166 * 1.4) }'
+  awk -v x="$cx" -v y="$cy" 'BEGIN { exit !(x > 296 * 1.4 + 40 * 1.4 && x < 336 * 2 && y < 196 * 2 - 30 * 1.4 && y > 166 * 1.4) }'
 check "Ctrl+Z undoes the drag" bash -c "xdotool key --window $win ctrl+z; sleep 0.8; xdotool key --window $win ctrl+s; sleep 0.8; \
   awk -v x=\$(grep '^cx = ' '$work/user.ini' | cut -d' ' -f3) -v c=$cx 'BEGIN { exit !(x < c - 20) }'"
 # The wheel zooms about the pixel under the mouse: the legend in the corner leaves the view, and comes back.

@@ -175,7 +175,7 @@ cv::Mat drawErrorPlot(const LogScore& score, int current, cv::Size size)
 	const int n = static_cast<int>(score.laser_by_frame.size());
 	if (n == 0)
 	{
-		cv::putText(img, "Score all frames to see each frame's error here", {8, size.height / 2 + 4},
+		cv::putText(img, "not scored yet: Score all frames", {8, size.height / 2 + 4},
 					cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(200, 200, 200), 1, cv::LINE_AA);
 		return img;
 	}
