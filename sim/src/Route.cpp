@@ -75,7 +75,7 @@ void checkRouteClear(const Route& route, const World& world, double clearance, d
 			{
 				std::ostringstream m;
 				m << route.file << ":" << route.lines[i + 1] << ": the leg to this waypoint passes "
-				  << (d == 0 ? "through" : "within " + std::to_string(d) + " m of")
+				  << (d == 0 ? "through" : "within " + formatDouble(std::round(d * 1000) / 1000) + " m of")
 				  << " the solid of " << world.file << ":" << s.line << " (clearance needed "
 				  << clearance << " m)";
 				throw std::runtime_error(m.str());
