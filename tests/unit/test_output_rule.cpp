@@ -375,4 +375,10 @@ TEST(OutputRule, AFileAUserAddedToAnOutputFolderIsNotReplacedWithIt)
 	EXPECT_NE(refusal(d + "/report", OutputKind::Folder).find("maps/notes.txt' is not something omnirange-test wrote"),
 			  std::string::npos);
 	EXPECT_EQ(refusal(d + "/report", OutputKind::Folder, {}, true), "");  // --force
+	// A link a user added is named as it is in the folder, not as where it points.
+	fs::remove(d + "/report/maps/notes.txt");
+	fs::create_directory(d + "/elsewhere");
+	fs::create_directory_symlink("../elsewhere", d + "/report/mine");
+	EXPECT_NE(refusal(d + "/report", OutputKind::Folder).find("report/mine' is not something"), std::string::npos)
+		<< refusal(d + "/report", OutputKind::Folder);
 }

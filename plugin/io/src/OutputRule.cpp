@@ -337,7 +337,8 @@ std::vector<std::string> filesIn(const std::string& dir)
 	for (auto it = fs::recursive_directory_iterator(dir, walking); !walking && it != fs::recursive_directory_iterator();
 		 it.increment(walking))
 		if (it->is_symlink(ec) || !it->is_directory(ec))
-			if (std::string rel = fs::relative(it->path(), dir, ec).string(); rel != kOutputMarker) files.push_back(rel);
+			// Lexically: fs::relative would follow a link to where it points ("../userdata").
+			if (std::string rel = it->path().lexically_relative(dir).string(); rel != kOutputMarker) files.push_back(rel);
 	return files;
 }
 }  // namespace
