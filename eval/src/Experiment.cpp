@@ -49,6 +49,23 @@ Experiment::Experiment(ExperimentConfig config)
 	auto& omni = r_.sensors[1];
 	omni.label = c_.rangefinder.sensor_label, omni.tag = "omniscan", omni.map_ini = c_.map_omni_ini;
 	omni.icp_ini = c_.icp_omni_ini, omni.invalid_is_free = false, omni.rbpf_ini = c_.rbpf_omni_ini;
+	// MRPT's programs empty their logOutput_dir first: each run's must be its own folder of the
+	// report, the one its map is read from; another name could be the dataset or the other sensor's.
+	for (const auto& sensor : r_.sensors)
+		for (const auto& [engine, ini] : {std::pair{"icp-slam", sensor.icp_ini}, std::pair{"rbpf-slam", sensor.rbpf_ini}})
+			if (!ini.empty())
+				if (const std::string dir = slam::mrptLogFolder(ini), own = slamFolder(engine, sensor.tag); dir != own)
+					throw std::runtime_error(ini + ": [MappingApplication] logOutput_dir = '" + dir + "': the experiment reads " +
+											 engine + "'s map for the " + sensor.tag + " from '" + own +
+											 "' in its report, and the program empties the folder it names first: set "
+											 "logOutput_dir = " + own);
+}
+
+std::string Experiment::slamFolder(const std::string& engine, const std::string& tag)
+{
+	std::string dir = engine + "_" + tag;  // "icp_slam_omniscan", the shipped inis' logOutput_dir
+	std::replace(dir.begin(), dir.end(), '-', '_');
+	return dir;
 }
 
 void Experiment::stage(const std::string& name, const std::function<void()>& body)
@@ -271,7 +288,7 @@ void Experiment::runIcpSlam()
 					"-w"},
 				   out_, "rawlog-edit_" + s.tag + ".log");
 		runProgram({"icp-slam", s.icp_ini, only}, out_, "icp-slam_" + s.tag + ".log");
-		scoreSlam("icp-slam", slam::mrptLogFolder(s.icp_ini), s, s.icp, s.icp_path, s.icp_check_marked, figures);
+		scoreSlam("icp-slam", slamFolder("icp-slam", s.tag), s, s.icp, s.icp_path, s.icp_check_marked, figures);
 	}
 	writeImageAtomically(out_ + "/maps_icp.png", sideBySide(figures));
 }
@@ -299,7 +316,7 @@ void Experiment::runGuardedIcp()
 											 << " refused, " << g.weak_directions << " weak directions left to the odometry, "
 											 << g.loops << " loops closed");
 		s.guarded_loops = g.loops;
-		const std::string dir = "guarded_icp_" + s.tag;
+		const std::string dir = slamFolder("guarded-icp", s.tag);
 		fs::create_directories(out_ + "/" + dir);
 		saveSimplemap(g.keyframes, out_ + "/" + dir + "/_finalmap_.simplemap");
 		double unused = 0;
@@ -320,7 +337,7 @@ void Experiment::runRbpfSlam()
 		writeSensoryFrameFormat(out_ + "/only_" + s.tag + ".rawlog", out_ + "/" + frames);
 		runProgram({"rbpf-slam", s.rbpf_ini, frames}, out_, "rbpf-slam_" + s.tag + ".log");
 		double unused = 0;
-		scoreSlam("rbpf-slam", slam::mrptLogFolder(s.rbpf_ini), s, s.rbpf, s.rbpf_path, unused, figures);
+		scoreSlam("rbpf-slam", slamFolder("rbpf-slam", s.tag), s, s.rbpf, s.rbpf_path, unused, figures);
 	}
 	if (figures.size() > 1) writeImageAtomically(out_ + "/maps_rbpf.png", sideBySide(figures));
 }

@@ -1,5 +1,6 @@
 #include "omnirange_eval/ExperimentConfig.h"
 #include <omnirange_slam/IcpSlamIni.h>
+#include <omnirange_slam/MrptMapSections.h>
 
 #include <omnirange_sim/Route.h>
 #include <omnirange_sim/RobotParams.h>
@@ -120,9 +121,11 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 		const auto& cfg = *layers.merged;
 		table().load(c, cfg, "experiment");
 		resolvePaths(c, layers);
+		// Every ini handed to an MRPT program read as strictly as MRPT's own keys allow, before any work.
 		slam::requireStrictIcpSection(c.icp_laser_ini), slam::requireStrictIcpSection(c.icp_omni_ini);
+		slam::requireStrictObservationsToMapIni(c.map_laser_ini), slam::requireStrictObservationsToMapIni(c.map_omni_ini);
 		for (const auto* rbpf : {&c.rbpf_laser_ini, &c.rbpf_omni_ini})
-			if (!rbpf->empty()) slam::mrptLogFolder(*rbpf);
+			if (!rbpf->empty()) slam::requireStrictRbpfIni(*rbpf);
 		validate(c);
 		c.rangefinder.loadFromConfig(cfg, "rangefinder");
 		checkSimulatorInputs(c);

@@ -2,11 +2,13 @@
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
+#include <mrpt/slam/CMetricMapBuilderRBPF.h>
 
 #include <omnirange/config/OptionsTable.h>
 
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <stdexcept>
 
@@ -23,6 +25,8 @@ class RecordingConfig : public mrpt::config::CConfigFileBase
 	explicit RecordingConfig(const mrpt::config::CConfigFile& file) : file_(file) {}
 	/** lower-case section -> lower-case key -> MRPT's default */
 	std::map<std::string, std::map<std::string, std::string>> read;
+	/** (section, key) MRPT requires: it ends with an error of its own without them. */
+	std::vector<std::pair<std::string, std::string>> required;
 
 	void getAllSections(std::vector<std::string>& s) const override { file_.getAllSections(s); }
 	void getAllKeys(const std::string& s, std::vector<std::string>& k) const override { file_.getAllKeys(s, k); }
@@ -33,13 +37,25 @@ class RecordingConfig : public mrpt::config::CConfigFileBase
 	std::string readString(const std::string& section, const std::string& name, const std::string& def,
 						   bool fail) const override
 	{
-		const_cast<RecordingConfig*>(this)->read[lowercase(section)][lowercase(name)] = def;
-		return file_.read_string(section, name, def, fail);
+		auto* self = const_cast<RecordingConfig*>(this);
+		self->read[lowercase(section)][lowercase(name)] = def;
+		if (fail) self->required.emplace_back(section, name);  // said after reading, with the rest
+		return file_.read_string(section, name, def, false);
 	}
 
    private:
 	const mrpt::config::CConfigFile& file_;
 };
+
+/** The names of an enum MRPT reads with read_enum, in order (their numbers), where known. */
+std::vector<std::string> knownEnum(const std::string& lower_key)
+{
+	if (lower_key == "pf_algorithm")
+		return {"pfStandardProposal", "pfAuxiliaryPFStandard", "pfOptimalProposal", "pfAuxiliaryPFOptimal"};
+	if (lower_key == "resamplingmethod") return {"prMultinomial", "prResidual", "prStratified", "prSystematic"};
+	if (lower_key == "verbosity_level") return {"DEBUG", "INFO", "WARN", "ERROR"};
+	return {};
+}
 
 /** The value checked against the kind of MRPT's default. */
 void requireLikeDefault(const std::string& key, const std::string& model, const std::string& value)
@@ -47,8 +63,17 @@ void requireLikeDefault(const std::string& key, const std::string& model, const 
 	const std::string k = lowercase(key);
 	const bool numeric = !model.empty() && (std::isdigit(static_cast<unsigned char>(model[0])) || model[0] == '-' ||
 											 model[0] == '+' || model[0] == '.');
-	if (!numeric)  // an enum's name, as MRPT's default is
+	if (!numeric)  // an enum: its name, or (as MRPT's read_enum takes it) its number
 	{
+		const auto names = knownEnum(k);
+		if (!names.empty())
+		{
+			for (std::size_t i = 0; i < names.size(); ++i)
+				if (value == names[i] || value == std::to_string(i)) return;
+			std::string all;
+			for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+			throw std::invalid_argument("must be one of " + all + " (or its number, from 0)");
+		}
 		if (value.empty() || value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789") !=
 								 std::string::npos)
 			throw std::invalid_argument("not a name like '" + model + "'");
@@ -78,57 +103,155 @@ void requireLikeDefault(const std::string& key, const std::string& model, const 
 	if (whole && v != std::floor(v)) throw std::invalid_argument("not a whole number");
 	if (k.size() > 6 && k.compare(k.size() - 6, 6, "_count") == 0 && !(v >= 0 && v <= 16))
 		throw std::invalid_argument("must be within [0, 16]");
-	if (k == "resolution" && !(v > 0)) throw std::invalid_argument("must be > 0");
+	// Past these, a grid or a filter outgrows the memory before the program says a word.
+	if (k == "resolution" && !(v >= 0.005 && v <= 10)) throw std::invalid_argument("must be within [0.005, 10] m");
+	if ((k == "min_x" || k == "max_x" || k == "min_y" || k == "max_y") && !(std::abs(v) <= 1000))
+		throw std::invalid_argument("must be within [-1000, 1000] m");
+	if ((k == "samplesize" || k == "kld_minsamplesize") && !(v >= 1 && v <= 10000))
+		throw std::invalid_argument("must be within [1, 10000]");
+	if (k == "kld_maxsamplesize" && !(v >= 1 && v <= 100000)) throw std::invalid_argument("must be within [1, 100000]");
+	if ((k == "kld_binsize_xy" || k == "kld_binsize_phi") && !(v > 0)) throw std::invalid_argument("must be > 0");
 	if (k == "maxoccupancyupdatecertainty" && !(v >= 0.5 && v < 1)) throw std::invalid_argument("must be within [0.5, 1)");
 	if (std::abs(v) > 1e6) throw std::invalid_argument("must be within [-1e6, 1e6]");
 }
 }  // namespace
 
-void requireStrictMapSections(const std::string& file, const std::string& prefix)
+namespace
+{
+/** Every section of `file` that `inScope` takes is one MRPT read from
+ * `recording` (or [MappingApplication], whose keys MRPT did not read are the
+ * program's own: checked by `programKey`), each key one it read, each value
+ * of its default's kind. */
+void requireRecorded(const std::string& file, const mrpt::config::CConfigFile& ini, RecordingConfig& recording,
+					 const std::function<bool(const std::string&)>& inScope,
+					 const std::function<void(const std::string&)>& programKey)
+{
+	for (const auto& [section, key] : recording.required)
+		if (!ini.keyExists(section, key))
+			throw std::invalid_argument("[" + section + "] " + key + " is missing: MRPT requires it here");
+	std::vector<std::string> sections;
+	ini.getAllSections(sections);
+	for (const auto& s : sections)
+	{
+		const std::string ls = lowercase(s);
+		if (!inScope(ls)) continue;
+		const bool app = ls == "mappingapplication";
+		if (!app && recording.read.count(ls) == 0)
+			throw std::invalid_argument("unknown section [" + s + "]: MRPT reads no such section here (misspelt, or "
+										"past its map's count?)");
+		const auto& read = recording.read[ls];
+		std::vector<std::string> keys;
+		ini.getAllKeys(s, keys);
+		for (const auto& key : keys)
+		{
+			const auto model = read.find(lowercase(key));
+			if (model == read.end() && app)
+			{
+				programKey(key);
+				continue;
+			}
+			if (model == read.end()) throw std::invalid_argument("[" + s + "] " + key + ": not a key MRPT reads (misspelt?)");
+			const std::string value = trimmed(ini.read_string(s, key, ""));
+			try
+			{
+				requireLikeDefault(key, model->second, value);
+			}
+			catch (const std::invalid_argument& e)
+			{
+				throw std::invalid_argument("[" + s + "] " + key + " = '" + value + "': " + e.what());
+			}
+		}
+	}
+}
+
+/** The map counts in [`section`], checked before MRPT reads them: MRPT makes
+ * that many maps' options, and -1 (read as an unsigned count) never ends. */
+void requireMapCounts(const mrpt::config::CConfigFile& ini, const std::string& section)
+{
+	std::vector<std::string> keys;
+	ini.getAllKeys(section, keys);
+	for (const auto& key : keys)
+		if (const std::string k = lowercase(key); k.size() > 6 && k.compare(k.size() - 6, 6, "_count") == 0)
+			try
+			{
+				requireLikeDefault(key, "0", trimmed(ini.read_string(section, key, "")));
+			}
+			catch (const std::invalid_argument& e)
+			{
+				throw std::invalid_argument("[" + section + "] " + key + " = '" + trimmed(ini.read_string(section, key, "")) +
+											"': " + e.what());
+			}
+}
+
+/** Runs `check` on the ini `file`, its errors one line naming the file. */
+void namingTheFile(const std::string& file, const std::function<void()>& check)
 {
 	try
 	{
-		const mrpt::config::CConfigFile ini(file);
-		RecordingConfig recording(ini);
-		mrpt::maps::TSetOfMetricMapInitializers maps;
-		maps.loadFromConfigFile(recording, prefix);
-		std::vector<std::string> sections;
-		ini.getAllSections(sections);
-		const std::string lower_prefix = lowercase(prefix);
-		for (const auto& s : sections)
-		{
-			const std::string ls = lowercase(s);
-			const bool counts = ls == lower_prefix;
-			if (!counts && ls.rfind(lower_prefix + "_", 0) != 0) continue;  // not a map's
-			if (!counts && recording.read.count(ls) == 0)
-				throw std::invalid_argument("unknown section [" + s + "]: no map of [" + prefix +
-											"]'s counts reads it (misspelt, or past its map's count?)");
-			const auto& read = recording.read[ls];
-			std::vector<std::string> keys;
-			ini.getAllKeys(s, keys);
-			for (const auto& key : keys)
-			{
-				const auto model = read.find(lowercase(key));
-				if (model == read.end() && counts) continue;  // the program's own keys, checked by it
-				if (model == read.end())
-					throw std::invalid_argument("[" + s + "] " + key + ": not a key MRPT reads (misspelt?)");
-				const std::string value = trimmed(ini.read_string(s, key, ""));
-				try
-				{
-					requireLikeDefault(key, model->second, value);
-				}
-				catch (const std::invalid_argument& e)
-				{
-					throw std::invalid_argument("[" + s + "] " + key + " = '" + value + "': " + e.what());
-				}
-			}
-		}
+		requireNoRepeatedKeys(file);
+		requireMapCounts(mrpt::config::CConfigFile(file), "MappingApplication");
+		check();
 	}
 	catch (const std::exception& e)
 	{
 		const std::string what = e.what();
 		throw std::runtime_error(what.rfind(file, 0) == 0 ? what : file + ": " + what);
 	}
+}
+
+/** A key of the app's own in [MappingApplication]: one of `known` (any case). */
+std::function<void(const std::string&)> oneOf(const std::vector<std::string>& known, const std::string& program)
+{
+	return [known, program](const std::string& key) {
+		for (const auto& k : known)
+			if (sameKey(k, key)) return;
+		throw std::invalid_argument("[MappingApplication] " + key + ": not a key " + program + " reads (misspelt?)");
+	};
+}
+}  // namespace
+
+void requireStrictMapSections(const std::string& file, const std::string& prefix)
+{
+	namingTheFile(file, [&] {
+		const mrpt::config::CConfigFile ini(file);
+		RecordingConfig recording(ini);
+		mrpt::maps::TSetOfMetricMapInitializers maps;
+		maps.loadFromConfigFile(recording, prefix);
+		const std::string p = lowercase(prefix);
+		requireRecorded(
+			file, ini, recording, [&](const std::string& s) { return s == p || s.rfind(p + "_", 0) == 0; },
+			[](const std::string&) {});  // the program's own keys: its caller checks them
+	});
+}
+
+void requireStrictObservationsToMapIni(const std::string& file)
+{
+	namingTheFile(file, [&] {
+		const mrpt::config::CConfigFile ini(file);
+		RecordingConfig recording(ini);
+		mrpt::maps::TSetOfMetricMapInitializers maps;
+		maps.loadFromConfigFile(recording, "MappingApplication");
+		requireRecorded(file, ini, recording, [](const std::string&) { return true; },
+						oneOf({}, "observations2map"));
+	});
+}
+
+void requireStrictRbpfIni(const std::string& file)
+{
+	namingTheFile(file, [&] {
+		const mrpt::config::CConfigFile ini(file);
+		RecordingConfig recording(ini);
+		mrpt::slam::CMetricMapBuilderRBPF::TConstructionOptions options;
+		options.loadFromConfigFile(recording, "MappingApplication");
+		// rbpf-slam's own keys (MRPT 2.5.8, apps/src/RBPF_SLAM_App.cpp).
+		requireRecorded(file, ini, recording, [](const std::string&) { return true; },
+						oneOf({"rawlog_offset", "logOutput_dir", "LOG_FREQUENCY", "GENERATE_LOG_JOINT_H",
+							   "GENERATE_LOG_INFO", "SAVE_MAP_IMAGES", "SAVE_3D_SCENE", "SAVE_POSE_LOG",
+							   "SAVE_ENOSE_READINGS", "CAMERA_3DSCENE_FOLLOWS_ROBOT", "SHOW_PROGRESS_IN_WINDOW",
+							   "PROGRESS_WINDOW_WIDTH", "PROGRESS_WINDOW_HEIGHT", "RANDOM_SEED",
+							   "SHOW_PROGRESS_3D_REAL_TIME"},
+							  "rbpf-slam"));
+	});
 }
 
 }  // namespace omnirange::slam

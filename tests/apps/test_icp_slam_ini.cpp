@@ -1,6 +1,9 @@
 // icp-slam's ini as MRPT reads it: the keys it would ignore are found, and
 // the shipped inis have none.
 #include <omnirange_slam/IcpSlamIni.h>
+#include <omnirange_slam/MrptMapSections.h>
+
+#include <functional>
 
 #include <gtest/gtest.h>
 
@@ -123,7 +126,7 @@ TEST(IcpSlamIni, TheMapSectionsAreHeldToTheKeysMrptReadsAsItReadsThem)
 	const std::vector<std::pair<std::string, std::string>> bad = {
 		{grid + "resolution = 0,05\n", "resolution = '0,05'"},  // atof: 0
 		{grid + "resolution = 0.05m\n", "resolution = '0.05m'"},
-		{grid + "resolution = 0\n", "must be > 0"},
+		{grid + "resolution = 0\n", "within [0.005, 10] m"},
 		{grid + "resolutoin = 0.05\n", "resolutoin: not a key MRPT reads"},
 		{grid + "disableSaveAs3DObject = 1\n", "disableSaveAs3DObject: not a key MRPT reads"},
 		{points + "isPlanarMap = maybe\n", "must be true or false"},  // atoi: false
@@ -156,4 +159,56 @@ TEST(IcpSlamIni, SettingsIcpSlamFollowsAndTheGuardedMatcherDoesNotAreNamed)
 	EXPECT_EQ(ignored, (std::vector<std::string>{"rawlog_offset = 15", "matchAgainstTheGrid = true", "pointsMap_count = 0"}));
 	const TempIni shipped_like("[MappingApplication]\nrawlog_offset = 0\nmatchAgainstTheGrid = false\npointsMap_count = 1\n");
 	EXPECT_TRUE(omnirange::slam::mappingSettingsGuardedIcpIgnores(shipped_like.path).empty());
+}
+
+TEST(IcpSlamIni, TheObservationsToMapAndRbpfInisAreHeldToWhatMrptReads)
+{
+	namespace slam = omnirange::slam;
+	const std::string dir = OMNIRANGE_SOURCE_DIR "/ini/";
+	for (const std::string shipped : {"observations2map-omniscan.ini", "observations2map-laser.ini"})
+		EXPECT_NO_THROW(slam::requireStrictObservationsToMapIni(dir + shipped)) << shipped;
+	for (const std::string shipped : {"rbpf-slam-omniscan.ini", "rbpf-slam-laser.ini"})
+		EXPECT_NO_THROW(slam::requireStrictRbpfIni(dir + shipped)) << shipped;
+	const auto refusal = [](const std::function<void(const std::string&)>& check, const std::string& text) {
+		const TempIni ini(text);
+		try
+		{
+			check(ini.path);
+			return std::string();
+		}
+		catch (const std::runtime_error& e)
+		{
+			return std::string(e.what());
+		}
+	};
+	const auto map = [](const std::string& f) { slam::requireStrictObservationsToMapIni(f); };
+	const std::string grid = "[MappingApplication]\noccupancyGrid_count = 1\n[MappingApplication_occupancyGrid_00_creationOpts]\n";
+	for (const auto& [bad, expected] : std::vector<std::pair<std::string, std::string>>{
+			 {"[MappingApplication]\npointsMap_count = -1\n", "within [0, 16]"},  // observations2map grew without end
+			 {grid + "resolutoin = 0.05\n", "resolutoin: not a key MRPT reads"},
+			 {grid + "resolution = 0,05\n", "resolution = '0,05'"},
+			 {grid + "resolution = 0.0001\n", "within [0.005, 10] m"},
+			 {grid + "min_x = -90000\n", "within [-1000, 1000] m"},
+			 {"[MappingApplication]\nlogOutput_dir = x\n", "not a key observations2map reads"},
+			 {"[Other]\nk = 1\n", "unknown section [Other]"}})
+		EXPECT_NE(refusal(map, bad).find(expected), std::string::npos) << bad << ": " << refusal(map, bad);
+	// The shipped rbpf ini with one line changed (MRPT requires some of its keys).
+	std::ifstream in(dir + "rbpf-slam-omniscan.ini");
+	const std::string shipped((std::istreambuf_iterator<char>(in)), {});
+	const auto edited = [&](const std::string& from, const std::string& to) {
+		const auto at = shipped.find(from);
+		EXPECT_NE(at, std::string::npos) << from;
+		return shipped.substr(0, at) + to + shipped.substr(at + from.size());
+	};
+	const auto rbpf = [](const std::string& f) { slam::requireStrictRbpfIni(f); };
+	for (const auto& [bad, expected] : std::vector<std::pair<std::string, std::string>>{
+			 {edited("sampleSize = 10", "sampleSize = -1"), "within [1, 10000]"},  // rbpf-slam took 24 GB
+			 {edited("sampleSize = 10", "sampleSize = 10\nsampelSize = 10"), "sampelSize: not a key rbpf-slam reads"},
+			 {edited("sampleSize = 10", "sampleSize = 0,5"), "sampleSize = '0,5'"},
+			 {edited("PF_algorithm = 2", "PF_algorithm = 99"), "must be one of pfStandardProposal"},
+			 {edited("KLD_binSize_XY = 0.03", "KLD_binSize_XY = 0"), "must be > 0"},
+			 {edited("adaptiveSampleSize = 0", ""), "adaptiveSampleSize is missing"},
+			 {edited("[MappingApplication]\n", "[MappingApplication]\nmax_corr_distanc = 1.0\n"), "not a key rbpf-slam reads"}})
+		EXPECT_NE(refusal(rbpf, bad).find(expected), std::string::npos) << expected << ": " << refusal(rbpf, bad);
+	EXPECT_EQ(refusal(rbpf, edited("PF_algorithm = 2", "PF_algorithm = pfOptimalProposal")), "");
 }

@@ -212,11 +212,12 @@ TEST(Experiment, AFailedRunLeavesTheOldReportAsItWas)
 	ASSERT_EQ(r.code, 0) << r.out;
 	const RunResult before = run("md5sum " + q(report + "/report.md") + " " + q(report + "/metrics.ini") + " " +
 								 q(report + "/dataset/maze.rawlog"));
-	// The same run, but observations2map given an empty configuration: it
-	// builds no map and the maps stage fails after simulate, train and scan wrote.
+	// The same run, but observations2map told to build no grid (a valid ini, so
+	// nothing refuses it before the work): the maps stage fails after simulate,
+	// train and scan wrote.
 	const std::string ini = kSource + "/ini/tmp-staging.ini";
-	std::ofstream(dir + "/empty.ini") << "";
-	ASSERT_EQ(run("sed '/^\\[experiment\\]$/a map_omni_ini = " + dir + "/empty.ini' " + q(kSource + "/ini/maze.ini") +
+	std::ofstream(dir + "/nogrid.ini") << "[MappingApplication]\noccupancyGrid_count = 0\n";
+	ASSERT_EQ(run("sed '/^\\[experiment\\]$/a map_omni_ini = " + dir + "/nogrid.ini' " + q(kSource + "/ini/maze.ini") +
 				  " > " + q(ini)).code,
 			  0);
 	r = run(app("omnirange-experiment") + " -q " + q(ini) + " -n 30 -o " + q(report));

@@ -98,6 +98,9 @@ class Experiment : public mrpt::system::COutputLogger
 	/** A built map against the true map: its figure, check region and metrics. */
 	MapMetrics assess(const mrpt::maps::COccupancyGridMap2D& map, const std::string& title, double& check_marked,
 					  std::vector<std::pair<std::string, cv::Mat>>& figures) const;
+	/** The report's folder of `engine`'s run for the sensor `tag` ("icp_slam_omniscan"):
+	 * where an MRPT program's ini must send its logOutput_dir. */
+	static std::string slamFolder(const std::string& engine, const std::string& tag);
 	/** A SLAM engine's final map and path for one sensor, against the truth:
 	 * the map in `dir`/_finalmap_.simplemap of the report. */
 	void scoreSlam(const std::string& engine, const std::string& dir, const SensorMaps& s, MapMetrics& map,

@@ -19,4 +19,15 @@ namespace omnirange::slam
  * occupancy update certainty outside [0.5, 1). */
 void requireStrictMapSections(const std::string& file, const std::string& prefix = "MappingApplication");
 
+/** The same for a whole observations2map ini: its only sections are the map
+ * list's and its maps', its only keys those MRPT reads there. */
+void requireStrictObservationsToMapIni(const std::string& file);
+
+/** The same for a whole rbpf-slam ini: [MappingApplication] holds the keys
+ * the filter, its maps and its options read (recorded as MRPT reads them:
+ * sampleSize within [1, 10000], PF_algorithm one of its four, ...) and
+ * rbpf-slam's own (rawlog_offset, logOutput_dir, ...); the map sections
+ * as above. */
+void requireStrictRbpfIni(const std::string& file);
+
 }  // namespace omnirange::slam
