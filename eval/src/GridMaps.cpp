@@ -82,9 +82,12 @@ mrpt::maps::CSimpleMap simplemapWithGroundTruth(const std::string& rawlog, const
 void saveSimplemap(const mrpt::maps::CSimpleMap& sm, const std::string& file)
 {
 	writeAtomically(file, [&](const std::string& tmp) {
-		mrpt::io::CFileGZOutputStream f;
-		if (!f.open(tmp)) throw std::runtime_error("cannot write '" + file + "'");
-		mrpt::serialization::archiveFrom(f) << sm;
+		{
+			mrpt::io::CFileGZOutputStream f;
+			if (!f.open(tmp)) throw std::runtime_error("cannot write '" + file + "'");
+			mrpt::serialization::archiveFrom(f) << sm;
+		}
+		requireWholeGzipFile(tmp, file);  // the stream reports no failed write (a full disk)
 	});
 }
 

@@ -148,9 +148,12 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	const std::string base = stemOf(o.output);
 	const auto grid = trueMap(in.world, o.map_resolution, robot.omnicam.camera.h);
 	StagedFile map(base + "_truemap.gridmap.gz", [&](const std::string& tmp) {
-		mrpt::io::CFileGZOutputStream f;
-		if (!f.open(tmp)) throw std::runtime_error("cannot write '" + base + "_truemap.gridmap.gz'");
-		mrpt::serialization::archiveFrom(f) << grid;
+		{
+			mrpt::io::CFileGZOutputStream f;
+			if (!f.open(tmp)) throw std::runtime_error("cannot write '" + base + "_truemap.gridmap.gz'");
+			mrpt::serialization::archiveFrom(f) << grid;
+		}
+		requireWholeGzipFile(tmp, base + "_truemap.gridmap.gz");  // the stream reports no failed write
 	});
 	mrpt::img::CImage png;
 	grid.getAsImage(png, true);  // north up, as saveAsBitmapFile() draws it

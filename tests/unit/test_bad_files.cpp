@@ -168,6 +168,11 @@ TEST(BadFiles, ABmpAPlainPgmAndAPamCutShortAreRefusedBeforeOpenCvPrintsAboutThem
 		EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << ext << ": OpenCV's own lines reach the user";
 		EXPECT_NE(why.find("cut." + ext + "' of OMNICAM is truncated"), std::string::npos) << why;
 	}
+	std::ofstream(d + "/two.bmp", std::ios::binary) << "BM";  // a BMP's signature and nothing more
+	testing::internal::CaptureStderr();
+	const std::string why = errorOf([&] { decodeImageFile(d + "/two.bmp", "OMNICAM"); });
+	EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+	EXPECT_NE(why.find("two.bmp' of OMNICAM is truncated"), std::string::npos) << why;
 }
 
 TEST(BadFiles, AnImageWhoseHeaderAsksForTooManyPixelsIsRefusedBeforeDecoding)

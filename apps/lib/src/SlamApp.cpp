@@ -52,7 +52,6 @@ slam::GuardedIcpResult SlamApp::run()
 	StagedFolder staged(folder, "omnirange-slam", {o_.input, o_.ini}, false);
 	const std::string map = staged.path() + "/_finalmap_.simplemap", path = staged.path() + "/log_estimated_path.txt";
 	const slam::GuardedIcpResult r = slam::runGuardedIcp(o_.input, o_.scan_label, o_.odometry_label, options);
-	eval::saveSimplemap(r.keyframes, map);
 	std::string text = "% time [s], x [m], y [m], phi [rad]: the estimated pose at every scan\n";
 	char line[128];
 	for (const auto& p : r.path)
@@ -60,7 +59,10 @@ slam::GuardedIcpResult SlamApp::run()
 		std::snprintf(line, sizeof line, "%.6f %.6f %.6f %.6f\n", p.t, p.pose.x(), p.pose.y(), p.pose.phi());
 		text += line;
 	}
-	writeFileAtomically(path, text);
+	staged.fill([&] {
+		eval::saveSimplemap(r.keyframes, map);
+		writeFileAtomically(path, text);
+	});
 	staged.commit();
 	MRPT_LOG_INFO_STREAM(r.path.size() << " scans, " << r.keyframes.size() << " keyframes; " << r.matches
 									   << " matches accepted, " << r.refused_jumps << " refused as jumps, "

@@ -122,10 +122,13 @@ bool pamSize(Bytes b, unsigned long& width, unsigned long& height, bool& cut)
 	return true;
 }
 
-/** Whether a BMP's uncompressed rows run past the file's end. */
+/** Whether a BMP's pixel data run past the file's end: the rows an
+ * uncompressed one promises, or the size a compressed one's header gives. */
 bool bmpCut(Bytes b, unsigned long width, unsigned long height)
 {
-	if (b.size() < 34 || le32(b, 30) != 0 || width * height > kMaxImagePixels) return false;  // compressed: OpenCV's to tell
+	if (b.size() < 54) return true;  // shorter than its two headers
+	if (width * height > kMaxImagePixels) return false;  // refused by its size
+	if (le32(b, 30) != 0) return b.size() < le32(b, 10) + le32(b, 34);  // compressed: biSizeImage bytes
 	const unsigned long bits = static_cast<unsigned char>(b[28]) | (static_cast<unsigned char>(b[29]) << 8);
 	const unsigned long stride = (width * bits + 31) / 32 * 4;
 	return b.size() < le32(b, 10) + stride * height;
@@ -146,8 +149,9 @@ std::string imageProblem(Bytes b)
 		const std::size_t from = b.size() > 16 ? b.size() - 16 : 0;
 		if (b.find("IEND", from) == std::string::npos) why = "truncated: no PNG end chunk";
 	}
-	else if (b.size() >= 26 && b.substr(0, 2) == "BM")
+	else if (b.size() >= 2 && b.substr(0, 2) == "BM")
 	{
+		if (b.size() < 54) return "truncated: shorter than a BMP's headers";
 		width = le32(b, 18);
 		const long h = static_cast<std::int32_t>(le32(b, 22));  // negative: stored top-down
 		height = static_cast<unsigned long>(h < 0 ? -h : h);

@@ -203,7 +203,7 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 		// The folder is the program's, but what a user put in it since is not.
 		if (const std::string added = firstUnlistedIn(output); !added.empty())
 			throw std::runtime_error("'" + (p / added).string() + "' is not something " + program +
-									 " wrote into its output '" + output + "' (move it out, or --force)");
+									 " wrote into its output '" + output + "' (move it out, or give another output)");
 		return;
 	}
 	if (!fs::is_regular_file(status))
@@ -303,6 +303,22 @@ StagedFolder::StagedFolder(const std::string& target, const std::string& program
 	temporaries::add(staging_);
 	fs::create_directories(staging_);
 	markOutputFolder(staging_, program);
+}
+
+void StagedFolder::fill(const std::function<void()>& write) const
+{
+	try
+	{
+		write();
+	}
+	catch (const std::exception& e)
+	{
+		std::string message = e.what();
+		if (message.find(staging_) == std::string::npos) throw;
+		for (auto at = message.find(staging_); at != std::string::npos; at = message.find(staging_, at + target_.size()))
+			message.replace(at, staging_.size(), target_);
+		throw std::runtime_error(message);
+	}
 }
 
 StagedFolder::~StagedFolder()

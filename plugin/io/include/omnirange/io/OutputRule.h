@@ -8,6 +8,7 @@
 //  - no output may be, contain or sit inside an input, through symlinks.
 // Paths are taken as a user types them: "out/" is the folder "out".
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,9 @@ class StagedFolder
 	StagedFolder& operator=(const StagedFolder&) = delete;
 
 	const std::string& path() const { return staging_; }
+	/** Runs `write`, which fills the staging folder; an error it throws names
+	 * the output the user asked for, not the staging folder (which is removed). */
+	void fill(const std::function<void()>& write) const;
 	void commit();
 	/** Leaves the staging folder as it is (a failed run's output, for a look). */
 	void keep();
