@@ -437,6 +437,14 @@ void TunerFrame::onKey(wxKeyEvent& e)
 			return controlsFromParams(), rangefinder_changed_ = true, updateTitle(), refresh();
 		}
 	}
+	// Enter or Tab in a number field: take the text as typed, before GTK clamps it into the
+	// field's range ("2" for a threshold would become 1 without a word); a refused one is said.
+	if (typing && (key == WXK_RETURN || key == WXK_NUMPAD_ENTER || key == WXK_TAB))
+	{
+		if (applyControls()) refresh();
+		if (key == WXK_TAB) e.Skip();
+		return;
+	}
 	// Page Up/Down step frames whatever has the focus; a number field keeps its arrows and Home/End.
 	if (key == WXK_PAGEDOWN) return setFrame(frame_ + 1);
 	if (key == WXK_PAGEUP) return setFrame(frame_ - 1);

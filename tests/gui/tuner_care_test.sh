@@ -4,7 +4,7 @@
 #    line and exit 1 before any window opens;
 #  - a corrupt frame shows a placeholder with the reason, not another frame;
 #  - a value typed but not committed is what Save writes; a refused value is
-#    said and not saved;
+#    said and not saved, committed with Enter too (not clamped into range);
 #  - Train asks before it replaces a histogram (and keeps it on "no");
 #  - unsaved changes mark the title and closing asks: Cancel keeps the
 #    window, Save writes and closes.
@@ -69,6 +69,10 @@ check "saved: no unsaved mark" bash -c "[[ '$(title)' != '*'* ]]"
 key ctrl+t; key ctrl+a; xdotool type --window "$win" "5"; sleep 0.5; key ctrl+s
 check "a value out of range is refused and said" grep -q "refused: threshold '5': must be within \[0, 1\]" "$work/tuner.log"
 check "a refused value is not saved" [ "$(saved_threshold)" = "0.2" ]
+# Typed and committed with Enter: GTK would clamp 2 into [0, 1] without a word; the tuner refuses it.
+key ctrl+t; key ctrl+a; xdotool type --window "$win" "2"; sleep 0.5; key Return; key ctrl+s
+check "a value out of range committed with Enter is refused, not clamped" grep -q "refused: threshold '2': must be within \[0, 1\]" "$work/tuner.log"
+check "the clamped value is not saved" [ "$(saved_threshold)" = "0.2" ]
 
 key ctrl+h
 train_dialog=$(dialog "replace the histogram")
