@@ -427,6 +427,10 @@ printf 'base = factory.ini\n[experiment]\nname = f\n' > exp/ini/few.ini
 "$apps/omnirange-experiment" -q exp/ini/few.ini -n 5 -o few_report 2>/dev/null; echo mine > few_report.failed/notes.txt
 run_case "experiment: fails again beside a failed run's folder a user added to" "error:too few" none.out -- "$apps/omnirange-experiment" -q exp/ini/few.ini -n 5 -o few_report
 kept few_report.failed/notes.txt
+# After a tenth: a table filled from a CSV missing some of its rows.
+head -3 "$src/docs/results/suite.csv" > two_rows.csv && cp "$src/README.md" readme_copy.md && cp readme_copy.md readme_copy.orig
+run_case "summary: --fill from a CSV that lacks rows the table shows" "error:would lose its rows" none.out -- "$apps/omnirange-summary" -q --csv two_rows.csv --fill readme_copy.md
+cmp -s readme_copy.md readme_copy.orig || { echo "| | PROBLEM: readme_copy.md was changed by a refused fill |"; problems=$((problems + 1)); }
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

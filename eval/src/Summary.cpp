@@ -285,6 +285,34 @@ std::string markdownTable(const std::string& name, const Summary& s)
 	throw std::runtime_error("no table '" + name + "'");
 }
 
+namespace
+{
+/** The first cell of each row of a Markdown table (its experiment), the header and rule left out. */
+std::vector<std::string> rowNames(const std::string& table)
+{
+	std::vector<std::string> names;
+	std::istringstream in(table);
+	int row = 0;
+	for (std::string line; std::getline(in, line);)
+		if (!line.empty() && line[0] == '|' && ++row > 2)
+			names.push_back(trimmed(line.substr(1, line.find('|', 1) - 1)));
+	return names;
+}
+
+/** A block filled from a CSV that lacks some of its experiments would lose
+ * their rows without a word: an error naming them (fill from the whole suite's CSV). */
+void requireNoRowLost(const std::string& block, const std::string& before, const std::string& after)
+{
+	const auto now = rowNames(after);
+	std::string lost;
+	for (const auto& name : rowNames(before))
+		if (std::find(now.begin(), now.end(), name) == now.end()) lost += (lost.empty() ? "" : ", ") + name;
+	if (!lost.empty())
+		throw std::runtime_error("table '" + block + "' would lose its rows for " + lost +
+								 ": the CSV has no figures for them (fill from a CSV of every experiment the table shows)");
+}
+}  // namespace
+
 std::string fillTables(const std::string& text, const Summary& s)
 {
 	static const std::string open = "<!-- table: ", close = "<!-- end table -->";
@@ -304,6 +332,7 @@ std::string fillTables(const std::string& text, const Summary& s)
 									 " is not closed before the next one opens");
 		const std::string name = text.substr(start + open.size(), name_end - start - open.size());
 		std::string table = markdownTable(name, s);
+		requireNoRowLost(name, text.substr(name_end + 4, end - name_end - 4), table);
 		if (crlf)  // a file written with CRLF line ends keeps them in its tables too
 			for (std::size_t k = 0; (k = table.find('\n', k)) != std::string::npos; k += 2) table.insert(k, "\r");
 		out += text.substr(at, name_end + 4 - at) + (crlf ? "\r\n" : "\n") + table + close;

@@ -375,6 +375,11 @@ TEST(OutputRule, AFileAUserAddedToAnOutputFolderIsNotReplacedWithIt)
 	EXPECT_NE(refusal(d + "/report", OutputKind::Folder).find("maps/notes.txt' is not something omnirange-test wrote"),
 			  std::string::npos);
 	EXPECT_EQ(refusal(d + "/report", OutputKind::Folder, {}, true), "");  // --force
+	// An empty folder a user added is theirs too.
+	fs::remove(d + "/report/maps/notes.txt");
+	fs::create_directory(d + "/report/mine_empty");
+	EXPECT_NE(refusal(d + "/report", OutputKind::Folder).find("mine_empty' is not something"), std::string::npos);
+	fs::remove(d + "/report/mine_empty");
 	// A link a user added is named as it is in the folder, not as where it points.
 	fs::remove(d + "/report/maps/notes.txt");
 	fs::create_directory(d + "/elsewhere");

@@ -352,7 +352,8 @@ std::vector<std::string> filesIn(const std::string& dir)
 	std::error_code walking, ec;
 	for (auto it = fs::recursive_directory_iterator(dir, walking); !walking && it != fs::recursive_directory_iterator();
 		 it.increment(walking))
-		if (it->is_symlink(ec) || !it->is_directory(ec))
+		// Files, links, and empty folders (a user's new folder is as much theirs as a file).
+		if (it->is_symlink(ec) || !it->is_directory(ec) || fs::is_empty(it->path(), ec))
 			// Lexically: fs::relative would follow a link to where it points ("../userdata").
 			if (std::string rel = it->path().lexically_relative(dir).string(); rel != kOutputMarker) files.push_back(rel);
 	return files;

@@ -7,6 +7,7 @@
 #include <mrpt/obs/CObservationImage.h>
 
 #include <array>
+#include <memory>
 #include <cmath>
 #include <stdexcept>
 
@@ -119,16 +120,17 @@ ScaledOrientationFit fitOrientationAndScale(const RangefinderParams& params, con
 	double error_as_given = 0;  // the ini's own orientation and scale, as the user gave them
 	for (const double v : scales)
 	{
-		RangefinderParams p = withScale(v);
+		std::unique_ptr<Rangefinder> rf;
 		try
 		{
-			p.validate();
+			rf = std::make_unique<Rangefinder>(withScale(v), colours);
 		}
 		catch (const std::exception&)
 		{
-			continue;  // a scale the camera model refuses (its radius must grow to the horizon)
+			if (v == given) throw;  // the ini's own: what is wrong with it is the user's to hear
+			continue;  // a scale the camera refuses (its radius must grow to the horizon, its circle fit the image)
 		}
-		const OrientationFit f = fitOrientation(Rangefinder(p, colours), o);
+		const OrientationFit f = fitOrientation(*rf, o);
 		if (v == given) error_as_given = f.error_as_given;
 		if (best.scale_key.empty() || f.error < best.fit.error) best = {f, v, key};
 	}
