@@ -122,7 +122,7 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 	inputs.insert(inputs.end(), o_.checkerboards.begin(), o_.checkerboards.end());
 	inputs.insert(inputs.end(), o_.rim_images.begin(), o_.rim_images.end());
 	if (!o_.checkerboard_dir.empty()) inputs.push_back(o_.checkerboard_dir);
-	if (!o_.calibration.input.empty()) inputs.push_back(imagesDirFor(o_.calibration.input));
+	if (!o_.calibration.input.empty()) inputs.push_back(imagesDirToRead(o_.calibration.input));
 	// Its -c ini is the usual --save-to, but not the bases under it: they are other inis' too.
 	if (!o_.ini.empty())
 		for (const auto& base : iniBasesOf(o_.ini)) inputs.push_back(base);

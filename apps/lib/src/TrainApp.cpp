@@ -86,7 +86,7 @@ RawlogTrainingResult TrainApp::run()
 	requireOutputsAllowed({{o_.output, OutputKind::Histogram}, {o_.learn_ini, OutputKind::Ini, kLearnedIniBegins},
 						   {o_.learn_candidates, OutputKind::Text, candidateColumns()}, figure("_birdseye.png"), figure("_laser.png"),
 						   figure("_fused.png")},
-						  "omnirange-train", {t.input, imagesDirFor(t.input), o_.ini});
+						  "omnirange-train", {t.input, imagesDirToRead(t.input), o_.ini});
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	Progress progress("objects read");
 	if (!o_.learn_ini.empty()) return learn(params);

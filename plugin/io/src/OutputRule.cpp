@@ -122,7 +122,7 @@ std::vector<std::string> withWhatInputsBring(const std::vector<std::string>& inp
 		all.push_back(in);
 		if (!fs::is_regular_file(in, ec)) continue;
 		if (isOfKind(in, OutputKind::Rawlog) || fs::path(in).extension() == ".rawlog")
-			all.push_back(imagesDirFor(in));
+			all.push_back(imagesDirToRead(in));
 		else if (isIni(in))
 			for (const auto& base : iniBasesOf(in)) all.push_back(base);
 	}

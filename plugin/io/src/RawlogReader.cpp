@@ -25,7 +25,7 @@ RawlogReader::RawlogReader(const std::string& path)
 	requireRegularFile(path, "rawlog");
 	if (!std::filesystem::is_regular_file(path) || !in_->open(path))
 		throw std::runtime_error("cannot open rawlog '" + path + "'");
-	mrpt::img::CImage::setImagesPathBase(imagesDirFor(path));
+	mrpt::img::CImage::setImagesPathBase(imagesDirToRead(path));
 	temporaries::setActivity("reading rawlog '" + path + "'");
 }
 

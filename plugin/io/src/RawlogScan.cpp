@@ -135,7 +135,7 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, Progress* progress)
 {
 	if (o.threads < 1 || o.threads > 256) throw std::invalid_argument("threads must be within [1, 256]");
-	if (!o.decode_only) requireRawlogOutputAllowed(o.output, kScanProgram, {o.input, imagesDirFor(o.input)}, o.force);
+	if (!o.decode_only) requireRawlogOutputAllowed(o.output, kScanProgram, {o.input, imagesDirToRead(o.input)}, o.force);
 	cv::setNumThreads(o.threads);
 
 	RawlogProcessor loop(o.input);
@@ -144,7 +144,7 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	{
 		writer.emplace(o.output, kScanProgram);
 		// Images stored inside the input need no folder: a link to none would point at nothing.
-		if (std::filesystem::exists(imagesDirFor(o.input))) writer->linkImagesTo(imagesDirFor(o.input));
+		if (std::filesystem::exists(imagesDirToRead(o.input))) writer->linkImagesTo(imagesDirToRead(o.input));
 		if (o.force) writer->replaceAnyImagesFolder();
 	}
 	const std::size_t batch_images = 8 * static_cast<std::size_t>(o.threads);

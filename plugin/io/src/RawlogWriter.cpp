@@ -31,6 +31,14 @@ std::string imagesDirFor(const std::string& rawlog_path)
 	return (p.parent_path() / (stem + "_Images")).string();
 }
 
+std::string imagesDirToRead(const std::string& rawlog_path)
+{
+	const std::string beside = imagesDirFor(rawlog_path);
+	std::error_code ec;
+	if (fs::exists(fs::symlink_status(beside, ec)) || !fs::is_symlink(rawlog_path, ec)) return beside;
+	return imagesDirFor(fs::weakly_canonical(rawlog_path, ec).string());
+}
+
 namespace
 {
 /** `images` is the link a scan wrote beside `rawlog` to its input's images:

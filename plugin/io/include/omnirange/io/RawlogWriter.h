@@ -20,6 +20,10 @@ namespace omnirange
 {
 /** NAME_Images beside NAME.rawlog (the folder MRPT's programs look in). */
 std::string imagesDirFor(const std::string& rawlog_path);
+/** The images folder a reader of `rawlog_path` uses: imagesDirFor() it, or,
+ * when that is missing and the rawlog is a link, the folder beside the file
+ * the link leads to (where a writer through the link put the images). */
+std::string imagesDirToRead(const std::string& rawlog_path);
 
 /** The output rule (OutputRule.h) for a rawlog `program` is to write and
  * its NAME_Images: the rawlog may replace only a rawlog, the folder only
