@@ -173,6 +173,8 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 {
 	const std::string output = outputPath(output_as_given);
 	if (output.empty()) return;
+	if (kind != OutputKind::Folder && output_as_given.back() == '/')
+		throw std::runtime_error("'" + output_as_given + "' ends with '/', which names a folder: this output is a file");
 	requireApartFromInputs(output, kind, inputs);
 	// A file output's temporaries that killed runs left (a folder's are its
 	// writer's to recover: StagedFolder, RawlogWriter).
