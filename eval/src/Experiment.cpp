@@ -79,6 +79,9 @@ void Experiment::stage(const std::string& name, const std::function<void()>& bod
 	{
 		throw std::runtime_error("stage '" + name + "' failed: " + std::string(e.what()));
 	}
+	// What the stage wrote is listed as the run's own: a run killed later leaves a
+	// staging folder the next run can tell a user's additions in.
+	listOutputFolder(out_);
 }
 
 void Experiment::setFolder(const std::string& dir)

@@ -78,7 +78,7 @@ bool mrptReadsMappingKey(const std::string& key)
 		"insertionAngDistance", "localizationLinDistance", "localizationAngDistance", "verbosity_level",
 		"minICPgoodnessToAccept"};
 	for (const char* k : known)
-		if (key == k) return true;
+		if (sameKey(key, k)) return true;  // MRPT matches keys in any case
 	const std::string suffix = "_count";
 	if (key.size() <= suffix.size() || key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
 	const auto& kinds = mrpt::maps::internal::TMetricMapTypesRegistry::Instance().getAllRegistered();

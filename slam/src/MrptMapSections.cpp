@@ -118,6 +118,35 @@ void requireLikeDefault(const std::string& key, const std::string& model, const 
 
 namespace
 {
+/** [cells] The largest grid a map section may make: 10^8 cells, 10 km by 10 km
+ * at 1 m or 500 m square at 5 cm, are a couple of hundred megabytes already. */
+constexpr double kMaxGridCells = 1e8;
+
+/** A grid's extent over its resolution, from the section's values or MRPT's
+ * defaults: each within its bounds, the whole still too big to allocate. */
+void requireGridSize(const mrpt::config::CConfigFile& ini, const std::string& section,
+					 const std::map<std::string, std::string>& read)
+{
+	if (!read.count("resolution") || !read.count("min_x")) return;  // not a grid's creation options
+	const auto value = [&](const char* key) {
+		const std::string text = trimmed(ini.read_string(section, key, read.at(key)));
+		try
+		{
+			return parseDouble(text);
+		}
+		catch (const std::invalid_argument&)
+		{
+			return 0.0;  // said with the key's name by the key's own check
+		}
+	};
+	const double res = value("resolution"), w = value("max_x") - value("min_x"), h = value("max_y") - value("min_y");
+	if (res > 0 && (w / res) * (h / res) > kMaxGridCells)
+		throw std::invalid_argument("[" + section + "] a grid of " + formatDouble(std::round(w)) + " m by " +
+									formatDouble(std::round(h)) + " m at " + formatDouble(std::round(res * 1e4) / 1e4) + " m is " +
+									formatDouble(std::round(w / res * h / res / 1e6)) +
+									" million cells, more than 100 million: make the resolution coarser or the extent smaller");
+}
+
 /** Every section of `file` that `inScope` takes is one MRPT read from
  * `recording` (or [MappingApplication], whose keys MRPT did not read are the
  * program's own: checked by `programKey`), each key one it read, each value
@@ -161,6 +190,7 @@ void requireRecorded(const std::string& file, const mrpt::config::CConfigFile& i
 				throw std::invalid_argument("[" + s + "] " + key + " = '" + value + "': " + e.what());
 			}
 		}
+		requireGridSize(ini, s, read);  // each value within its bounds, the whole grid too
 	}
 }
 

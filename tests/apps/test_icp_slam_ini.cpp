@@ -189,6 +189,8 @@ TEST(IcpSlamIni, TheObservationsToMapAndRbpfInisAreHeldToWhatMrptReads)
 			 {grid + "resolution = 0,05\n", "resolution = '0,05'"},
 			 {grid + "resolution = 0.0001\n", "within [0.005, 10] m"},
 			 {grid + "min_x = -90000\n", "within [-1000, 1000] m"},
+			 {grid + "resolution = 0.005\nmin_x = -900\nmax_x = 900\nmin_y = -900\nmax_y = 900\n",
+			  "million cells, more than 100 million"},  // each bound kept, 130 GB in all
 			 {"[MappingApplication]\nlogOutput_dir = x\n", "not a key observations2map reads"},
 			 {"[Other]\nk = 1\n", "unknown section [Other]"}})
 		EXPECT_NE(refusal(map, bad).find(expected), std::string::npos) << bad << ": " << refusal(map, bad);

@@ -259,6 +259,27 @@ TEST(TunerSession, SavingKeepsTheUsersCommentsAndOtherSections)
 	EXPECT_EQ(lines(read(user)), after);
 }
 
+TEST(TunerSession, SavingKeepsAnEditMadeInTheFileWhileTheWindowWasOpen)
+{
+	const std::string dir = workDir("save_edit");
+	fs::copy_file(kIni, dir + "/user.ini");
+	fs::copy_file(test::kSource + "/ini/experiment-base.ini", dir + "/experiment-base.ini");  // its base
+	SessionOptions o;
+	o.rawlog = kSample;
+	o.ini = dir + "/user.ini";
+	TunerSession s(o);
+	s.train(dir + "/f.hist");
+	// The user edits N in the file meanwhile; the window changes only the threshold.
+	std::ofstream(o.ini, std::ios::app) << "\n[rangefinder]\nN = 11\n";
+	RangefinderParams p = s.params();
+	p.threshold = 0.0123;
+	s.setParams(p);
+	s.saveIni();
+	const RangefinderParams back = RangefinderParams::loadFromFile(o.ini, "rangefinder");
+	EXPECT_DOUBLE_EQ(back.threshold, 0.0123);
+	EXPECT_EQ(back.scanner.filter.N, 11) << "an edit made in the file was undone";
+}
+
 TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOff)
 {
 	const std::string dir = workDir("overlays");

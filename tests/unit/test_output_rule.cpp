@@ -222,6 +222,23 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	recoverLeftoversOf(d + "/report");
 	EXPECT_EQ(read(d + "/report.old-999990/notes.txt"), "a user's notes");
 	EXPECT_EQ(read(d + "/report.old-999990/map.png"), "ours");
+	// A killed run's staging folder: what it listed as it wrote is removed with it; with a
+	// file it did not list (a user's, added since), the whole folder is kept.
+	for (const bool added : {false, true})
+	{
+		const std::string staging = d + "/report.staging-999989";
+		fs::create_directory(staging);
+		markOutputFolder(staging, "omnirange-test");
+		listOutputFile(staging, "img_0001.jpg");
+		write(staging + "/img_0001.jpg", "ours");
+		if (added) write(staging + "/NOTES.txt", "a user's notes");
+		recoverLeftoversOf(d + "/report", OutputKind::Folder, "omnirange-test");
+		EXPECT_EQ(fs::exists(staging), added) << (added ? "a user's file was removed" : "a listed leftover stayed");
+		fs::remove_all(staging);
+	}
+	// A path through a folder that is not there: the system could not write it, though it reads as "d".
+	EXPECT_NE(refusal(d + "/missing/..", OutputKind::Folder).find("passes through"), std::string::npos);
+	EXPECT_NE(refusal(d + "/missing/../x.rawlog", OutputKind::Rawlog).find("which is not a folder"), std::string::npos);
 
 	// A file output's temporaries: an empty one (killed before it wrote) and
 	// one of its kind are removed; another kind is a user's and stays.

@@ -248,11 +248,19 @@ void TunerSession::saveIni(const std::string& ini)
 {
 	const std::string target = ini.empty() ? o_.ini : ini;
 	RangefinderParams::requireWritable(target, o_.section);  // the file may have changed since the start
-	// Only the keys whose value differs from what the file gives now (through
-	// its base, or the defaults): every other line stays as the user wrote it.
-	RangefinderParams given;
-	if (std::filesystem::exists(target) && mrpt::config::CConfigFile(target).sectionExists(o_.section))
-		given = RangefinderParams::loadFromFile(target, o_.section);
+	// Only the keys changed here since the ini was read or last saved: every
+	// other line stays as the user wrote it, an edit made in the file meanwhile
+	// too. Into another ini: the keys whose value differs from what it gives now
+	// (through its base, or the defaults).
+	std::error_code ec;
+	const bool own = std::filesystem::equivalent(target, o_.ini, ec);
+	RangefinderParams given = saved_;
+	if (!own)
+	{
+		given = RangefinderParams();
+		if (std::filesystem::exists(target) && mrpt::config::CConfigFile(target).sectionExists(o_.section))
+			given = RangefinderParams::loadFromFile(target, o_.section);
+	}
 	std::vector<std::pair<std::string, std::string>> values;
 	for (const auto& f : RangefinderParams::table().fields())
 		if (f.print(params_) != f.print(given)) values.emplace_back(f.info.key, f.print(params_));

@@ -166,6 +166,30 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 			throw std::runtime_error("the output '" + output + "' is inside the input '" + in + "': write it elsewhere");
 	}
 }
+
+/** Every file and link under `dir` but its marker, relative to it. */
+std::vector<std::string> filesIn(const std::string& dir)
+{
+	std::vector<std::string> files;
+	std::error_code walking, ec;
+	for (auto it = fs::recursive_directory_iterator(dir, walking); !walking && it != fs::recursive_directory_iterator();
+		 it.increment(walking))
+		// Files, links, and empty folders (a user's new folder is as much theirs as a file).
+		if (it->is_symlink(ec) || !it->is_directory(ec) || fs::is_empty(it->path(), ec))
+			// Lexically: fs::relative would follow a link to where it points ("../userdata").
+			if (std::string rel = it->path().lexically_relative(dir).string(); rel != kOutputMarker) files.push_back(rel);
+	return files;
+}
+
+std::set<std::string> listedIn(const std::string& dir, bool& has_list)
+{
+	std::ifstream f(fs::path(dir) / kOutputMarker);
+	std::set<std::string> listed;
+	has_list = false;
+	for (std::string line; std::getline(f, line);)
+		if (line.rfind("file ", 0) == 0) listed.insert(line.substr(5)), has_list = true;
+	return listed;
+}
 }  // namespace
 
 void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, const std::string& program,
@@ -175,6 +199,16 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	if (output.empty()) return;
 	if (kind != OutputKind::Folder && output_as_given.back() == '/')
 		throw std::runtime_error("'" + output_as_given + "' ends with '/', which names a folder: this output is a file");
+	// "a/missing/..": the system cannot pass through a folder that is not there, though the text reads as "a".
+	fs::path walked;
+	for (const auto& part : fs::path(output_as_given))
+	{
+		std::error_code ec;
+		if (part == ".." && !walked.empty() && !fs::is_directory(walked, ec))
+			throw std::runtime_error("'" + output_as_given + "' passes through '" + walked.string() +
+									 "', which is not a folder");
+		walked /= part;
+	}
 	requireApartFromInputs(output, kind, inputs);
 	// A file output's temporaries that killed runs left (a folder's are its
 	// writer's to recover: StagedFolder, RawlogWriter).
@@ -271,10 +305,20 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	// Only what our runs leave: a folder holding the marker; a file of the
 	// output's kind, or empty (killed before it wrote). A user's file that
 	// merely has such a name is left alone.
+	const auto marked = [&](const fs::path& p) {
+		return program.empty() ? fs::exists(p / kOutputMarker, ec) : isOutputFolderOf(p.string(), program);
+	};
+	// Removed only when every file in it is one the run listed as its own
+	// (a folder with no list yet: nothing but the marker).
 	const auto ours = [&](const fs::path& p) {
-		if (fs::is_directory(fs::symlink_status(p, ec)))  // and nothing a user added since it was listed
-			return (program.empty() ? fs::exists(p / kOutputMarker, ec) : isOutputFolderOf(p.string(), program)) &&
-				   firstUnlistedIn(p.string()).empty();
+		if (fs::is_directory(fs::symlink_status(p, ec)))
+		{
+			if (!marked(p)) return false;
+			if (!firstUnlistedIn(p.string()).empty()) return false;
+			bool has_list = false;
+			listedIn(p.string(), has_list);
+			return has_list || filesIn(p.string()).empty();
+		}
 		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
 			   (fs::file_size(p, ec) == 0 || isOfKind(p.string(), kind));
 	};
@@ -288,9 +332,11 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 			if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
 			const long id = std::stol(pid);
 			if (id == ::getpid() || ::kill(static_cast<pid_t>(id), 0) == 0 || errno != ESRCH) continue;  // alive
-			if (!ours(e.path())) continue;
-			if (suffix == ".old-" && !fs::exists(fs::symlink_status(t, ec))) fs::rename(e.path(), t, ec);
-			else fs::remove_all(e.path(), ec);
+			// An old copy put back where its output is missing is moved, not removed: its being ours is enough.
+			if (suffix == ".old-" && !fs::exists(fs::symlink_status(t, ec)) && fs::is_directory(e.path(), ec) && marked(e.path()))
+				fs::rename(e.path(), t, ec);
+			else if (ours(e.path()))
+				fs::remove_all(e.path(), ec);
 		}
 	}
 }
@@ -345,38 +391,27 @@ void StagedFolder::keep()
 	done_ = true;
 }
 
-namespace
+void listOutputFile(const std::string& dir, const std::string& name)
 {
-/** Every file and link under `dir` but its marker, relative to it. */
-std::vector<std::string> filesIn(const std::string& dir)
-{
-	std::vector<std::string> files;
-	std::error_code walking, ec;
-	for (auto it = fs::recursive_directory_iterator(dir, walking); !walking && it != fs::recursive_directory_iterator();
-		 it.increment(walking))
-		// Files, links, and empty folders (a user's new folder is as much theirs as a file).
-		if (it->is_symlink(ec) || !it->is_directory(ec) || fs::is_empty(it->path(), ec))
-			// Lexically: fs::relative would follow a link to where it points ("../userdata").
-			if (std::string rel = it->path().lexically_relative(dir).string(); rel != kOutputMarker) files.push_back(rel);
-	return files;
+	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
+	f << "file " << name << "\n";
+	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
 }
-}  // namespace
 
 void listOutputFolder(const std::string& dir)
 {
-	const std::vector<std::string> files = filesIn(dir);
+	bool has_list = false;
+	const std::set<std::string> listed = listedIn(dir, has_list);
 	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
-	for (const auto& e : files) f << "file " << e << "\n";
+	for (const auto& e : filesIn(dir))
+		if (!listed.count(e)) f << "file " << e << "\n";
 	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
 }
 
 std::string firstUnlistedIn(const std::string& dir)
 {
-	std::ifstream f(fs::path(dir) / kOutputMarker);
-	std::set<std::string> listed;
 	bool has_list = false;
-	for (std::string line; std::getline(f, line);)
-		if (line.rfind("file ", 0) == 0) listed.insert(line.substr(5)), has_list = true;
+	const std::set<std::string> listed = listedIn(dir, has_list);
 	if (!has_list) return "";  // a marker from before the listing: nothing to compare
 	for (const auto& rel : filesIn(dir))
 		if (!listed.count(rel)) return rel;

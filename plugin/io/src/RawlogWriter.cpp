@@ -122,6 +122,7 @@ void RawlogWriter::startImages()
 mrpt::img::CImage RawlogWriter::externalImageCopy(const std::string& source, const std::string& name)
 {
 	startImages();
+	listOutputFile(tmp_images_, name);  // before it is written: a killed run's list holds it
 	std::error_code ec;
 	fs::copy_file(source, fs::path(tmp_images_) / name, fs::copy_options::overwrite_existing, ec);
 	// Reading the source was checked when it was decoded: what fails here is the writing (a full disk).
@@ -139,6 +140,7 @@ mrpt::img::CImage RawlogWriter::externalImage(
 	const cv::Mat& bgr, const std::string& name, int jpeg_quality)
 {
 	startImages();
+	listOutputFile(tmp_images_, name);  // before it is written: a killed run's list holds it
 	const std::string file = (fs::path(tmp_images_) / name).string();
 	if (!cv::imwrite(file, bgr, {cv::IMWRITE_JPEG_QUALITY, jpeg_quality}))
 		throw std::runtime_error("cannot write image '" + file + "'");

@@ -60,6 +60,11 @@ void requireDistinctOutputs(const std::vector<std::string>& paths);
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force = false);
 
+/** Adds to the marker of `dir` the file `name` (relative to it), before the
+ * program writes it: a run killed while it fills a folder leaves a list of
+ * what was its own, so what a user adds there later is told apart. */
+void listOutputFile(const std::string& dir, const std::string& name);
+
 /** Adds to the marker of the finished folder `dir` every file in it: what
  * the program wrote, so that a file a user adds later is not replaced with it. */
 void listOutputFolder(const std::string& dir);
