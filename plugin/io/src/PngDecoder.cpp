@@ -5,7 +5,6 @@
 #include <png.h>
 
 #include <cstring>
-#include <vector>
 
 namespace omnirange
 {
@@ -47,7 +46,6 @@ void askForBgr(png_structp png, png_infop info)
 	if (png_get_bit_depth(png, info) < 8) png_set_expand_gray_1_2_4_to_8(png);
 	png_set_strip_alpha(png);
 	png_set_bgr(png);
-	if (png_get_interlace_type(png, info) != PNG_INTERLACE_NONE) png_set_interlace_handling(png);
 }
 }  // namespace
 
@@ -72,12 +70,14 @@ std::string decodePng(const unsigned char* bytes, std::size_t size, bool grey, c
 	png_set_read_fn(png, &source, readBytes);
 	png_read_info(png, info);
 	askForBgr(png, info);
+	const int passes = png_set_interlace_handling(png);  // 1, or 7 for an interlaced PNG
 	png_read_update_info(png, info);
 	image.create(static_cast<int>(png_get_image_height(png, info)), static_cast<int>(png_get_image_width(png, info)),
 				 CV_8UC3);
-	std::vector<png_bytep> rows(static_cast<std::size_t>(image.rows));
-	for (int r = 0; r < image.rows; ++r) rows[static_cast<std::size_t>(r)] = image.ptr(r);
-	png_read_image(png, rows.data());
+	// Row by row into the caller's image: no object of ours lives between here and a
+	// longjmp, which would skip its destructor (a vector of row pointers leaked so).
+	for (int pass = 0; pass < passes; ++pass)
+		for (int r = 0; r < image.rows; ++r) png_read_row(png, image.ptr(r), nullptr);
 	png_read_end(png, nullptr);
 	png_destroy_read_struct(&png, &info, nullptr);
 	if (grey) cv::cvtColor(image, image, cv::COLOR_BGR2GRAY);
