@@ -85,7 +85,9 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 			requireTimeAfter(previous, t);
 			previous = t;
 			const fs::path file = base / f[1];
-			if (!fs::is_regular_file(file)) throw std::invalid_argument("no image file '" + file.string() + "'");
+			if (!fs::is_regular_file(file))
+				throw std::invalid_argument((fs::exists(file) ? "'" + file.string() + "' is not a regular file"
+															  : "no image file '" + file.string() + "'"));
 			images.push_back({t, file.string()});
 		});
 		return images;
