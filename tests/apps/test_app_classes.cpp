@@ -63,6 +63,18 @@ std::string trainHistogram(const std::string& dir)
 	return o.output;
 }
 
+/** A scan of `input` into DIR/scanned.rawlog with the factory ini and a histogram trained in `dir`. */
+ScanApp::Options scanOf(const std::string& dir, const std::string& input)
+{
+	ScanApp::Options s;
+	s.ini = kIni;
+	s.histogram = trainHistogram(dir);
+	s.scan.input = input;
+	s.scan.output = dir + "/scanned.rawlog";
+	s.verbosity = mrpt::system::LVL_ERROR;
+	return s;
+}
+
 /** Runs omnirange-scan's class; its summary, and every warning it logged. */
 std::pair<RawlogScanSummary, std::string> scanWithWarnings(ScanApp::Options s)
 {
@@ -81,12 +93,7 @@ std::pair<RawlogScanSummary, std::string> scanWithWarnings(ScanApp::Options s)
 TEST(AppClasses, TrainScanAndAccuracyOfTheFactorySample)
 {
 	const std::string dir = workDir("pipeline");
-	ScanApp::Options s;
-	s.ini = kIni;
-	s.histogram = trainHistogram(dir);
-	s.scan.input = kSample;
-	s.scan.output = dir + "/scanned.rawlog";
-	s.verbosity = mrpt::system::LVL_ERROR;
+	const ScanApp::Options s = scanOf(dir, kSample);
 	const RawlogScanSummary scanned = ScanApp(s).run();
 	EXPECT_EQ(scanned.images, 20u);
 	EXPECT_EQ(scanned.rays, 20u * 360);
@@ -196,13 +203,7 @@ TEST(AppClasses, AScanOfImagesStoredInsideTheRawlogLinksNoImagesFolder)
 		w.commit();
 	}
 	ASSERT_FALSE(fs::exists(dir + "/emb_Images"));
-	ScanApp::Options s;
-	s.ini = kIni;
-	s.histogram = trainHistogram(dir);
-	s.scan.input = in;
-	s.scan.output = dir + "/scanned.rawlog";
-	s.verbosity = mrpt::system::LVL_ERROR;
-	EXPECT_EQ(ScanApp(s).run().images, 2u);
+	EXPECT_EQ(ScanApp(scanOf(dir, in)).run().images, 2u);
 	EXPECT_FALSE(fs::exists(fs::symlink_status(dir + "/scanned_Images"))) << "a link to a folder that does not exist";
 }
 

@@ -24,6 +24,27 @@ struct TempIni
 	~TempIni() { std::filesystem::remove(path); }
 	std::string path;
 };
+
+/** What `check` throws on an ini holding `text`, or "" if it takes it. */
+std::string refusalOf(const std::function<void(const std::string&)>& check, const std::string& text)
+{
+	const TempIni ini(text);
+	try
+	{
+		check(ini.path);
+		return std::string();
+	}
+	catch (const std::runtime_error& e)
+	{
+		return std::string(e.what());
+	}
+}
+
+/** refusalOf() for omnirange-slam's reading of an icp-slam ini. */
+std::string refusal(const std::string& text)
+{
+	return refusalOf([](const std::string& f) { omnirange::slam::requireStrictIcpSection(f); }, text);
+}
 }  // namespace
 
 TEST(IcpSlamIni, TheShippedInisHaveNoKeyMrptIgnores)
@@ -65,19 +86,6 @@ TEST(IcpSlamIni, AMissingFileIsAnErrorNamingIt)
 
 TEST(IcpSlamIni, TheIcpSectionIsReadStrictlyNamingFileSectionAndKey)
 {
-	using omnirange::slam::requireStrictIcpSection;
-	const auto refusal = [](const std::string& text) {
-		const TempIni ini(text);
-		try
-		{
-			requireStrictIcpSection(ini.path);
-			return std::string();
-		}
-		catch (const std::runtime_error& e)
-		{
-			return std::string(e.what());
-		}
-	};
 	EXPECT_EQ(refusal("[ICP]\nmaxIterations = 80\nthresholdAng_DEG = 7\nonlyUniqueRobust = true\n"
 					  "ICP_algorithm = icpClassic\n"),
 			  "");
@@ -103,19 +111,6 @@ TEST(IcpSlamIni, TheIcpSectionIsReadStrictlyNamingFileSectionAndKey)
 
 TEST(IcpSlamIni, TheMapSectionsAreHeldToTheKeysMrptReadsAsItReadsThem)
 {
-	using omnirange::slam::requireStrictIcpSection;
-	const auto refusal = [](const std::string& text) {
-		const TempIni ini(text);
-		try
-		{
-			requireStrictIcpSection(ini.path);
-			return std::string();
-		}
-		catch (const std::runtime_error& e)
-		{
-			return std::string(e.what());
-		}
-	};
 	const std::string maps = "[MappingApplication]\noccupancyGrid_count = 1\npointsMap_count = 1\n";
 	const std::string grid = "[MappingApplication_occupancyGrid_00_creationOpts]\n";
 	const std::string points = "[MappingApplication_pointsMap_00_insertOpts]\n";
@@ -149,7 +144,7 @@ TEST(IcpSlamIni, TheMapSectionsAreHeldToTheKeysMrptReadsAsItReadsThem)
 			<< dir;
 	// The shipped inis pass.
 	for (const std::string shipped : {"icp-slam-omniscan.ini", "icp-slam-laser.ini"})
-		EXPECT_NO_THROW(requireStrictIcpSection(std::string(OMNIRANGE_SOURCE_DIR) + "/ini/" + shipped)) << shipped;
+		EXPECT_NO_THROW(omnirange::slam::requireStrictIcpSection(std::string(OMNIRANGE_SOURCE_DIR) + "/ini/" + shipped)) << shipped;
 }
 
 TEST(IcpSlamIni, SettingsIcpSlamFollowsAndTheGuardedMatcherDoesNotAreNamed)
@@ -169,18 +164,6 @@ TEST(IcpSlamIni, TheObservationsToMapAndRbpfInisAreHeldToWhatMrptReads)
 		EXPECT_NO_THROW(slam::requireStrictObservationsToMapIni(dir + shipped)) << shipped;
 	for (const std::string shipped : {"rbpf-slam-omniscan.ini", "rbpf-slam-laser.ini"})
 		EXPECT_NO_THROW(slam::requireStrictRbpfIni(dir + shipped)) << shipped;
-	const auto refusal = [](const std::function<void(const std::string&)>& check, const std::string& text) {
-		const TempIni ini(text);
-		try
-		{
-			check(ini.path);
-			return std::string();
-		}
-		catch (const std::runtime_error& e)
-		{
-			return std::string(e.what());
-		}
-	};
 	const auto map = [](const std::string& f) { slam::requireStrictObservationsToMapIni(f); };
 	const std::string grid = "[MappingApplication]\noccupancyGrid_count = 1\n[MappingApplication_occupancyGrid_00_creationOpts]\n";
 	for (const auto& [bad, expected] : std::vector<std::pair<std::string, std::string>>{
@@ -193,7 +176,7 @@ TEST(IcpSlamIni, TheObservationsToMapAndRbpfInisAreHeldToWhatMrptReads)
 			  "million cells, more than 100 million"},  // each bound kept, 130 GB in all
 			 {"[MappingApplication]\nlogOutput_dir = x\n", "not a key observations2map reads"},
 			 {"[Other]\nk = 1\n", "unknown section [Other]"}})
-		EXPECT_NE(refusal(map, bad).find(expected), std::string::npos) << bad << ": " << refusal(map, bad);
+		EXPECT_NE(refusalOf(map, bad).find(expected), std::string::npos) << bad << ": " << refusalOf(map, bad);
 	// The shipped rbpf ini with one line changed (MRPT requires some of its keys).
 	std::ifstream in(dir + "rbpf-slam-omniscan.ini");
 	const std::string shipped((std::istreambuf_iterator<char>(in)), {});
@@ -211,6 +194,6 @@ TEST(IcpSlamIni, TheObservationsToMapAndRbpfInisAreHeldToWhatMrptReads)
 			 {edited("KLD_binSize_XY = 0.03", "KLD_binSize_XY = 0"), "must be > 0"},
 			 {edited("adaptiveSampleSize = 0", ""), "adaptiveSampleSize is missing"},
 			 {edited("[MappingApplication]\n", "[MappingApplication]\nmax_corr_distanc = 1.0\n"), "not a key rbpf-slam reads"}})
-		EXPECT_NE(refusal(rbpf, bad).find(expected), std::string::npos) << expected << ": " << refusal(rbpf, bad);
-	EXPECT_EQ(refusal(rbpf, edited("PF_algorithm = 2", "PF_algorithm = pfOptimalProposal")), "");
+		EXPECT_NE(refusalOf(rbpf, bad).find(expected), std::string::npos) << expected << ": " << refusalOf(rbpf, bad);
+	EXPECT_EQ(refusalOf(rbpf, edited("PF_algorithm = 2", "PF_algorithm = pfOptimalProposal")), "");
 }

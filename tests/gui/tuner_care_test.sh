@@ -17,10 +17,7 @@ cp "$src/ini/factory.ini" "$work/user.ini"
 cp "$src/ini/experiment-base.ini" "$work/"  # user.ini's base
 log=$work/factory-sample.rawlog
 "$apps/omnirange-train" -q -i "$log" -c "$work/user.ini" -o "$work/f.hist"
-fail=0
-check() {  # check DESCRIPTION COMMAND...: runs the command, reports
-  if "${@:2}"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi
-}
+. "$(dirname "$0")/tuner_window.sh"
 
 # Before any window: one line naming the problem, exit 1.
 refused_at_start() {  # refused_at_start EXPECTED_TEXT ARGS...
@@ -39,7 +36,6 @@ jpg=$work/factory-sample_Images/factory-sample_OMNICAM_000003.jpg
 head -c 4000 "$jpg" >"$jpg.cut" && mv "$jpg.cut" "$jpg"
 echo "precious" >"$work/user.hist"  # where Train writes (the ini's name, .hist)
 
-. "$(dirname "$0")/tuner_window.sh"
 start_tuner "$work/tuner.log" -i "$log" -c "$work/user.ini" -H "$work/f.hist"
 press() {  # press WINDOW KEY...: without a window manager, a window takes keys once it has the focus
   xdotool windowfocus --sync "$1" 2>/dev/null || true

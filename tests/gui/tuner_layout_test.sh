@@ -9,16 +9,8 @@
 #   tuner_layout_test.sh SOURCE_DIR APPS_DIR WORK_DIR
 set -euo pipefail
 src=$1; apps=$2; work=$3
-rm -rf "$work" && mkdir -p "$work"
-"$apps/omnirange-train" -q -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -o "$work/f.hist"
-cp "$src/ini/factory.ini" "$work/user.ini"
-cp "$src/ini/experiment-base.ini" "$work/"  # user.ini's base
-fail=0
-check() {  # check DESCRIPTION COMMAND...
-  if "${@:2}"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi
-}
-
 . "$(dirname "$0")/tuner_window.sh"
+factory_work
 SCREEN=1280x720x24 start_tuner "$work/tuner.log" -i "$src/rawlogs/factory-sample.rawlog" -c "$work/user.ini" -H "$work/f.hist"
 eval "$(xdotool getwindowgeometry --shell "$win")"  # X, Y, WIDTH, HEIGHT
 echo "window: ${WIDTH}x${HEIGHT} at $X,$Y"

@@ -7,12 +7,8 @@
 #   tuner_test.sh SOURCE_DIR APPS_DIR WORK_DIR
 set -euo pipefail
 src=$1; apps=$2; work=$3
-rm -rf "$work" && mkdir -p "$work"
-"$apps/omnirange-train" -q -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -o "$work/f.hist"
-cp "$src/ini/factory.ini" "$work/user.ini"
-cp "$src/ini/experiment-base.ini" "$work/"  # user.ini's base
-
 . "$(dirname "$0")/tuner_window.sh"
+factory_work
 start_tuner "$work/tuner.log" -i "$src/rawlogs/factory-sample.rawlog" -c "$work/user.ini" -H "$work/f.hist"
 for i in 1 2 3 4 5; do xdotool key --window "$win" Right; sleep 0.3; done
 xdotool key --window "$win" bracketright
@@ -22,7 +18,6 @@ sleep 2
 title=$(xdotool getwindowname "$win")
 xwd -root -silent | /usr/bin/convert xwd:- "$work/shot.png"
 
-fail=0
 echo "title: $title"
 [[ "$title" == *"frame 5 / 19"* ]] || { echo "FAIL: not at frame 5"; fail=1; }
 grep -q "^threshold = 0.15$" "$work/user.ini" || { echo "FAIL: threshold not saved as 0.15"; grep threshold "$work/user.ini"; fail=1; }

@@ -4,6 +4,9 @@
 #                            omnirange-tuner ARGS (from $apps),
 #                            its output into LOG; sets $win (its window), $tuner, $xvfb
 #   count_colour SHOT COLOUR pixels of exactly COLOUR in the image SHOT
+#   factory_work             an empty $work with f.hist trained on the factory sample and
+#                            user.ini, a copy of ini/factory.ini beside its base
+#   check DESCRIPTION CMD... runs CMD and says ok or FAIL (FAIL sets $fail to 1)
 
 start_tuner() {
   local log=$1; shift
@@ -21,4 +24,16 @@ start_tuner() {
 
 count_colour() {
   /usr/bin/convert "$1" -fill black +opaque "$2" -fill white -opaque "$2" -format "%[fx:round(mean*w*h)]" info:
+}
+
+factory_work() {
+  rm -rf "$work" && mkdir -p "$work"
+  "$apps/omnirange-train" -q -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -o "$work/f.hist"
+  cp "$src/ini/factory.ini" "$work/user.ini"
+  cp "$src/ini/experiment-base.ini" "$work/"  # user.ini's base
+}
+
+fail=0
+check() {
+  if "${@:2}"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi
 }

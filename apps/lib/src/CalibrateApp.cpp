@@ -154,8 +154,7 @@ MirrorCalibration CalibrateApp::run()
 				"(suggested boundary_offset = %.2f with the ini's mirror%s)\n",
 				c.boundary_px, c.suggested_boundary_offset, c.clamped ? ", clamped to [-1, 1]" : "");
 	constexpr double kDeg = 57.29577951308232;
-	const double fitted_scale = m == MirrorModel::Paraboloid ? c.R : m == MirrorModel::FirstOrder ? c.alpha : c.height.h;
-	const ScaledOrientationFit scaled = fitOrientationAndScale(params, colours, fitted_scale, o_.calibration);
+	const ScaledOrientationFit scaled = fitOrientationAndScale(params, colours, c, o_.calibration);
 	const OrientationFit& f = scaled.fit;
 	orientation_ = f;
 	std::printf("orientation: forward_azimuth_deg = %.0f, mirrored = %s (at %s = %.4g; %d of %d frames agree within "

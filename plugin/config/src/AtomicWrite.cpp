@@ -17,6 +17,13 @@
 
 namespace omnirange
 {
+std::string namingTheOutput(std::string message, const std::string& from, const std::string& to)
+{
+	for (auto at = message.find(from); at != std::string::npos; at = message.find(from, at + to.size()))
+		message.replace(at, from.size(), to);
+	return message;
+}
+
 std::string replacedFileOf(const std::string& given)
 {
 	namespace fs = std::filesystem;
@@ -53,11 +60,8 @@ StagedFile::StagedFile(const std::string& given, const std::function<void(const 
 		std::remove(tmp_.c_str());
 		temporaries::forget(tmp_);
 		// A writer knows only the temporary's name; the user knows the file they asked for.
-		std::string message = e.what();
-		if (message.find(tmp_) == std::string::npos) throw;
-		for (auto at = message.find(tmp_); at != std::string::npos; at = message.find(tmp_, at + given.size()))
-			message.replace(at, tmp_.size(), given);
-		throw std::runtime_error(message);
+		if (std::string(e.what()).find(tmp_) == std::string::npos) throw;
+		throw std::runtime_error(namingTheOutput(e.what(), tmp_, given));
 	}
 	catch (...)
 	{

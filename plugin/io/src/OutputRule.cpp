@@ -361,11 +361,8 @@ void StagedFolder::fill(const std::function<void()>& write) const
 	}
 	catch (const std::exception& e)
 	{
-		std::string message = e.what();
-		if (message.find(staging_) == std::string::npos) throw;
-		for (auto at = message.find(staging_); at != std::string::npos; at = message.find(staging_, at + target_.size()))
-			message.replace(at, staging_.size(), target_);
-		throw std::runtime_error(message);
+		if (std::string(e.what()).find(staging_) == std::string::npos) throw;
+		throw std::runtime_error(namingTheOutput(e.what(), staging_, target_));
 	}
 }
 

@@ -103,7 +103,7 @@ OrientationFit fitOrientation(const Rangefinder& rf, const MirrorCalibrationOpti
 }
 
 ScaledOrientationFit fitOrientationAndScale(const RangefinderParams& params, const ColourModel& colours,
-											double fitted_scale, const MirrorCalibrationOptions& o)
+											const MirrorCalibration& fitted, const MirrorCalibrationOptions& o)
 {
 	const MirrorModel m = params.camera.mirror_model;
 	const std::string key = m == MirrorModel::Paraboloid ? "R" : m == MirrorModel::FirstOrder ? "alpha" : "h";
@@ -113,6 +113,7 @@ ScaledOrientationFit fitOrientationAndScale(const RangefinderParams& params, con
 		return p;
 	};
 	const double given = key == "R" ? params.camera.R : key == "alpha" ? params.camera.alpha : params.camera.h;
+	const double fitted_scale = key == "R" ? fitted.R : key == "alpha" ? fitted.alpha : fitted.height.h;
 	std::vector<double> scales{given};
 	if (std::isfinite(fitted_scale) && fitted_scale > 0) scales.push_back(fitted_scale);
 	for (const double f : {0.6, 0.67, 0.75, 0.83, 0.91, 1.1, 1.2, 1.33, 1.5, 1.67}) scales.push_back(given * f);

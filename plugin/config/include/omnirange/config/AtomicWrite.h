@@ -13,6 +13,10 @@ class Mat;
 
 namespace omnirange
 {
+/** `message` with every `from` (a temporary's or staging folder's path, which
+ * a writer knows) replaced by `to` (the output the user asked for). */
+std::string namingTheOutput(std::string message, const std::string& from, const std::string& to);
+
 /** The file an output named `given` replaces: a link is written through
  * (the file it names is replaced, the link stays). Throws std::runtime_error
  * naming `given` when that file exists and is read-only by its mode bits

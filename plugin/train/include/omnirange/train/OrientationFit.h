@@ -60,11 +60,11 @@ struct ScaledOrientationFit
 };
 
 /** fitOrientation() at the ini's scale, at `fitted_scale` (what the laser
- * fitted with the ini's orientation) and at steps from 0.6 to 1.67 times the
+ * in `fitted` with the ini's orientation) and at steps from 0.6 to 1.67 times the
  * ini's; the least mean error over turn, reversal and scale wins. With the
  * scale and the orientation both wrong, the scale fitted with the wrong
  * orientation is wrong too, and the frames can agree on a wrong turn at it. */
 ScaledOrientationFit fitOrientationAndScale(const RangefinderParams& params, const ColourModel& colours,
-											double fitted_scale, const MirrorCalibrationOptions& options);
+											const MirrorCalibration& fitted, const MirrorCalibrationOptions& options);
 
 }  // namespace omnirange
