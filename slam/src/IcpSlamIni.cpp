@@ -9,8 +9,6 @@
 #include <omnirange/config/OptionsTable.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cctype>
 #include <map>
 #include <filesystem>
 #include <stdexcept>
@@ -48,22 +46,9 @@ std::vector<std::string> icpKeysMrptIgnores(const std::string& file, const std::
 
 namespace
 {
-/** [-] The largest ICP value taken: past it MRPT's squared distances
- * overflow and matching runs without end (thresholdDist = 1e200). */
-constexpr double kMaxIcpValue = 1e4;
-
-/** A number of the kind of MRPT's default `model`: a count is a whole
- * number, a value that defaults to >= 0 stays so, and neither is huge;
- * and the ranges MRPT asserts at run time, checked here with the key named. */
-void requireLikeMrptsDefault(const std::string& key, const std::string& model, double v)
-{
-	if (key == "alfa" && !(v >= 0 && v < 1)) throw std::invalid_argument("must be within [0, 1)");
-	if (key == "corresponding_points_decimation" && !(v >= 1)) throw std::invalid_argument("must be >= 1");
-	const bool count = model.find_first_of(".eE") == std::string::npos;
-	if (count && v != std::floor(v)) throw std::invalid_argument("not a whole number");
-	if (model[0] != '-' && v < 0) throw std::invalid_argument("must be >= 0");
-	if (std::abs(v) > kMaxIcpValue) throw std::invalid_argument("must be within [-1e4, 1e4]");
-}
+/** ICP's values: past 1e4 MRPT's squared distances overflow and matching
+ * runs without end (thresholdDist = 1e200). */
+constexpr MrptValueBounds kIcpValueBounds{1e4, true};
 
 /** The keys MRPT 2.5.8 reads from icp-slam's [MappingApplication]: the app's
  * own (libs/apps/src/ICP_SLAM_App.cpp), the map builder's
@@ -128,11 +113,7 @@ void requireStrictIcpSection(const std::string& file, const std::string& section
 			const std::string value = readRawValue(ini, section, key);
 			try
 			{
-				if (model == "true" || model == "false") parseBool(value);
-				else if (!model.empty() && (std::isdigit(static_cast<unsigned char>(model[0])) || model[0] == '-' || model[0] == '.'))
-					requireLikeMrptsDefault(as_written, model, parseDouble(value));
-				else if (value.empty() || value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789") != std::string::npos)
-					throw std::invalid_argument("not a name like '" + model + "'");
+				requireLikeMrptsDefault(as_written, model, value, kIcpValueBounds);
 			}
 			catch (const std::invalid_argument& e)
 			{

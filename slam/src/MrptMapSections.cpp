@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -57,10 +58,48 @@ std::vector<std::string> knownEnum(const std::string& lower_key)
 	return {};
 }
 
-/** The value checked against the kind of MRPT's default. */
-void requireLikeDefault(const std::string& key, const std::string& model, const std::string& value)
+/** A key's own range, where MRPT asserts one at run time or past which a
+ * grid or a filter outgrows the memory before the program says a word. */
+struct KeyRange
+{
+	const char* key;  // lower case
+	double lo, hi;
+	bool lo_open, hi_open;
+	const char* says;
+};
+constexpr double kNoEnd = std::numeric_limits<double>::infinity();
+constexpr KeyRange kKeyRanges[] = {
+	{"alfa", 0, 1, false, true, "must be within [0, 1)"},
+	{"corresponding_points_decimation", 1, kNoEnd, false, false, "must be >= 1"},
+	{"resolution", 0.005, 10, false, false, "must be within [0.005, 10] m"},
+	{"min_x", -1000, 1000, false, false, "must be within [-1000, 1000] m"},
+	{"max_x", -1000, 1000, false, false, "must be within [-1000, 1000] m"},
+	{"min_y", -1000, 1000, false, false, "must be within [-1000, 1000] m"},
+	{"max_y", -1000, 1000, false, false, "must be within [-1000, 1000] m"},
+	{"samplesize", 1, 1e4, false, false, "must be within [1, 10000]"},
+	{"kld_minsamplesize", 1, 1e4, false, false, "must be within [1, 10000]"},
+	{"kld_maxsamplesize", 1, 1e5, false, false, "must be within [1, 100000]"},
+	{"kld_binsize_xy", 0, kNoEnd, true, false, "must be > 0"},
+	{"kld_binsize_phi", 0, kNoEnd, true, false, "must be > 0"},
+	{"maxoccupancyupdatecertainty", 0.5, 1, false, true, "must be within [0.5, 1)"},
+};
+
+/** A map count (NAME_count): MRPT makes that many maps' options. */
+bool isMapCount(const std::string& lower_key)
+{
+	return lower_key.size() > 6 && lower_key.compare(lower_key.size() - 6, 6, "_count") == 0;
+}
+}  // namespace
+
+void requireLikeMrptsDefault(const std::string& key, const std::string& model, const std::string& value,
+							 const MrptValueBounds& bounds)
 {
 	const std::string k = lowercase(key);
+	if (model == "true" || model == "false")
+	{
+		parseBool(value);
+		return;
+	}
 	const bool numeric = !model.empty() && (std::isdigit(static_cast<unsigned char>(model[0])) || model[0] == '-' ||
 											 model[0] == '+' || model[0] == '.');
 	if (!numeric)  // an enum: its name, or (as MRPT's read_enum takes it) its number
@@ -80,7 +119,7 @@ void requireLikeDefault(const std::string& key, const std::string& model, const 
 		return;
 	}
 	double v = 0;
-	if (model == "0" || model == "1")  // a bool, or an int of 0 or 1
+	if (model == "0" || model == "1")  // a bool as MRPT writes it ("%i"), or an int of 0 or 1
 		try
 		{
 			parseBool(value);
@@ -99,25 +138,22 @@ void requireLikeDefault(const std::string& key, const std::string& model, const 
 		}
 	else
 		v = parseDouble(value);
-	const bool whole = model.find_first_of(".eE") == std::string::npos;
-	if (whole && v != std::floor(v)) throw std::invalid_argument("not a whole number");
-	if (k.size() > 6 && k.compare(k.size() - 6, 6, "_count") == 0 && !(v >= 0 && v <= 16))
-		throw std::invalid_argument("must be within [0, 16]");
-	// Past these, a grid or a filter outgrows the memory before the program says a word.
-	if (k == "resolution" && !(v >= 0.005 && v <= 10)) throw std::invalid_argument("must be within [0.005, 10] m");
-	if ((k == "min_x" || k == "max_x" || k == "min_y" || k == "max_y") && !(std::abs(v) <= 1000))
-		throw std::invalid_argument("must be within [-1000, 1000] m");
-	if ((k == "samplesize" || k == "kld_minsamplesize") && !(v >= 1 && v <= 10000))
-		throw std::invalid_argument("must be within [1, 10000]");
-	if (k == "kld_maxsamplesize" && !(v >= 1 && v <= 100000)) throw std::invalid_argument("must be within [1, 100000]");
-	if ((k == "kld_binsize_xy" || k == "kld_binsize_phi") && !(v > 0)) throw std::invalid_argument("must be > 0");
-	if (k == "maxoccupancyupdatecertainty" && !(v >= 0.5 && v < 1)) throw std::invalid_argument("must be within [0.5, 1)");
-	if (std::abs(v) > 1e6) throw std::invalid_argument("must be within [-1e6, 1e6]");
+	if (model.find_first_of(".eE") == std::string::npos && v != std::floor(v))
+		throw std::invalid_argument("not a whole number");
+	for (const auto& r : kKeyRanges)
+		if (k == r.key && !((r.lo_open ? v > r.lo : v >= r.lo) && (r.hi_open ? v < r.hi : v <= r.hi)))
+			throw std::invalid_argument(r.says);
+	if (isMapCount(k) && !(v >= 0 && v <= 16)) throw std::invalid_argument("must be within [0, 16]");
+	if (bounds.keep_sign && model[0] != '-' && v < 0) throw std::invalid_argument("must be >= 0");
+	parseWithin(value, bounds.largest);
 }
-}  // namespace
 
 namespace
 {
+/** Map and filter values: no sign rule (an extent may lie anywhere), and no
+ * value past a million of anything. */
+constexpr MrptValueBounds kMapValueBounds{1e6, false};
+
 /** [cells] The largest grid a map section may make: 10^8 cells, 10 km by 10 km
  * at 1 m or 500 m square at 5 cm, are a couple of hundred megabytes already. */
 constexpr double kMaxGridCells = 1e8;
@@ -147,11 +183,11 @@ void requireGridSize(const mrpt::config::CConfigFile& ini, const std::string& se
 									" million cells, more than 100 million: make the resolution coarser or the extent smaller");
 }
 
-/** Every section of `file` that `inScope` takes is one MRPT read from
+/** Every section of `ini` that `inScope` takes is one MRPT read from
  * `recording` (or [MappingApplication], whose keys MRPT did not read are the
  * program's own: checked by `programKey`), each key one it read, each value
  * of its default's kind. */
-void requireRecorded(const std::string& file, const mrpt::config::CConfigFile& ini, RecordingConfig& recording,
+void requireRecorded(const mrpt::config::CConfigFile& ini, RecordingConfig& recording,
 					 const std::function<bool(const std::string&)>& inScope,
 					 const std::function<void(const std::string&)>& programKey)
 {
@@ -183,7 +219,7 @@ void requireRecorded(const std::string& file, const mrpt::config::CConfigFile& i
 			const std::string value = trimmed(ini.read_string(s, key, ""));
 			try
 			{
-				requireLikeDefault(key, model->second, value);
+				requireLikeMrptsDefault(key, model->second, value, kMapValueBounds);
 			}
 			catch (const std::invalid_argument& e)
 			{
@@ -201,10 +237,10 @@ void requireMapCounts(const mrpt::config::CConfigFile& ini, const std::string& s
 	std::vector<std::string> keys;
 	ini.getAllKeys(section, keys);
 	for (const auto& key : keys)
-		if (const std::string k = lowercase(key); k.size() > 6 && k.compare(k.size() - 6, 6, "_count") == 0)
+		if (isMapCount(lowercase(key)))
 			try
 			{
-				requireLikeDefault(key, "0", trimmed(ini.read_string(section, key, "")));
+				requireLikeMrptsDefault(key, "0", trimmed(ini.read_string(section, key, "")), kMapValueBounds);
 			}
 			catch (const std::invalid_argument& e)
 			{
@@ -249,7 +285,7 @@ void requireStrictMapSections(const std::string& file, const std::string& prefix
 		maps.loadFromConfigFile(recording, prefix);
 		const std::string p = lowercase(prefix);
 		requireRecorded(
-			file, ini, recording, [&](const std::string& s) { return s == p || s.rfind(p + "_", 0) == 0; },
+			ini, recording, [&](const std::string& s) { return s == p || s.rfind(p + "_", 0) == 0; },
 			[](const std::string&) {});  // the program's own keys: its caller checks them
 	});
 }
@@ -261,7 +297,7 @@ void requireStrictObservationsToMapIni(const std::string& file)
 		RecordingConfig recording(ini);
 		mrpt::maps::TSetOfMetricMapInitializers maps;
 		maps.loadFromConfigFile(recording, "MappingApplication");
-		requireRecorded(file, ini, recording, [](const std::string&) { return true; },
+		requireRecorded(ini, recording, [](const std::string&) { return true; },
 						oneOf({}, "observations2map"));
 	});
 }
@@ -274,7 +310,7 @@ void requireStrictRbpfIni(const std::string& file)
 		mrpt::slam::CMetricMapBuilderRBPF::TConstructionOptions options;
 		options.loadFromConfigFile(recording, "MappingApplication");
 		// rbpf-slam's own keys (MRPT 2.5.8, apps/src/RBPF_SLAM_App.cpp).
-		requireRecorded(file, ini, recording, [](const std::string&) { return true; },
+		requireRecorded(ini, recording, [](const std::string&) { return true; },
 						oneOf({"rawlog_offset", "logOutput_dir", "LOG_FREQUENCY", "GENERATE_LOG_JOINT_H",
 							   "GENERATE_LOG_INFO", "SAVE_MAP_IMAGES", "SAVE_3D_SCENE", "SAVE_POSE_LOG",
 							   "SAVE_ENOSE_READINGS", "CAMERA_3DSCENE_FOLLOWS_ROBOT", "SHOW_PROGRESS_IN_WINDOW",

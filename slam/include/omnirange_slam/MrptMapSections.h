@@ -10,6 +10,22 @@
 
 namespace omnirange::slam
 {
+/** What any value MRPT reads may be beyond its default's kind. */
+struct MrptValueBounds
+{
+	double largest;  ///< |value| at most this
+	bool keep_sign;  ///< a key whose default is >= 0 takes no negative value
+};
+
+/** Throws std::invalid_argument (the reason only; the caller names file,
+ * section and key) unless `value` is of the kind of MRPT's default `model`
+ * for `key`, as MRPT wrote or read it: true/false or 0/1 for a bool, a whole
+ * number for an int, a number without unit or decimal comma, an enum's name
+ * or number, a plain name; and within the key's own range where MRPT asserts
+ * one or memory sets one (resolution, extents, sample sizes, alfa, ...). */
+void requireLikeMrptsDefault(const std::string& key, const std::string& model, const std::string& value,
+							 const MrptValueBounds& bounds);
+
 /** Throws std::runtime_error naming the file, section and key when a section
  * `prefix`_KIND_NN_OPTS is one MRPT would not read (misspelt, or past the
  * map's count), a key in it is not one MRPT reads, or a value is not of the
