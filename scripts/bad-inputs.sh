@@ -254,6 +254,10 @@ run_case "calibrate: a PGM of 12000 x 10000 px" "error:more than 100 megapixels"
 run_case "accuracy: -o . (a folder, not a prefix)" "error:is a folder" none.out -- "$apps/omnirange-accuracy" -q -i s.rawlog -o .
 printf '100.0, 1e300, 0, 0\n100.4, 1, 0, 0\n' > imp_odo_far.csv
 run_case "import: odometry at x = 1e300" "error:odometry at time" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry imp_odo_far.csv -o imp.rawlog
+printf '100.0, 0, 0, 0\n100.1, 100, 0, 0\n100.2, 200, 0, 0\n100.4, 400, 0, 0\n' > imp_odo_mm.csv
+run_case "import: odometry in millimetres (1000 m/s)" "error:x and y in millimetres" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry imp_odo_mm.csv -o imp.rawlog
+printf '100.0, 0, 0, 0\n100.1, 0, 0, 45\n100.2, 0, 0, 90\n100.4, 0, 0, 180\n' > imp_odo_deg.csv
+run_case "import: odometry heading in degrees" "error:the heading in degrees" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry imp_odo_deg.csv -o imp.rawlog
 printf '100.0, 0x10, 2, 3\n100.4, 1, 2, 3\n' > imp_hexrange.csv
 run_case "import: a laser range written 0x10" "error:hexadecimal" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_hexrange.csv -o imp.rawlog
 { printf 'P5\n640 480\n255\n'; head -c 5000 /dev/zero; } > cut.pgm
@@ -311,11 +315,17 @@ printf 'not a CARMEN log\n' > notcarmen.log
 run_case "import: --carmen with no CARMEN message" "error:no CARMEN" imp4.rawlog -- "$apps/omnirange-import" -q --images imp --carmen notcarmen.log -o imp4.rawlog
 mkfifo fill.fifo
 run_case "summary: --fill a FIFO" "error:not a regular file" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill fill.fifo
+# Sparse files: large to a reader, nothing on the disk.
+cp floor.hist big.hist && truncate -s 1G big.hist
+run_case "scan: -H a 1 GB file that begins as a histogram" "error:more than the" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H big.hist -o none.out
+truncate -s 1G big.md
+run_case "summary: --fill a 1 GB file" "error:more than a page of tables" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill big.md
 printf '# my notes\n' > notable.md
 run_case "summary: --fill a file with no table block" "error:no table block" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill notable.md
 mkdir -p figs
 run_case "summary: -o a folder (hidden files)" "error:is a folder" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" -s "$src/ini/suite.txt" -o figs/
 run_case "train: --figures a folder (hidden files)" "error:is a folder" t4.hist -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o t4.hist --figures figs/
+run_case "calibrate: -i with --rim (it would be ignored)" "error:read by the calibration against a laser only" none.out -- "$apps/omnirange-calibrate" -q --rim "s_Images/$(ls s_Images | head -1)" -i s.rawlog
 run_case "calibrate: -o with --rim (it would be ignored)" "error:checkerboard calibration only" rim.yaml -- "$apps/omnirange-calibrate" -q --rim "s_Images/$(ls s_Images | head -1)" -o rim.yaml
 echo mine > users_pairs.csv && echo mine > notes.md && printf '; mine\n[rangefinder]\nN = 10\n' > hand.ini && cp hand.ini hand.ini.orig
 run_case "accuracy: -o onto a user's CSV of that name" "error:not what omnirange-accuracy writes" none.out -- "$apps/omnirange-accuracy" -q -i s.rawlog -o users

@@ -663,23 +663,22 @@ void TunerFrame::train()
 {
 	const std::string out = std::filesystem::path(save_to_).replace_extension(".hist").string();
 	const bool exists = std::filesystem::exists(out);
-	try  // an input is never replaced: say so before asking whether to replace it
+	try  // only a colour model is replaced, never an input or another file: said before asking
 	{
-		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner", {s_.options().rawlog, s_.options().ini}, true);
+		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner", {s_.options().rawlog, s_.options().ini}, false);
 	}
 	catch (const std::exception& e)
 	{
 		return status(wxString::FromUTF8(omnirange::app::errorText(e)), Say::Error);
 	}
-	if (exists && wxMessageDialog(this, out + " exists. Train a new histogram and replace it?",
+	if (exists && wxMessageDialog(this, out + " is a colour model already. Train a new one and replace it?",
 								  "omnirange-tuner: replace the histogram?", wxYES_NO | wxNO_DEFAULT | wxICON_WARNING)
 						  .ShowModal() != wxID_YES)
 		return status("not trained: " + out + " kept");
 	try
 	{
-		// Never over an input, even when the user said yes.
-		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner", {s_.options().rawlog, s_.options().ini},
-							 exists);
+		// Checked again: the file may have changed while the question was open.
+		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner", {s_.options().rawlog, s_.options().ini}, false);
 		wxProgressDialog dialog("omnirange-tuner", "training the floor's colours on this rawlog", 100, this,
 								wxPD_APP_MODAL | wxPD_AUTO_HIDE);
 		const auto r = s_.train(out, {}, [&](std::size_t objects) {

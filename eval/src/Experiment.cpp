@@ -136,6 +136,15 @@ Metrics Experiment::runStages()
 	MRPT_LOG_INFO_STREAM("experiment " << c_.name << " from " << c_.ini_file
 									   << "; rangefinder, unlike the defaults: " << c_.rangefinder.changes());
 	MRPT_LOG_DEBUG_STREAM("every rangefinder option:\n" << c_.rangefinder.asIni());
+	// The robot's camera makes the images, [rangefinder]'s reads them: another mirror, scale or
+	// centre (a --robot of another camera) reads every ray wrong, which the report must not blame on colour.
+	const CameraParams made_by = sim::RobotParams::loadFile(c_.robot).omnicam.camera;
+	for (const auto& f : CameraParams::table().fields())
+		if (f.print(made_by) != f.print(c_.rangefinder.camera)) r_.camera_mismatch.push_back(f.info.key);
+	if (!r_.camera_mismatch.empty())
+		MRPT_LOG_WARN_STREAM("the robot's camera (" << c_.robot << ") is not [rangefinder]'s camera: they differ in "
+													<< joined(r_.camera_mismatch)
+													<< ": the images are read as another camera's, and every range with them");
 	fs::create_directories(out_ + "/dataset");
 	stage_ = 0;
 	const bool rbpf = std::any_of(r_.sensors.begin(), r_.sensors.end(), [](const auto& s) { return !s.rbpf_ini.empty(); });

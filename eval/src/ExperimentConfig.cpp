@@ -115,9 +115,9 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 	if (!fs::is_regular_file(ini)) throw std::runtime_error("cannot open experiment ini '" + ini + "'");
 	ExperimentConfig c;
 	c.ini_file = ini;
+	const LayeredIni layers = readLayeredIni(ini);
 	try
 	{
-		const LayeredIni layers = readLayeredIni(ini);
 		const auto& cfg = *layers.merged;
 		table().load(c, cfg, "experiment");
 		resolvePaths(c, layers);
@@ -132,7 +132,7 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 	}
 	catch (const std::invalid_argument& e)
 	{
-		throw std::runtime_error(ini + ": " + e.what());
+		throw std::runtime_error(namingItsFile(layers, ini, e));
 	}
 	return c;
 }

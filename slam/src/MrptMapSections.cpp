@@ -2,6 +2,7 @@
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
+#include <mrpt/slam/CMetricMapBuilderICP.h>
 #include <mrpt/slam/CMetricMapBuilderRBPF.h>
 
 #include <omnirange/config/OptionsTable.h>
@@ -82,6 +83,8 @@ constexpr KeyRange kKeyRanges[] = {
 	{"kld_binsize_xy", 0, kNoEnd, true, false, "must be > 0"},
 	{"kld_binsize_phi", 0, kNoEnd, true, false, "must be > 0"},
 	{"maxoccupancyupdatecertainty", 0.5, 1, false, true, "must be within [0.5, 1)"},
+	{"maxdistanceinsertion", 0, kNoEnd, true, false, "must be > 0 m (a map that takes no point is empty)"},
+	{"minicpgoodnesstoaccept", 0, 1, false, false, "must be within [0, 1]"},
 };
 
 /** A map count (NAME_count): MRPT makes that many maps' options. */
@@ -109,9 +112,7 @@ void requireLikeMrptsDefault(const std::string& key, const std::string& model, c
 		{
 			for (std::size_t i = 0; i < names.size(); ++i)
 				if (value == names[i] || value == std::to_string(i)) return;
-			std::string all;
-			for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-			throw std::invalid_argument("must be one of " + all + " (or its number, from 0)");
+			throw std::invalid_argument("must be one of " + joined(names) + " (or its number, from 0)");
 		}
 		if (value.empty() || value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789") !=
 								 std::string::npos)
@@ -283,6 +284,9 @@ void requireStrictMapSections(const std::string& file, const std::string& prefix
 		RecordingConfig recording(ini);
 		mrpt::maps::TSetOfMetricMapInitializers maps;
 		maps.loadFromConfigFile(recording, prefix);
+		// icp-slam's map builder reads its own keys there too (minICPgoodnessToAccept, ...): their values are checked alike.
+		mrpt::system::VerbosityLevel level = mrpt::system::LVL_INFO;
+		mrpt::slam::CMetricMapBuilderICP::TConfigParams(level).loadFromConfigFile(recording, prefix);
 		const std::string p = lowercase(prefix);
 		requireRecorded(
 			ini, recording, [&](const std::string& s) { return s == p || s.rfind(p + "_", 0) == 0; },

@@ -688,6 +688,41 @@ TEST(AppClasses, OpenCVsAndMRPTsErrorsAreOneLineWithoutPathsOrCallStacks)
 	EXPECT_EQ(errorText(std::runtime_error("two\nlines")), "two lines");
 }
 
+TEST(AppClasses, ARimCentreIsSavedOnlyForACameraOfTheImagesSize)
+{
+	const std::string dir = workDir("rim_size");
+	// A mirror disc whose brightness falls towards its centre, as a scene in a mirror does.
+	cv::Mat img(480, 640, CV_8UC1, cv::Scalar(10)), noise(480, 640, CV_8UC1);
+	for (int r = 180; r > 0; r -= 4) cv::circle(img, {330, 236}, r, cv::Scalar(60 + 170 * r / 180), -1);
+	cv::randu(noise, 0, 20);
+	img += noise;
+	cv::imwrite(dir + "/rim.png", img);
+	CalibrateApp::Options o;
+	o.rim_images = {dir + "/rim.png"};
+	o.save_to = dir + "/my.ini";
+	const std::string other_camera = "[rangefinder]\nimage_width = 1024\nimage_height = 768\n";
+	std::ofstream(o.save_to) << other_camera;
+	try
+	{
+		CalibrateApp(o).runRim();
+		ADD_FAILURE() << "a centre was saved for another camera";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("the images are 640x480 but the ini's camera is 1024x768"), std::string::npos)
+			<< e.what();
+	}
+	EXPECT_EQ(readText(o.save_to), other_camera);
+	// Of the images' size (or with --accept): the size is saved with the centre.
+	std::ofstream(o.save_to) << "[rangefinder]\nimage_width = 640\nimage_height = 480\n";
+	const MirrorRim rim = CalibrateApp(o).runRim();
+	EXPECT_NEAR(rim.cx, 330, 2);
+	EXPECT_NEAR(rim.cy, 236, 2);
+	const RangefinderParams saved = RangefinderParams::loadFromFile(o.save_to, "rangefinder");
+	EXPECT_EQ(saved.camera.image_width, 640);
+	EXPECT_NEAR(saved.camera.cx, rim.cx, 0.06);
+}
+
 TEST(AppClasses, ARimDiscPastTheImageOrFarFromRoundIsRefusedUnlessAccepted)
 {
 	// A bright ellipse on a dark image, its right side cut by the image's edge.

@@ -5,7 +5,8 @@
 #  - a corrupt frame shows a placeholder with the reason, not another frame;
 #  - a value typed but not committed is what Save writes; a refused value is
 #    said and not saved, committed with Enter too (not clamped into range);
-#  - Train asks before it replaces a histogram (and keeps it on "no");
+#  - Train refuses to write over a file that is not a colour model, and asks
+#    before it replaces one (and keeps it on "no");
 #  - unsaved changes mark the title and closing asks: Cancel keeps the
 #    window, Save writes and closes.
 #   tuner_care_test.sh SOURCE_DIR APPS_DIR WORK_DIR
@@ -71,10 +72,15 @@ check "a value out of range committed with Enter is refused, not clamped" grep -
 check "the clamped value is not saved" [ "$(saved_threshold)" = "0.2" ]
 
 key ctrl+h
+check "Train does not offer to replace a file that is not a colour model" [ -z "$(timeout 3 xdotool search --onlyvisible --name "replace the histogram" | head -1 || true)" ]
+check "Train refuses it and says why" grep -q "user.hist' exists and is not a colour model" "$work/tuner.log"
+check "the file is kept" grep -qx "precious" "$work/user.hist"
+cp "$work/f.hist" "$work/user.hist"
+key ctrl+h
 train_dialog=$(dialog "replace the histogram")
 check "Train asks before replacing a histogram" [ -n "$train_dialog" ]
 [ -n "$train_dialog" ] && press "$train_dialog" Escape
-check "'no' keeps the histogram" grep -qx "precious" "$work/user.hist"
+check "'no' keeps the histogram" cmp -s "$work/f.hist" "$work/user.hist"
 check "'no' is said" grep -q "not trained: .*user.hist kept" "$work/tuner.log"
 
 key bracketright  # threshold 0.2 -> 0.4, not saved

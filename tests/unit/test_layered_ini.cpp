@@ -1,6 +1,7 @@
 // An ini over a base: the file's keys replace the base's, bases chain, and a
 // missing base or a cycle is an error that names the file.
 #include <omnirange/config/LayeredIni.h>
+#include <omnirange/core/Rangefinder.h>
 
 #include <gtest/gtest.h>
 
@@ -77,6 +78,31 @@ TEST(LayeredIni, AMissingBaseACycleAndARepeatedKeyAreErrorsNamingTheFile)
 	fails(write(d, "over-twice.ini", "base = twice.ini\n[s]\n"), "twice.ini:3");
 	fails(write(d, "empty-base.ini", "base =\n[s]\n"), "names no file");
 	fails(d + "/absent.ini", "absent.ini");
+}
+
+TEST(LayeredIni, AnErrorInABaseNamesTheBaseNotTheFileRead)
+{
+	const std::string d = dir("base_error");
+	const auto refusal = [](const std::string& path) {
+		try
+		{
+			RangefinderParams::loadFromFile(path, "rangefinder");
+		}
+		catch (const std::runtime_error& e)
+		{
+			return std::string(e.what());
+		}
+		return std::string("read");
+	};
+	write(d, "bad-value.ini", "[rangefinder]\nthreshold = 2\n");
+	const std::string bad = refusal(write(d, "mine.ini", "base = bad-value.ini\n[rangefinder]\nN = 20\n"));
+	EXPECT_EQ(bad.rfind(fs::absolute(d + "/bad-value.ini").string() + ": [rangefinder] threshold = '2'", 0), 0u) << bad;
+	write(d, "misspelt.ini", "[rangefinder]\nthreshod = 0.1\n");
+	const std::string misspelt = refusal(write(d, "mine2.ini", "base = misspelt.ini\n[rangefinder]\nN = 20\n"));
+	EXPECT_NE(misspelt.find("misspelt.ini: unknown key 'threshod'"), std::string::npos) << misspelt;
+	// The file's own key: the file is named.
+	const std::string own = refusal(write(d, "own.ini", "base = mine.ini\n[rangefinder]\nthreshold = 3\n"));
+	EXPECT_NE(own.find("own.ini: [rangefinder] threshold = '3'"), std::string::npos) << own;
 }
 
 TEST(LayeredIni, ABaseKeyInsideASectionIsAnOrdinaryKey)

@@ -14,6 +14,7 @@
 #include <opencv2/core.hpp>
 
 #include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -197,8 +198,21 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	EXPECT_THROW(replaceFolder(d + "/report", d + "/nothing"), std::runtime_error);
 	EXPECT_EQ(read(d + "/report/new.md"), "new");
 
-	// A run killed between its two renames: the old copy aside, no output. Process 999999 is not running.
+	// A user's backups named as an old copy would be: a copy of the report (its marker too, but no
+	// run moved it aside), and the report itself moved aside by hand. Neither is removed or put back.
 	markOutputFolder(d + "/report", "omnirange-test");
+	fs::copy(d + "/report", d + "/report.old-2024", fs::copy_options::recursive);
+	fs::rename(d + "/report", d + "/report.old-1999");
+	recoverLeftoversOf(d + "/report", OutputKind::Folder, "omnirange-test");
+	EXPECT_FALSE(fs::exists(d + "/report"));
+	EXPECT_EQ(read(d + "/report.old-2024/new.md"), "new");
+	EXPECT_EQ(read(d + "/report.old-1999/new.md"), "new");
+	fs::rename(d + "/report.old-1999", d + "/report");
+	fs::remove_all(d + "/report.old-2024");
+
+	// A run killed between its two renames: the old copy aside, no output. Process 999999 is not running;
+	// it noted in the marker that it moved the folder aside, as moveAside() does.
+	write(d + "/report/" + kOutputMarker, "omnirange-test\naside 999999\n");
 	fs::rename(d + "/report", d + "/report.old-999999");
 	fs::create_directory(d + "/report.staging-999998");
 	markOutputFolder(d + "/report.staging-999998", "omnirange-test");
@@ -215,7 +229,7 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	EXPECT_TRUE(fs::exists(d + "/report.old-999995"));
 	// A listed leftover of ours that a user has added a file to since: theirs now, kept whole.
 	fs::create_directory(d + "/report.old-999990");
-	markOutputFolder(d + "/report.old-999990", "omnirange-test");
+	write(d + "/report.old-999990/" + kOutputMarker, "omnirange-test\naside 999990\n");
 	write(d + "/report.old-999990/map.png", "ours");
 	listOutputFolder(d + "/report.old-999990");
 	write(d + "/report.old-999990/notes.txt", "a user's notes");
@@ -299,6 +313,28 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 	writeOne(false);  // now ours: replaced again without asking
 	EXPECT_TRUE(fs::exists(d + "/log.rawlog"));
 	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 2);  // no .old or .tmp left
+
+	// log.rawlog.gz would read the same log_Images: while log.rawlog is there, its images are not taken over.
+	const auto writeGz = [&] {
+		RawlogWriter w(d + "/log.rawlog.gz", "omnirange-test");
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(9, 9, 9)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit();
+	};
+	try
+	{
+		requireRawlogOutputAllowed(d + "/log.rawlog.gz", "omnirange-test", {}, false);
+		ADD_FAILURE() << "another rawlog's images were to be replaced";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("holds the images of '" + d + "/log.rawlog'"), std::string::npos) << e.what();
+	}
+	EXPECT_THROW(writeGz(), std::runtime_error);
+	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0), cv::Vec3b(1, 2, 3));
+	fs::remove(d + "/log.rawlog");  // with their rawlog gone, the images are the new one's to replace
+	writeGz();
+	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0), cv::Vec3b(9, 9, 9));
 }
 
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)

@@ -108,8 +108,11 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	if (std::sscanf(board.getValue().c_str(), "%dx%d%n", &o.board.columns, &o.board.rows, &used) != 2 ||
 		used != static_cast<int>(board.getValue().size()))
 		throw std::invalid_argument("--board must be COLUMNSxROWS, e.g. 8x6, not '" + board.getValue() + "'");
-	if (o.checkerboards.empty() && o.rim_images.empty() && o.ocamcalib.empty() &&
-		(o.ini.empty() || o.histogram.empty() || c.input.empty()))
+	const bool without_laser = !o.checkerboards.empty() || !o.rim_images.empty() || !o.ocamcalib.empty();
+	if (without_laser && (!c.input.empty() || !o.histogram.empty()))
+		throw std::invalid_argument("-i and -H are read by the calibration against a laser only, which --rim, "
+									"--checkerboard and --ocamcalib do not run: run it on its own");
+	if (!without_laser && (o.ini.empty() || o.histogram.empty() || c.input.empty()))
 		throw std::invalid_argument("against a laser, -i RAWLOG, -c INI and -H HISTOGRAM are all needed (or --checkerboard IMAGE..., --rim IMAGE... or --ocamcalib FILE)");
 	return o;
 }
@@ -303,13 +306,21 @@ MirrorRim CalibrateApp::runRim()
 				doubts.push_back("the disc's centre is " + formatDouble(std::round(off)) + " px from the calibrated centre (" +
 								 formatDouble(cam->cx) + ", " + formatDouble(cam->cy) + ") of the ini" +
 								 ": the rim is not the mirror's, or the camera moved since it was calibrated");
+	// The centre is a pixel of images this size: another camera's size would place it elsewhere.
+	if (const auto cam = calibratedCamera(); cam && (cam->image_width != rim.image_width || cam->image_height != rim.image_height))
+		doubts.push_back("the images are " + std::to_string(rim.image_width) + "x" + std::to_string(rim.image_height) +
+						 " but the ini's camera is " + std::to_string(cam->image_width) + "x" +
+						 std::to_string(cam->image_height) + " (image_width, image_height): the centre would be written "
+						 "for another camera");
 	requireSure(doubts);
 	if (!o_.save_to.empty())
 	{
 		writeIniSection(o_.save_to, o_.section,
-						{{"cx", formatDouble(std::round(rim.cx * 10) / 10)}, {"cy", formatDouble(std::round(rim.cy * 10) / 10)}},
+						{{"image_width", std::to_string(rim.image_width)},
+						 {"image_height", std::to_string(rim.image_height)},
+						 {"cx", formatDouble(std::round(rim.cx * 10) / 10)}, {"cy", formatDouble(std::round(rim.cy * 10) / 10)}},
 						RangefinderParams::table().comments());
-		std::printf("wrote cx, cy into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
+		std::printf("wrote image_width, image_height, cx, cy into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
 	}
 	return rim;
 }

@@ -135,6 +135,11 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	// run without a word.
 	std::signal(SIGXFSZ, SIG_IGN);
 	capAddressSpaceAtHalfTheMemory();
+	// However the body ends, the run has ended: an exit() after it is no library's doing.
+	struct Ended
+	{
+		~Ended() { temporaries::setActivity(""); }
+	} ended;
 	try
 	{
 		body();

@@ -53,8 +53,10 @@ ScanApp::ScanApp(Options o) : mrpt::system::COutputLogger("omnirange-scan"), o_(
 
 RawlogScanSummary ScanApp::run()
 {
-	// The rawlog input scanRawlog checks itself; these are the app's own inputs.
-	requireRawlogOutputAllowed(o_.scan.output, kScanProgram, {o_.ini, o_.histogram}, o_.scan.force);
+	// The rawlog too (scanRawlog checks it again): an output that is the input is called that,
+	// before its images folder is judged as an output's.
+	requireRawlogOutputAllowed(o_.scan.output, kScanProgram,
+							   {o_.ini, o_.histogram, o_.scan.input, imagesDirToRead(o_.scan.input)}, o_.scan.force);
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	const Rangefinder rf(params, ColourModel::load(o_.histogram));
 	if (rf.compensationMissing())

@@ -72,6 +72,11 @@ SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summa
 void SummaryApp::fillOrCheck(const std::string& file, const std::string& csv)
 {
 	requireRegularFile(file, "file to fill");
+	// A Markdown page of tables, not a disk image: refused before it is read into memory.
+	constexpr std::uintmax_t kLargestPage = 64u << 20;
+	if (const std::uintmax_t size = std::filesystem::file_size(file); size > kLargestPage)
+		throw std::runtime_error("'" + file + "' is " + std::to_string(size >> 20) +
+								 " MB: more than a page of tables (64 MB at most)");
 	std::ifstream in(file);
 	if (!in) throw std::runtime_error("cannot read '" + file + "'");
 	std::ostringstream text;

@@ -47,6 +47,9 @@ struct ExperimentResults
 	int training_pairs{0};
 	int training_until{0};  ///< pairs before this one trained on, the rest scored
 	std::string learned;  ///< what learning chose, for the report (empty: not learned)
+	/** The keys of the robot's camera (what made the images) that [rangefinder]'s
+	 * camera (what reads them) gives otherwise; empty: the two agree. */
+	std::vector<std::string> camera_mismatch;
 	double omni_hit_fraction{0};
 	AccuracyResult accuracy;
 	std::vector<SensorMaps> sensors;  ///< the laser, then the omnicam

@@ -102,4 +102,12 @@ LayeredIni readLayeredIni(const std::string& path)
 	return ini;
 }
 
+std::string namingItsFile(const LayeredIni& ini, const std::string& path, const std::exception& e)
+{
+	std::string file = path;
+	if (const auto* k = dynamic_cast<const KeyError*>(&e))
+		if (const std::string from = ini.originOf(k->section, k->key); !from.empty()) file = from;
+	return file + ": " + e.what();
+}
+
 }  // namespace omnirange

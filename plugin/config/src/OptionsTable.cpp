@@ -16,6 +16,13 @@
 
 namespace omnirange
 {
+std::string joined(const std::vector<std::string>& items)
+{
+	std::string all;
+	for (const auto& item : items) all += (all.empty() ? "" : ", ") + item;
+	return all;
+}
+
 std::string trimmed(const std::string& s)
 {
 	const auto b = s.find_first_not_of(" \t\r\n");
@@ -305,9 +312,9 @@ std::vector<std::string> checkSectionKeys(const mrpt::config::CConfigFileBase& c
 	{
 		for (const auto& [old_key, instead] : renamed)
 			if (same(k, old_key))
-				throw std::invalid_argument("[" + section + "] key '" + k + "' is no longer read: " + instead);
+				throw KeyError("[" + section + "] key '" + k + "' is no longer read: " + instead, section, k);
 		if (std::none_of(known.begin(), known.end(), [&](const std::string& key) { return same(k, key); }))
-			throw std::invalid_argument("unknown key '" + k + "' in section [" + section + "]");
+			throw KeyError("unknown key '" + k + "' in section [" + section + "]", section, k);
 	}
 	return present;
 }

@@ -63,10 +63,13 @@ void atExit()
 	// Another thread may hold the lock while exit() runs: do not wait for it long.
 	std::unique_lock<std::mutex> g(lock(), std::defer_lock);
 	for (int i = 0; i < 100 && !g.try_lock(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-	if (!g.owns_lock() || paths().empty()) return;  // a normal exit: everything was committed or removed
+	// A normal exit: everything was committed or removed, and the app said it was done (runApp()).
+	if (!g.owns_lock() || (paths().empty() && activity().empty())) return;
+	const bool unfinished = !paths().empty();
 	removeAllHeld();
-	std::fprintf(stderr, "%s: error: ended by a library (its message is above) while %s; its unfinished outputs were removed\n",
-				 program().c_str(), activity().empty() ? "running" : activity().c_str());
+	std::fprintf(stderr, "%s: error: ended by a library (its message is above) while %s%s\n", program().c_str(),
+				 activity().empty() ? "running" : activity().c_str(),
+				 unfinished ? "; its unfinished outputs were removed" : "");
 }
 }  // namespace
 

@@ -39,6 +39,17 @@ ColourModel ColourModel::load(const std::string& path)
 	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open histogram file '" + path + "'");
 	std::ifstream f(path, std::ios::binary);
 	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "'");
+	// The header says how big the file can be: two histograms and a reference colour. A larger
+	// file (a 5 GB mistake) is refused before it is read into memory.
+	std::string head(64, '\0');
+	f.read(head.data(), static_cast<std::streamsize>(head.size()));
+	head.resize(static_cast<std::size_t>(f.gcount()));
+	const std::uintmax_t largest = 2 * ColourHistogram::serializedSize(head, path) + 8 + 3 * sizeof(double);
+	if (const std::uintmax_t size = std::filesystem::file_size(path); size > largest)
+		throw std::runtime_error("histogram file '" + path + "': " + std::to_string(size) + " bytes, more than the " +
+								 std::to_string(largest) + " its header allows");
+	f.clear();
+	f.seekg(0);
 	std::ostringstream ss;
 	ss << f.rdbuf();
 	const std::string bytes = ss.str();

@@ -73,13 +73,14 @@ RangefinderParams RangefinderParams::loadFromFile(const std::string& path, const
 	requireRegularFile(path, "ini file");
 	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open ini file '" + path + "'");
 	RangefinderParams p;
+	const LayeredIni ini = readLayeredIni(path);
 	try
 	{
-		p.loadFromConfig(*readLayeredIni(path).merged, section);
+		p.loadFromConfig(*ini.merged, section);
 	}
 	catch (const std::invalid_argument& e)
 	{
-		throw std::runtime_error(path + ": " + e.what());
+		throw std::runtime_error(namingItsFile(ini, path, e));
 	}
 	return p;
 }

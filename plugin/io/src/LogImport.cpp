@@ -225,6 +225,24 @@ UserLogs readUserLogs(const LogImportOptions& o)
 									 formatDouble(p.x) + ", " + formatDouble(p.y) + ", " + formatDouble(p.phi) +
 									 "): farther than " + formatDouble(kMaxOdometryCoordinate) +
 									 " m from its origin, or a heading past 1000 rad");
+	// Over at least 50 ms: a clock's jitter between two close rows is no speed.
+	for (std::size_t i = 1, from = 0; i < u.odometry.size(); ++i)
+	{
+		const OdometryRow &a = u.odometry[from], &b = u.odometry[i];
+		const double dt = b.time - a.time;
+		if (dt < 0) from = i;
+		if (!(dt >= 0.05)) continue;
+		from = i;
+		const double speed = std::hypot(b.x - a.x, b.y - a.y) / dt;
+		const double turn = std::abs(std::remainder(b.phi - a.phi, 2 * M_PI)) / dt;  // a heading may wrap
+		if (speed > kMaxOdometrySpeed || turn > kMaxOdometryTurnRate)
+			throw std::runtime_error("odometry of '" + odometry_file + "' from time " + formatDouble(a.time) + " to " +
+									 formatDouble(b.time) + " moves " + formatDouble(std::round(speed * 100) / 100) +
+									 " m/s and turns " + formatDouble(std::round(turn * 100) / 100) +
+									 " rad/s, past any robot's (" + formatDouble(kMaxOdometrySpeed) + " m/s, " +
+									 formatDouble(std::round(kMaxOdometryTurnRate * 100) / 100) +
+									 " rad/s): x and y in millimetres, or the heading in degrees?");
+	}
 	for (const TimedImage& im : u.images)
 	{
 		const cv::Mat m = decodeImageFile(im.file, o.omni_label);

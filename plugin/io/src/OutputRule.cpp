@@ -276,12 +276,27 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
 }
 
-void replaceFolder(const std::string& target, const std::string& fresh)
+std::string moveAside(const std::string& target)
 {
 	const std::string old = target + ".old-" + std::to_string(::getpid());
 	std::error_code ec;
+	// The proof that TARGET.old-PID is this run's and not a user's backup of that name.
+	if (!fs::is_symlink(target, ec) && fs::exists(fs::path(target) / kOutputMarker, ec))
+	{
+		std::ofstream f(fs::path(target) / kOutputMarker, std::ios::app);
+		f << "aside " << ::getpid() << "\n";
+		if (!f) throw std::runtime_error("cannot write '" + (fs::path(target) / kOutputMarker).string() + "'");
+	}
+	fs::rename(target, old);
+	return old;
+}
+
+void replaceFolder(const std::string& target, const std::string& fresh)
+{
+	std::string old;
+	std::error_code ec;
 	const bool had_old = fs::exists(fs::symlink_status(target, ec));
-	if (had_old) fs::rename(target, old);
+	if (had_old) old = moveAside(target);
 	try
 	{
 		fs::rename(fresh, target);
@@ -322,6 +337,15 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
 			   (fs::file_size(p, ec) == 0 || isOfKind(p.string(), kind));
 	};
+	// An old copy is ours only if the run of its PID moved it aside (moveAside()
+	// noted so in its marker): "NAME.old-2024" may be a user's backup.
+	const auto movedAsideBy = [&](const fs::path& p, const std::string& pid) {
+		if (fs::is_symlink(p, ec) || !fs::is_directory(p, ec) || !marked(p)) return false;
+		std::ifstream f(p / kOutputMarker);
+		for (std::string line; std::getline(f, line);)
+			if (line == "aside " + pid) return true;
+		return false;
+	};
 	for (const auto& e : fs::directory_iterator(dir, ec))
 	{
 		const std::string other = e.path().filename().string();
@@ -332,8 +356,9 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 			if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
 			const long id = std::stol(pid);
 			if (id == ::getpid() || ::kill(static_cast<pid_t>(id), 0) == 0 || errno != ESRCH) continue;  // alive
+			if (suffix == ".old-" && !movedAsideBy(e.path(), pid)) continue;
 			// An old copy put back where its output is missing is moved, not removed: its being ours is enough.
-			if (suffix == ".old-" && !fs::exists(fs::symlink_status(t, ec)) && fs::is_directory(e.path(), ec) && marked(e.path()))
+			if (suffix == ".old-" && !fs::exists(fs::symlink_status(t, ec)))
 				fs::rename(e.path(), t, ec);
 			else if (ours(e.path()))
 				fs::remove_all(e.path(), ec);

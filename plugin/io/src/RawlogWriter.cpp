@@ -12,6 +12,7 @@
 
 #include <cerrno>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -54,6 +55,24 @@ bool imagesLinkOf(const std::string& rawlog, const std::string& images)
 						   target.compare(target.size() - suffix.size(), suffix.size(), suffix) == 0;
 	return to_images && fs::is_regular_file(rawlog, ec) && isOfKind(rawlog, OutputKind::Rawlog);
 }
+/** NAME_Images serves every rawlog named NAME (NAME.rawlog, NAME.rawlog.gz,
+ * NAME): its marker names the one it was written with, and while that one
+ * is there, another name does not take its images over. */
+void requireImagesOf(const std::string& images, const std::string& rawlog)
+{
+	std::error_code ec;
+	if (fs::is_symlink(images, ec) || !fs::is_directory(images, ec)) return;
+	std::ifstream f(fs::path(images) / kOutputMarker);
+	const std::string mine = fs::path(rawlog).filename().string();
+	for (std::string line; std::getline(f, line);)
+		if (line.rfind("rawlog ", 0) == 0 && line.substr(7) != mine)
+		{
+			const fs::path owner = fs::path(rawlog).parent_path() / line.substr(7);
+			if (fs::exists(fs::symlink_status(owner, ec)))
+				throw std::runtime_error("'" + images + "' holds the images of '" + owner.string() + "', which '" + rawlog +
+										 "' would take over (give the output another name)");
+		}
+}
 }  // namespace
 
 void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& program,
@@ -65,6 +84,7 @@ void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& pr
 	// Only a scan writes such a link: another program's output does not replace it unasked.
 	requireOutputAllowed(images, OutputKind::Folder, program, inputs,
 						 force || (program == kScanProgram && imagesLinkOf(file, images)));
+	if (!force) requireImagesOf(images, file);
 }
 
 RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, int gz_level)
@@ -116,6 +136,9 @@ void RawlogWriter::startImages()
 	fs::remove_all(tmp_images_);
 	fs::create_directories(tmp_images_);
 	markOutputFolder(tmp_images_, owner_);
+	std::ofstream marker(fs::path(tmp_images_) / kOutputMarker, std::ios::app);
+	marker << "rawlog " << fs::path(path_).filename().string() << "\n";
+	if (!marker) throw std::runtime_error("cannot write '" + (fs::path(tmp_images_) / kOutputMarker).string() + "'");
 	has_images_ = true;
 }
 
@@ -170,10 +193,10 @@ void RawlogWriter::commit()
 	// every writer (a library user need not have called it).
 	requireOutputAllowed(images_, OutputKind::Folder, owner_, {},
 						 replace_any_ || (owner_ == kScanProgram && imagesLinkOf(path_, images_)));
+	if (!replace_any_) requireImagesOf(images_, path_);
 	if (has_images_) listOutputFolder(tmp_images_);
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
-	const std::string old = images_ + ".old-" + std::to_string(::getpid());
-	if (had_old) fs::rename(images_, old);
+	const std::string old = had_old ? moveAside(images_) : "";
 	bool moved_in = false;
 	try
 	{

@@ -32,6 +32,10 @@ struct LayeredIni
 	}
 };
 
+/** "FILE: why" for an error in the ini `path` read with its bases: FILE is
+ * the base that set the key a KeyError names, else `path`. */
+std::string namingItsFile(const LayeredIni& ini, const std::string& path, const std::exception& e);
+
 /** The `base = FILE` of the ini `path`, resolved against its folder; "" if it has none. */
 std::string iniBaseOf(const std::string& path);
 /** Every base below the ini `path`, nearest first (at most 16 deep); none

@@ -32,6 +32,17 @@ class CConfigFileBase;
 
 namespace omnirange
 {
+/** A key's value or name refused, with the key: a layered ini (LayeredIni.h)
+ * can then name the file that set it rather than the one read. */
+struct KeyError : std::invalid_argument
+{
+	KeyError(const std::string& what, std::string section_, std::string key_)
+		: std::invalid_argument(what), section(std::move(section_)), key(std::move(key_))
+	{
+	}
+	std::string section, key;  ///< as the file wrote them
+};
+
 /** Throws std::invalid_argument(what) unless ok: the way validate() methods fail. */
 inline void require(bool ok, const std::string& what)
 {
@@ -60,6 +71,8 @@ std::string formatDouble(double v);
 std::string formatDoubles(const std::vector<double>& v);  ///< blank-separated
 /** `s` without leading and trailing blanks (spaces, tabs, CR, LF). */
 std::string trimmed(const std::string& s);
+/** The items with ", " between them: "a, b, c". */
+std::string joined(const std::vector<std::string>& items);
 
 /** Throws std::runtime_error("the WHAT 'PATH' is not a regular file") when
  * `path` is a FIFO, a device or a folder, which a reader would block on or
@@ -404,7 +417,10 @@ void OptionsTable<S>::load(S& s, const mrpt::config::CConfigFileBase& cfg, const
 		}
 		catch (const std::invalid_argument& e)
 		{
-			throw std::invalid_argument("[" + section + "] " + f.info.key + " = '" + text + "': " + e.what());
+			std::string as_written = f.info.key;
+			for (const auto& k : present)
+				if (sameKey(k, f.info.key)) as_written = k;
+			throw KeyError("[" + section + "] " + f.info.key + " = '" + text + "': " + e.what(), section, as_written);
 		}
 	}
 }

@@ -27,7 +27,8 @@ bool interrupted();
  * through MRPT, on a corrupt JPEG stored in a rawlog) leaves no temporaries,
  * and "PROGRAM: error: ..." names what the run was doing (setActivity()). */
 void removeAtExit(const std::string& program);
-/** What the run is doing, for that message: "reading rawlog 'X'". */
+/** What the run is doing, for that message: "reading rawlog 'X'"; the run's
+ * own end sets it to "" (a library that exits after that ended nothing). */
 void setActivity(const std::string& what);
 /** What setActivity() last said ("" if nothing): an error with no file of its own (out of memory) names it. */
 std::string currentActivity();

@@ -39,6 +39,10 @@ struct LaserRow
 /** [m] Odometry farther than this from its origin is refused: a ground
  * robot's log does not span 100 km, and MRPT's maps would be sized by it. */
 inline constexpr double kMaxOdometryCoordinate = 1e5;
+/** [m/s], [rad/s] Faster than any robot this is for drives or turns: odometry
+ * written in millimetres or degrees reads as that (1000 m/s, 10 rad/s). */
+inline constexpr double kMaxOdometrySpeed = 10.0;
+inline constexpr double kMaxOdometryTurnRate = 2 * 3.141592653589793;
 /** [m] The farthest max range a laser log may give (a float in MRPT's scans; past it, a typo). */
 inline constexpr double kMaxLaserRange = 1000;
 

@@ -105,6 +105,11 @@ class StagedFolder
 	bool done_{false};
 };
 
+/** Renames `target` to TARGET.old-PID and returns that name; a folder of
+ * ours first notes in its marker that this run moved it ("aside PID"), so
+ * that recoverLeftoversOf() can tell it from a user's backup of that name. */
+std::string moveAside(const std::string& target);
+
 /** Puts the finished folder `fresh` in the place of `target`: the old
  * `target` (if any) goes aside as TARGET.old-PID, `fresh` is renamed in,
  * then the old one is removed. If the rename fails, the old is put back and
@@ -116,8 +121,9 @@ void replaceFolder(const std::string& target, const std::string& fresh);
  * process is gone: staging and temporary copies are removed; an old copy
  * is put back when `target` is missing (the run died between the two
  * renames), else removed. Only what is ours: a folder holding the marker
- * (naming `program`, when given), or a file of `kind` (or empty); a user's
- * file with such a name stays. */
+ * (naming `program`, when given), or a file of `kind` (or empty); an old
+ * copy only if its marker says that run moved it aside (moveAside()); a
+ * user's file or backup with such a name stays. */
 void recoverLeftoversOf(const std::string& target, OutputKind kind = OutputKind::Folder,
 						const std::string& program = "");
 
