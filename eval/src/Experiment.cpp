@@ -92,6 +92,14 @@ void Experiment::setFolder(const std::string& dir)
 	scanned_ = out_ + "/scanned.rawlog";
 }
 
+std::vector<std::string> cameraMismatch(const CameraParams& made_by, const CameraParams& read_by)
+{
+	std::vector<std::string> keys;
+	for (const auto& f : CameraParams::table().fields())
+		if (f.print(made_by) != f.print(read_by)) keys.push_back(f.info.key);
+	return keys;
+}
+
 Metrics Experiment::run()
 {
 	// Every stage writes into a fresh staging folder; the report folder is
@@ -138,9 +146,7 @@ Metrics Experiment::runStages()
 	MRPT_LOG_DEBUG_STREAM("every rangefinder option:\n" << c_.rangefinder.asIni());
 	// The robot's camera makes the images, [rangefinder]'s reads them: another mirror, scale or
 	// centre (a --robot of another camera) reads every ray wrong, which the report must not blame on colour.
-	const CameraParams made_by = sim::RobotParams::loadFile(c_.robot).omnicam.camera;
-	for (const auto& f : CameraParams::table().fields())
-		if (f.print(made_by) != f.print(c_.rangefinder.camera)) r_.camera_mismatch.push_back(f.info.key);
+	r_.camera_mismatch = cameraMismatch(sim::RobotParams::loadFile(c_.robot).omnicam.camera, c_.rangefinder.camera);
 	if (!r_.camera_mismatch.empty())
 		MRPT_LOG_WARN_STREAM("the robot's camera (" << c_.robot << ") is not [rangefinder]'s camera: they differ in "
 													<< joined(r_.camera_mismatch)

@@ -174,6 +174,9 @@ TEST(IcpSlamIni, TheObservationsToMapAndRbpfInisAreHeldToWhatMrptReads)
 			 {grid + "min_x = -90000\n", "within [-1000, 1000] m"},
 			 {grid + "resolution = 0.005\nmin_x = -900\nmax_x = 900\nmin_y = -900\nmax_y = 900\n",
 			  "million cells, more than 100 million"},  // each bound kept, 130 GB in all
+			 {"[MappingApplication]\noccupancyGrid_count = 1\n[MappingApplication_occupancyGrid_00_insertOpts]\n"
+			  "maxDistanceInsertion = -1\n",
+			  "must be > 0 m"},  // an empty map, reported as a result
 			 {"[MappingApplication]\nlogOutput_dir = x\n", "not a key observations2map reads"},
 			 {"[Other]\nk = 1\n", "unknown section [Other]"}})
 		EXPECT_NE(refusalOf(map, bad).find(expected), std::string::npos) << bad << ": " << refusalOf(map, bad);
@@ -196,4 +199,13 @@ TEST(IcpSlamIni, TheObservationsToMapAndRbpfInisAreHeldToWhatMrptReads)
 			 {edited("[MappingApplication]\n", "[MappingApplication]\nmax_corr_distanc = 1.0\n"), "not a key rbpf-slam reads"}})
 		EXPECT_NE(refusalOf(rbpf, bad).find(expected), std::string::npos) << expected << ": " << refusalOf(rbpf, bad);
 	EXPECT_EQ(refusalOf(rbpf, edited("PF_algorithm = 2", "PF_algorithm = pfOptimalProposal")), "");
+	// icp-slam's map builder's own keys in [MappingApplication]: their values are held to MRPT's too.
+	std::ifstream icp_in(dir + "icp-slam-omniscan.ini");
+	const std::string icp((std::istreambuf_iterator<char>(icp_in)), {});
+	const std::string key = "minICPgoodnessToAccept = 0.40";
+	ASSERT_NE(icp.find(key), std::string::npos);
+	const std::string goodness =
+		icp.substr(0, icp.find(key)) + "minICPgoodnessToAccept = 2147483648" + icp.substr(icp.find(key) + key.size());
+	EXPECT_NE(refusal(goodness).find("minICPgoodnessToAccept = '2147483648': must be within [0, 1]"), std::string::npos)
+		<< refusal(goodness);
 }

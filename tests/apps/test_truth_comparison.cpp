@@ -1,10 +1,15 @@
 // Scoring against the truth: each omnicam ray against the true boundary at
 // its bearing, counted into the right band and outcome.
+#include <omnirange_eval/Experiment.h>
+#include <omnirange_eval/ExperimentConfig.h>
 #include <omnirange_eval/TruthComparison.h>
+#include <omnirange_sim/RobotParams.h>
 
 #include <omnirange/core/PolarScanner.h>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace omnirange;
 using mrpt::obs::CObservation2DRangeScan;
@@ -59,4 +64,17 @@ TEST(TruthComparison, ScansFromDifferentPosesAreRefused)
 	omni.sensorPose = mrpt::poses::CPose3D(0.2, 0, 0, 0, 0, 0);
 	eval::TruthStats t;
 	EXPECT_THROW(t.add(truth, omni), std::invalid_argument);
+}
+
+TEST(TruthComparison, ACameraThatMadeTheImagesUnlikeTheOneThatReadsThemIsNamed)
+{
+	// The stock experiments read their images with their robot's camera; another robot's mirror
+	// (the hyperbolic one under the factory's paraboloid ini) is named key by key.
+	const std::string ini = OMNIRANGE_SOURCE_DIR "/ini/";
+	const auto factory = eval::ExperimentConfig::load(ini + "factory.ini");
+	EXPECT_EQ(eval::cameraMismatch(sim::RobotParams::loadFile(factory.robot).omnicam.camera, factory.rangefinder.camera),
+			  std::vector<std::string>{});
+	const auto other = eval::cameraMismatch(sim::RobotParams::loadFile(ini + "robot-hyperbolic.ini").omnicam.camera,
+											factory.rangefinder.camera);
+	EXPECT_NE(std::find(other.begin(), other.end(), "mirror_model"), other.end());
 }

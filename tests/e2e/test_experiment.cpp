@@ -32,6 +32,9 @@ TEST(Experiment, SmallFactoryRunEndToEnd)
 	for (const std::string f : {"report.md", "maps_gt.png", "maps_icp.png", "accuracy_histogram.png", "fig1_fused.png",
 								"gt_laser_gridmap_no00.gridmap", "icp_slam_omniscan/log_estimated_path.txt"})
 		EXPECT_TRUE(fs::exists(dir + "/report/" + f)) << f;
+	const std::string report = readText(dir + "/report/report.md");
+	EXPECT_NE(report.find("The robot: `" + kSource + "/ini/robot-omnip2dx-png.ini`"), std::string::npos);
+	EXPECT_EQ(report.find("**Warning:** the robot's camera"), std::string::npos);  // the same camera reads the images
 	const mrpt::config::CConfigFile m(dir + "/report/metrics.ini");
 	const auto v = [&](const std::string& k) { return m.read_double("metrics", k, -1, true); };
 	EXPECT_EQ(v("frames"), 50);

@@ -58,6 +58,10 @@ struct ExperimentResults
 	double seconds{0};
 };
 
+/** The camera keys whose values differ between the camera that made the
+ * images (the simulator's robot) and the one that reads them. */
+std::vector<std::string> cameraMismatch(const CameraParams& made_by, const CameraParams& read_by);
+
 /** The metrics.ini keys and values of a run. */
 Metrics metricsOf(const ExperimentResults& r);
 /** Whether `key` is one metricsOf() can write (a sensor's keys with any label
