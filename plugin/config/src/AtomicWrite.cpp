@@ -104,6 +104,12 @@ void syncToDisk(const std::string& path, const std::string& what)
 	if (!ok) throw std::runtime_error("cannot write '" + what + "' to disk: " + std::strerror(errno));
 }
 
+std::string cannotWrite(const std::string& path, const std::string& otherwise)
+{
+	const std::string reason = errno != 0 ? std::strerror(errno) : otherwise;
+	return "cannot write '" + path + "'" + (reason.empty() ? "" : " (" + reason + ")");
+}
+
 void requireWholeGzipFile(const std::string& path, const std::string& what)
 {
 	gzFile f = ::gzopen(path.c_str(), "rb");
@@ -125,11 +131,12 @@ namespace
 std::function<void(const std::string&)> writerOf(const std::string& path, const std::string& bytes)
 {
 	return [&path, &bytes](const std::string& tmp) {
+		errno = 0;
 		std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-		if (!f) throw std::runtime_error("cannot write '" + path + "'");
+		if (!f) throw std::runtime_error(cannotWrite(path));
 		f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 		f.close();
-		if (!f) throw std::runtime_error("error while writing '" + path + "'");
+		if (!f) throw std::runtime_error(cannotWrite(path, "is the disk full?"));
 	};
 }
 

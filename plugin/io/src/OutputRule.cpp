@@ -285,7 +285,7 @@ std::string moveAside(const std::string& target)
 	{
 		std::ofstream f(fs::path(target) / kOutputMarker, std::ios::app);
 		f << "aside " << ::getpid() << "\n";
-		if (!f) throw std::runtime_error("cannot write '" + (fs::path(target) / kOutputMarker).string() + "'");
+		if (!f) throw std::runtime_error(cannotWrite((fs::path(target) / kOutputMarker).string()));
 	}
 	fs::rename(target, old);
 	return old;
@@ -374,8 +374,22 @@ StagedFolder::StagedFolder(const std::string& target, const std::string& program
 	requireOutputAllowed(target_, OutputKind::Folder, program, inputs, force);
 	fs::remove_all(staging_);
 	temporaries::add(staging_);
-	fs::create_directories(staging_);
-	markOutputFolder(staging_, program);
+	try
+	{
+		errno = 0;
+		fs::create_directories(staging_);
+		markOutputFolder(staging_, program);
+	}
+	catch (const std::exception& e)
+	{
+		temporaries::forget(staging_);
+		std::error_code ec;
+		fs::remove_all(staging_, ec);
+		// The system's reason (read-only, no permission, no space), not std::filesystem's text.
+		const auto* fe = dynamic_cast<const fs::filesystem_error*>(&e);
+		throw std::runtime_error("cannot write the output '" + target_ + "' (" + (fe ? fe->code().message() : e.what()) +
+								 ")");
+	}
 }
 
 void StagedFolder::fill(const std::function<void()>& write) const
@@ -417,7 +431,7 @@ void listOutputFile(const std::string& dir, const std::string& name)
 {
 	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
 	f << "file " << name << "\n";
-	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
+	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
 }
 
 void listOutputFolder(const std::string& dir)
@@ -427,7 +441,7 @@ void listOutputFolder(const std::string& dir)
 	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
 	for (const auto& e : filesIn(dir))
 		if (!listed.count(e)) f << "file " << e << "\n";
-	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
+	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
 }
 
 std::string firstUnlistedIn(const std::string& dir)
@@ -444,7 +458,7 @@ void markOutputFolder(const std::string& dir, const std::string& program)
 {
 	std::ofstream f(fs::path(dir) / kOutputMarker);
 	f << program << "\n";
-	if (!f) throw std::runtime_error("cannot write '" + (fs::path(dir) / kOutputMarker).string() + "'");
+	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
 }
 
 bool isOutputFolderOf(const std::string& dir, const std::string& program)

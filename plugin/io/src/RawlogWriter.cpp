@@ -99,10 +99,11 @@ RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, 
 	recoverLeftoversOf(images_, OutputKind::Folder, owner_);
 	temporaries::add(tmp_path_);
 	temporaries::add(tmp_images_);
+	errno = 0;
 	if (!out_->open(tmp_path_, gz_level))
 	{
 		temporaries::forget(tmp_path_), temporaries::forget(tmp_images_);
-		throw std::runtime_error("cannot write rawlog '" + path + "'");
+		throw std::runtime_error(cannotWrite(path));
 	}
 }
 
@@ -120,12 +121,13 @@ void RawlogWriter::write(const mrpt::serialization::CSerializable& obj)
 {
 	try
 	{
+		errno = 0;
 		mrpt::serialization::archiveFrom(*out_) << obj;
 	}
 	catch (const std::exception&)
 	{
 		// MRPT's message is a stack trace that does not name the file.
-		throw std::runtime_error("cannot write rawlog '" + path_ + "' (is the disk full?)");
+		throw std::runtime_error(cannotWrite(path_, "is the disk full?"));
 	}
 	++count_;
 }

@@ -57,6 +57,10 @@ void writeAtomically(
 
 /** fsync()s the file `path`; throws std::runtime_error naming `what` if it fails. */
 void syncToDisk(const std::string& path, const std::string& what);
+/** "cannot write 'PATH' (REASON)": REASON the system's, as the open or write
+ * that just failed left it in errno (a full disk, a read-only file system,
+ * no permission), or `otherwise` when it left none. */
+std::string cannotWrite(const std::string& path, const std::string& otherwise = "");
 
 /** Reads the gzip file `path` to its end; throws std::runtime_error naming
  * `what` unless it is whole (a write that failed leaves it cut short). */
