@@ -4,6 +4,7 @@
 // nothing, and what a killed run left is cleared by the next.
 #include <omnirange/config/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
+#include <omnirange/io/RawlogReader.h>
 #include <omnirange/io/RawlogWriter.h>
 
 #include "../common/FactorySample.h"
@@ -335,6 +336,34 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 	fs::remove(d + "/log.rawlog");  // with their rawlog gone, the images are the new one's to replace
 	writeGz();
 	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0), cv::Vec3b(9, 9, 9));
+}
+
+TEST(OutputRule, ARawlogWhoseImagesARunWasKilledReplacingIsNotRead)
+{
+	const std::string d = fresh("half_replaced");
+	{
+		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 2, 3)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit();
+	}
+	// A user's backup of the images beside them: no run moved it aside, the rawlog is read.
+	fs::copy(d + "/log_Images", d + "/log_Images.old-2024", fs::copy_options::recursive);
+	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog"));
+	// Run 999988 moved the images aside and its new ones in, and was killed before its rawlog.
+	write(d + "/log_Images/" + kOutputMarker, "omnirange-test\nrawlog log.rawlog\naside 999988\n");
+	fs::rename(d + "/log_Images", d + "/log_Images.old-999988");
+	fs::create_directory(d + "/log_Images");
+	markOutputFolder(d + "/log_Images", "omnirange-test");
+	try
+	{
+		RawlogReader reader(d + "/log.rawlog");
+		ADD_FAILURE() << "a rawlog was read with images a killed run had half replaced";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("log_Images.old-999988"), std::string::npos) << e.what();
+	}
 }
 
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)

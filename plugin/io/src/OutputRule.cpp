@@ -310,6 +310,41 @@ void replaceFolder(const std::string& target, const std::string& fresh)
 	if (had_old) fs::remove_all(old, ec);
 }
 
+namespace
+{
+/** The process `pid` (digits) is gone: its leftovers are nobody's run's. */
+bool deadRun(const std::string& pid)
+{
+	if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) return false;
+	const long id = std::stol(pid);
+	return id != ::getpid() && ::kill(static_cast<pid_t>(id), 0) != 0 && errno == ESRCH;
+}
+
+/** `p` is a folder whose marker says run `pid` moved it aside (moveAside()). */
+bool movedAsideBy(const fs::path& p, const std::string& pid)
+{
+	std::error_code ec;
+	if (fs::is_symlink(p, ec) || !fs::is_directory(p, ec)) return false;
+	std::ifstream f(p / kOutputMarker);
+	for (std::string line; std::getline(f, line);)
+		if (line == "aside " + pid) return true;
+	return false;
+}
+}  // namespace
+
+std::string halfReplaced(const std::string& target)
+{
+	const fs::path t(target);
+	const fs::path dir = t.parent_path().empty() ? fs::path(".") : t.parent_path();
+	const std::string prefix = t.filename().string() + ".old-";
+	std::error_code ec;
+	for (const auto& e : fs::directory_iterator(dir, ec))
+		if (const std::string name = e.path().filename().string(); name.rfind(prefix, 0) == 0)
+			if (const std::string pid = name.substr(prefix.size()); deadRun(pid) && movedAsideBy(e.path(), pid))
+				return e.path().string();
+	return "";
+}
+
 void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::string& program)
 {
 	const fs::path t(target);
@@ -337,15 +372,6 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
 			   (fs::file_size(p, ec) == 0 || isOfKind(p.string(), kind));
 	};
-	// An old copy is ours only if the run of its PID moved it aside (moveAside()
-	// noted so in its marker): "NAME.old-2024" may be a user's backup.
-	const auto movedAsideBy = [&](const fs::path& p, const std::string& pid) {
-		if (fs::is_symlink(p, ec) || !fs::is_directory(p, ec) || !marked(p)) return false;
-		std::ifstream f(p / kOutputMarker);
-		for (std::string line; std::getline(f, line);)
-			if (line == "aside " + pid) return true;
-		return false;
-	};
 	for (const auto& e : fs::directory_iterator(dir, ec))
 	{
 		const std::string other = e.path().filename().string();
@@ -353,10 +379,10 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 		{
 			if (other.rfind(name + suffix, 0) != 0) continue;
 			const std::string pid = other.substr(name.size() + suffix.size());
-			if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-			const long id = std::stol(pid);
-			if (id == ::getpid() || ::kill(static_cast<pid_t>(id), 0) == 0 || errno != ESRCH) continue;  // alive
-			if (suffix == ".old-" && !movedAsideBy(e.path(), pid)) continue;
+			if (!deadRun(pid)) continue;  // not a PID, or a run still going
+			// An old copy is ours only if the run of its PID moved it aside (moveAside()
+			// noted so in its marker): "NAME.old-2024" may be a user's backup.
+			if (suffix == ".old-" && !(marked(e.path()) && movedAsideBy(e.path(), pid))) continue;
 			// An old copy put back where its output is missing is moved, not removed: its being ours is enough.
 			if (suffix == ".old-" && !fs::exists(fs::symlink_status(t, ec)))
 				fs::rename(e.path(), t, ec);

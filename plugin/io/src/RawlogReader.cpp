@@ -1,5 +1,6 @@
 #include "omnirange/io/RawlogReader.h"
 
+#include "omnirange/io/OutputRule.h"
 #include "omnirange/io/RawlogWriter.h"
 #include "omnirange/config/OptionsTable.h"
 #include "omnirange/config/Temporaries.h"
@@ -25,6 +26,11 @@ RawlogReader::RawlogReader(const std::string& path)
 	requireRegularFile(path, "rawlog");
 	if (!std::filesystem::is_regular_file(path) || !in_->open(path))
 		throw std::runtime_error("cannot open rawlog '" + path + "'");
+	// A writer killed between moving its images in and its rawlog: the images may be the next run's.
+	if (const std::string old = halfReplaced(imagesDirToRead(path)); !old.empty())
+		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path +
+								 "': a run that was replacing them was killed, leaving the old ones in '" + old +
+								 "' (run it again, or remove the folder that is not this rawlog's)");
 	mrpt::img::CImage::setImagesPathBase(imagesDirToRead(path));
 	temporaries::setActivity("reading rawlog '" + path + "'");
 }

@@ -116,6 +116,11 @@ std::string moveAside(const std::string& target);
  * the error names both. All-or-nothing for a multi-file output. */
 void replaceFolder(const std::string& target, const std::string& fresh);
 
+/** TARGET.old-PID that a run, now gone, moved aside and did not finish
+ * replacing (moveAside()): `target` may be that run's new folder beside an
+ * old file it belongs with; "" if there is none. */
+std::string halfReplaced(const std::string& target);
+
 /** What killed runs of the output `target` left beside it, as names with a
  * process id (TARGET.staging-PID, TARGET.tmp-PID, TARGET.old-PID) whose
  * process is gone: staging and temporary copies are removed; an old copy
