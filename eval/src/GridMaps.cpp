@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc.hpp>
 
+#include <cerrno>
 #include <cmath>
 
 namespace omnirange::eval
@@ -84,7 +85,8 @@ void saveSimplemap(const mrpt::maps::CSimpleMap& sm, const std::string& file)
 	writeAtomically(file, [&](const std::string& tmp) {
 		{
 			mrpt::io::CFileGZOutputStream f;
-			if (!f.open(tmp)) throw std::runtime_error("cannot write '" + file + "'");
+			errno = 0;
+			if (!f.open(tmp)) throw std::runtime_error(cannotWrite(file));
 			mrpt::serialization::archiveFrom(f) << sm;
 		}
 		requireWholeGzipFile(tmp, file);  // the stream reports no failed write (a full disk)

@@ -18,6 +18,7 @@
 #include <mrpt/serialization/CArchive.h>
 #include <opencv2/core/utility.hpp>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -150,7 +151,8 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	StagedFile map(base + "_truemap.gridmap.gz", [&](const std::string& tmp) {
 		{
 			mrpt::io::CFileGZOutputStream f;
-			if (!f.open(tmp)) throw std::runtime_error("cannot write '" + base + "_truemap.gridmap.gz'");
+			errno = 0;
+			if (!f.open(tmp)) throw std::runtime_error(cannotWrite(base + "_truemap.gridmap.gz"));
 			mrpt::serialization::archiveFrom(f) << grid;
 		}
 		requireWholeGzipFile(tmp, base + "_truemap.gridmap.gz");  // the stream reports no failed write

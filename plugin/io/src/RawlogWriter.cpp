@@ -167,8 +167,9 @@ mrpt::img::CImage RawlogWriter::externalImage(
 	startImages();
 	listOutputFile(tmp_images_, name);  // before it is written: a killed run's list holds it
 	const std::string file = (fs::path(tmp_images_) / name).string();
+	errno = 0;
 	if (!cv::imwrite(file, bgr, {cv::IMWRITE_JPEG_QUALITY, jpeg_quality}))
-		throw std::runtime_error("cannot write image '" + file + "'");
+		throw std::runtime_error(cannotWrite(file, "is the disk full?"));
 	mrpt::img::CImage img;
 	img.setExternalStorage(name);
 	return img;
