@@ -315,6 +315,8 @@ printf 'not a CARMEN log\n' > notcarmen.log
 run_case "import: --carmen with no CARMEN message" "error:no CARMEN" imp4.rawlog -- "$apps/omnirange-import" -q --images imp --carmen notcarmen.log -o imp4.rawlog
 mkfifo fill.fifo
 run_case "summary: --fill a FIFO" "error:not a regular file" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill fill.fifo
+long_name=$(printf 'c%.0s' $(seq 240)).rawlog
+run_case "scan: an output name of 247 characters (no room for its temporaries)" "error:leave room for the names of its temporaries" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o "$long_name"
 # Sparse files: large to a reader, nothing on the disk.
 cp floor.hist big.hist && truncate -s 1G big.hist
 run_case "scan: -H a 1 GB file that begins as a histogram" "error:more than the" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H big.hist -o none.out

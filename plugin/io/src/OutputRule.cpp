@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -199,6 +200,12 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	if (output.empty()) return;
 	if (kind != OutputKind::Folder && output_as_given.back() == '/')
 		throw std::runtime_error("'" + output_as_given + "' ends with '/', which names a folder: this output is a file");
+	// A name the file system takes, with room for the run's own suffixes (".staging-PID", "_Images.tmp-PID").
+	constexpr std::size_t kLongestName = NAME_MAX - 32;
+	if (const std::string name = fs::path(output).filename().string(); name.size() > kLongestName)
+		throw std::runtime_error("the output's name '" + name.substr(0, 24) + "...' is " + std::to_string(name.size()) +
+								 " characters: at most " + std::to_string(kLongestName) +
+								 " leave room for the names of its temporaries");
 	// "a/missing/..": the system cannot pass through a folder that is not there, though the text reads as "a".
 	fs::path walked;
 	for (const auto& part : fs::path(output_as_given))
