@@ -247,8 +247,13 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 		listOutputFile(staging, "img_0001.jpg");
 		write(staging + "/img_0001.jpg", "ours");
 		if (added) write(staging + "/NOTES.txt", "a user's notes");
+		testing::internal::CaptureStderr();
 		recoverLeftoversOf(d + "/report", OutputKind::Folder, "omnirange-test");
+		const std::string said = testing::internal::GetCapturedStderr();
 		EXPECT_EQ(fs::exists(staging), added) << (added ? "a user's file was removed" : "a listed leftover stayed");
+		// What is kept is said, naming the file that keeps it.
+		EXPECT_EQ(said.find("warning: kept '" + staging + "'") != std::string::npos && said.find("NOTES.txt") != std::string::npos,
+				  added) << said;
 		fs::remove_all(staging);
 	}
 	// A path through a folder that is not there: the system could not write it, though it reads as "d".

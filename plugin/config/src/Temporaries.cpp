@@ -100,6 +100,11 @@ void setActivity(const std::string& what)
 	activity() = what;
 }
 
+void warn(const std::string& what)
+{
+	std::fprintf(stderr, "%s: warning: %s\n", program().empty() ? "omnirange" : program().c_str(), what.c_str());
+}
+
 std::string currentActivity()
 {
 	const std::lock_guard<std::mutex> g(lock());

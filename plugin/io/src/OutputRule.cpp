@@ -395,6 +395,12 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 				fs::rename(e.path(), t, ec);
 			else if (ours(e.path()))
 				fs::remove_all(e.path(), ec);
+			else if (const std::string added = fs::is_directory(e.path(), ec) && marked(e.path())
+												   ? firstUnlistedIn(e.path().string())
+												   : "";
+					 !added.empty())
+				temporaries::warn("kept '" + e.path().string() + "', a killed run's leftover: it holds '" + added +
+								  "', which is not on that run's list of its files (remove the folder once nothing in it is yours)");
 		}
 	}
 }

@@ -30,6 +30,9 @@ void removeAtExit(const std::string& program);
 /** What the run is doing, for that message: "reading rawlog 'X'"; the run's
  * own end sets it to "" (a library that exits after that ended nothing). */
 void setActivity(const std::string& what);
+/** "PROGRAM: warning: what" on stderr, PROGRAM as removeAtExit() named it:
+ * what a library keeps of the user's and the user should hear of. */
+void warn(const std::string& what);
 /** What setActivity() last said ("" if nothing): an error with no file of its own (out of memory) names it. */
 std::string currentActivity();
 
