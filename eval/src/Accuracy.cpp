@@ -36,8 +36,9 @@ AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions
 	using mrpt::obs::CObservation2DRangeScan;
 	// A bound past any omnicam's reach pairs nothing more, and makes the
 	// histogram's bins without end.
-	if (!(o.max_difference > 0 && o.max_difference <= kMaxRangeDifference) || o.first < 0)
-		throw std::invalid_argument("accuracy: max_difference must be within (0, 100] m, first >= 0");
+	require(o.max_difference > 0 && o.max_difference <= kMaxRangeDifference,
+			"accuracy: max_difference must be within (0, " + formatDouble(kMaxRangeDifference) + "] m");
+	require(o.first >= 0, "accuracy: first must be >= 0");
 	requirePairingDt(o.max_dt);
 	RawlogProcessor loop(rawlog);
 	AccuracyResult r;
