@@ -340,7 +340,7 @@ run_case "scan: -o a link to nothing" "error:which does not exist" none.out -- "
 [ -L dangling.rawlog ] || { echo "| | PROBLEM: the user's link dangling.rawlog was replaced |"; problems=$((problems + 1)); }
 # After a fifth: one program's rawlog images are not another's to replace.
 "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o simd.rawlog
-run_case "scan: -o over a simulated dataset (its images)" "error:omnirange-scan did not write" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o simd.rawlog
+run_case "scan: -o over a simulated dataset (its images)" "error:is what omnirange-sim wrote, not omnirange-scan" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o simd.rawlog
 [ "$(ls simd_Images | grep -c OMNICAM)" = 2 ] || { echo "| | PROBLEM: the simulated dataset's images were replaced |"; problems=$((problems + 1)); }
 sed 's/^\[ICP\]/[IPC]/' "$src/ini/icp-slam-omniscan.ini" > icp_ipc.ini
 run_case "slam: a misspelt section [IPC]" "error:unknown section \[IPC\]" slam_out -- "$apps/omnirange-slam" -q -i s.rawlog -c icp_ipc.ini -o slam_out
@@ -394,9 +394,9 @@ run_case "scan: -o a user's .tar.gz (gzip, not a rawlog)" "error:exists and is n
 cmp -s backup.tar.gz backup.tar.gz.orig || { echo "| | PROBLEM: the user's backup.tar.gz was replaced |"; problems=$((problems + 1)); }
 printf '100.0, 1000, 2000, 3000\n100.4, 1000, 2000, 3000\n' > imp_mm.csv
 run_case "import: laser ranges in millimetres (no range within max range)" "error:ranges in millimetres" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_mm.csv --laser-max-range 10 -o imp.rawlog
-printf 'OMNIHIST' > left.hist.tmp-999999999
+printf 'OMNIHIST' > .left.hist.tmp-999999999
 "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o left.hist
-[ ! -e left.hist.tmp-999999999 ] || { echo "| | PROBLEM: a killed run's left.hist.tmp-PID was not cleaned |"; problems=$((problems + 1)); }
+[ ! -e .left.hist.tmp-999999999 ] || { echo "| | PROBLEM: a killed run's .left.hist.tmp-PID was not cleaned |"; problems=$((problems + 1)); }
 cp s.rawlog users_log.rawlog && ln -sfn users_log.rawlog gz_truemap.gridmap.gz
 run_case "sim: its true map through a link onto a user's rawlog" "error:is not a grid map" gz.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o gz.rawlog
 cmp -s users_log.rawlog s.rawlog || { echo "| | PROBLEM: the user's rawlog behind gz_truemap.gridmap.gz was changed |"; problems=$((problems + 1)); }

@@ -106,6 +106,7 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	: wxFrame(nullptr, wxID_ANY, "omnirange-tuner: " + session.options().rawlog),
 	  s_(session),
 	  save_to_(std::move(save_to)),
+	  given_histogram_(session.options().histogram),
 	  play_(this)
 {
 	auto* panel = new wxPanel(this);
@@ -665,20 +666,29 @@ void TunerFrame::train()
 	const bool exists = std::filesystem::exists(out);
 	try  // only a colour model is replaced, never an input or another file: said before asking
 	{
-		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner", {s_.options().rawlog, s_.options().ini}, false);
+		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner",
+							 {s_.options().rawlog, s_.options().ini}, false);
 	}
 	catch (const std::exception& e)
 	{
 		return status(wxString::FromUTF8(omnirange::app::errorText(e)), Say::Error);
 	}
-	if (exists && wxMessageDialog(this, out + " is a colour model already. Train a new one and replace it?",
+	// Through a link it may be the histogram the window was opened with: say so in the question.
+	std::error_code ec;
+	const bool in_use = exists && !given_histogram_.empty() &&
+						std::filesystem::equivalent(out, given_histogram_, ec);
+	const std::string what = in_use && std::filesystem::is_symlink(out, ec)
+								 ? out + " (a link to " + given_histogram_ + ", the histogram in use)"
+								 : in_use ? out + ", the histogram in use," : out;
+	if (exists && wxMessageDialog(this, what + " is a colour model already. Train a new one and replace it?",
 								  "omnirange-tuner: replace the histogram?", wxYES_NO | wxNO_DEFAULT | wxICON_WARNING)
 						  .ShowModal() != wxID_YES)
 		return status("not trained: " + out + " kept");
 	try
 	{
 		// Checked again: the file may have changed while the question was open.
-		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner", {s_.options().rawlog, s_.options().ini}, false);
+		requireOutputAllowed(out, OutputKind::Histogram, "omnirange-tuner",
+							 {s_.options().rawlog, s_.options().ini}, false);
 		wxProgressDialog dialog("omnirange-tuner", "training the floor's colours on this rawlog", 100, this,
 								wxPD_APP_MODAL | wxPD_AUTO_HIDE);
 		const auto r = s_.train(out, {}, [&](std::size_t objects) {

@@ -61,6 +61,7 @@ class TunerFrame : public wxFrame
 	omnirange::tuner::TunerSession& s_;
 	int image_width_{768};
 	std::string save_to_;
+	std::string given_histogram_;  // -H: an input, whatever Train makes later
 	omnirange::tuner::OverlayOptions overlay_;
 	int frame_{0};
 	bool updating_{false};  // controls being set from the parameters

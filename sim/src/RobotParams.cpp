@@ -1,5 +1,7 @@
 #include "omnirange_sim/RobotParams.h"
 
+#include <omnirange/config/LayeredIni.h>
+
 #include <mrpt/config/CConfigFile.h>
 
 #include <cmath>
@@ -94,15 +96,16 @@ RobotParams RobotParams::loadFile(const std::string& path)
 {
 	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(path + ": cannot open robot ini");
 	RobotParams r;
+	// Over its base, as every ini of ours (`base = robot-hyperbolic.ini`): each file checked, the merge read.
+	const LayeredIni ini = readLayeredIni(path);
+	for (const auto& file : ini.files) requireOnlySections(file, {"omnicam", "laser", "odometry", "robot"});
 	try
 	{
-		requireNoRepeatedKeys(path);
-		requireOnlySections(path, {"omnicam", "laser", "odometry", "robot"});
-		r.loadFromConfig(mrpt::config::CConfigFile(path));
+		r.loadFromConfig(*ini.merged);
 	}
 	catch (const std::invalid_argument& e)
 	{
-		throw std::runtime_error(path + ": " + e.what());
+		throw std::runtime_error(namingItsFile(ini, path, e));
 	}
 	return r;
 }

@@ -709,7 +709,7 @@ TEST(AppClasses, ARimCentreIsSavedOnlyForACameraOfTheImagesSize)
 	}
 	catch (const std::runtime_error& e)
 	{
-		EXPECT_NE(std::string(e.what()).find("the images are 640x480 but the ini's camera is 1024x768"), std::string::npos)
+		EXPECT_NE(std::string(e.what()).find("the images are 640x480 but the camera of " + o.save_to + " is 1024x768"), std::string::npos)
 			<< e.what();
 	}
 	EXPECT_EQ(readText(o.save_to), other_camera);

@@ -104,3 +104,27 @@ TEST(SimulatorApp, BadInputLeavesNoOutput)
 	EXPECT_FALSE(fs::exists(out));
 	EXPECT_FALSE(fs::exists(test::tempDir() + "/never_Images"));
 }
+
+TEST(SimulatorApp, ARobotIniOverABaseIsTheBaseWithItsOwnKeys)
+{
+	// `base = robot-hyperbolic.ini` and one key: the hyperbolic camera, not the code's default one.
+	const std::string dir = testing::TempDir() + "robot_base";
+	fs::create_directories(dir);
+	std::ofstream(dir + "/mine.ini") << "base = " << kSource << "/ini/robot-hyperbolic.ini\n[laser]\nsigma = 0.02\n";
+	const RobotParams mine = RobotParams::loadFile(dir + "/mine.ini");
+	const RobotParams hyperbolic = RobotParams::loadFile(kSource + "/ini/robot-hyperbolic.ini");
+	EXPECT_EQ(mine.omnicam.camera.mirror_model, omnirange::MirrorModel::Mei);
+	EXPECT_EQ(mine.omnicam.camera.xi, hyperbolic.omnicam.camera.xi);
+	EXPECT_DOUBLE_EQ(mine.laser.sigma, 0.02);
+	// A base that is not there is an error naming it, not the defaults.
+	std::ofstream(dir + "/lost.ini") << "base = nothere.ini\n[laser]\nsigma = 0.02\n";
+	try
+	{
+		RobotParams::loadFile(dir + "/lost.ini");
+		ADD_FAILURE() << "a missing base was read as the defaults";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("nothere.ini"), std::string::npos) << e.what();
+	}
+}

@@ -70,7 +70,10 @@ TEST(OutputRule, AFolderIsReplacedOnlyWhenEmptyOrMarkedByTheSameProgram)
 	fs::create_directory(d + "/other");
 	markOutputFolder(d + "/other", "omnirange-other");
 	write(d + "/other/x", "x");
-	EXPECT_NE(refusal(d + "/other", OutputKind::Folder), "");  // another program's
+	// Another program's: said whose, and no advice to remove it.
+	EXPECT_NE(refusal(d + "/other", OutputKind::Folder).find("is what omnirange-other wrote, not omnirange-test"), std::string::npos)
+		<< refusal(d + "/other", OutputKind::Folder);
+	EXPECT_EQ(refusal(d + "/other", OutputKind::Folder).find("remove"), std::string::npos);
 	write(d + "/a-file", "text");
 	EXPECT_NE(refusal(d + "/a-file", OutputKind::Folder).find("is a file"), std::string::npos);
 	EXPECT_NE(refusal(d + "/a-file", OutputKind::Folder, {}, true).find("is a file"), std::string::npos);
@@ -216,17 +219,20 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	write(d + "/report/" + kOutputMarker, "omnirange-test\naside 999999\n");
 	fs::rename(d + "/report", d + "/report.old-999999");
 	fs::create_directory(d + "/report.staging-999998");
-	markOutputFolder(d + "/report.staging-999998", "omnirange-test");
-	// Names a killed run could have left, but not ours (no marker; a file beside a folder output): kept.
-	write(d + "/report.tmp-999997", "a user's notes");
+	write(d + "/report.staging-999998/" + kOutputMarker, "omnirange-test\nrun 999998\n");  // as markOutputFolder() in that run
+	// Names a killed run could have left, but not ours (no marker; a file beside a folder output;
+	// a copy of a report whose marker names another run): kept.
+	write(d + "/.report.tmp-999997", "a user's notes");
 	fs::create_directory(d + "/report.staging-999996");
 	fs::create_directory(d + "/report.old-999995");
+	fs::copy(d + "/report.staging-999998", d + "/report.staging-2024", fs::copy_options::recursive);
 	recoverLeftoversOf(d + "/report");
 	EXPECT_EQ(read(d + "/report/new.md"), "new");  // put back
 	EXPECT_FALSE(fs::exists(d + "/report.old-999999"));
 	EXPECT_FALSE(fs::exists(d + "/report.staging-999998"));
-	EXPECT_EQ(read(d + "/report.tmp-999997"), "a user's notes");
+	EXPECT_EQ(read(d + "/.report.tmp-999997"), "a user's notes");
 	EXPECT_TRUE(fs::exists(d + "/report.staging-999996"));
+	EXPECT_TRUE(fs::exists(d + "/report.staging-2024"));
 	EXPECT_TRUE(fs::exists(d + "/report.old-999995"));
 	// A listed leftover of ours that a user has added a file to since: theirs now, kept whole.
 	fs::create_directory(d + "/report.old-999990");
@@ -243,7 +249,7 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	{
 		const std::string staging = d + "/report.staging-999989";
 		fs::create_directory(staging);
-		markOutputFolder(staging, "omnirange-test");
+		write(staging + "/" + kOutputMarker, "omnirange-test\nrun 999989\n");
 		listOutputFile(staging, "img_0001.jpg");
 		write(staging + "/img_0001.jpg", "ours");
 		if (added) write(staging + "/NOTES.txt", "a user's notes");
@@ -260,24 +266,28 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	EXPECT_NE(refusal(d + "/missing/..", OutputKind::Folder).find("passes through"), std::string::npos);
 	EXPECT_NE(refusal(d + "/missing/../x.rawlog", OutputKind::Rawlog).find("which is not a folder"), std::string::npos);
 
-	// A file output's temporaries: an empty one (killed before it wrote) and
-	// one of its kind are removed; another kind is a user's and stays.
-	write(d + "/x.rawlog.tmp-999994", "");
-	writeRawlog(d + "/x.rawlog.tmp-999993");
-	write(d + "/x.rawlog.tmp-999992", "a user's text");
+	// A file output's temporaries (hidden, temporaryOf()): an empty one (killed before it wrote) and
+	// one of its kind are removed; another kind is a user's and stays, and so does a user's copy
+	// named as a temporary would be if it were not hidden.
+	write(d + "/.x.rawlog.tmp-999994", "");
+	writeRawlog(d + "/.x.rawlog.tmp-999993");
+	write(d + "/.x.rawlog.tmp-999992", "a user's text");
+	writeRawlog(d + "/x.rawlog.tmp-2023");
 	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
-	EXPECT_FALSE(fs::exists(d + "/x.rawlog.tmp-999994"));
-	EXPECT_FALSE(fs::exists(d + "/x.rawlog.tmp-999993"));
-	EXPECT_TRUE(fs::exists(d + "/x.rawlog.tmp-999992"));
+	EXPECT_FALSE(fs::exists(d + "/.x.rawlog.tmp-999994"));
+	EXPECT_FALSE(fs::exists(d + "/.x.rawlog.tmp-999993"));
+	EXPECT_TRUE(fs::exists(d + "/.x.rawlog.tmp-999992"));
+	EXPECT_TRUE(fs::exists(d + "/x.rawlog.tmp-2023"));
+	EXPECT_EQ(temporaryOf(d + "/x.rawlog").rfind(d + "/.x.rawlog.tmp-", 0), 0u);
 	// A user's gzip file (a .tar.gz backup) is gzip but no rawlog: a leftover's
 	// name does not make it one, and a rawlog output does not replace it.
 	const auto gzipOf = [](const std::string& path) {
 		mrpt::io::CFileGZOutputStream f(path);
 		f.Write("ustar backup", 12);
 	};
-	gzipOf(d + "/x.rawlog.tmp-999991"), gzipOf(d + "/backup.tar.gz");
+	gzipOf(d + "/.x.rawlog.tmp-999991"), gzipOf(d + "/backup.tar.gz");
 	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
-	EXPECT_TRUE(fs::exists(d + "/x.rawlog.tmp-999991"));
+	EXPECT_TRUE(fs::exists(d + "/.x.rawlog.tmp-999991"));
 	EXPECT_THROW(requireRawlogOutputAllowed(d + "/backup.tar.gz", "omnirange-scan", {}, false), std::runtime_error);
 }
 
@@ -334,13 +344,31 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 	}
 	catch (const std::runtime_error& e)
 	{
-		EXPECT_NE(std::string(e.what()).find("holds the images of '" + d + "/log.rawlog'"), std::string::npos) << e.what();
+		EXPECT_NE(std::string(e.what()).find("'" + d + "/log.rawlog' reads '" + d + "/log_Images' too"), std::string::npos)
+			<< e.what();
 	}
 	EXPECT_THROW(writeGz(), std::runtime_error);
 	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0), cv::Vec3b(1, 2, 3));
-	fs::remove(d + "/log.rawlog");  // with their rawlog gone, the images are the new one's to replace
+	// Renamed by hand to another name of the stem, it still reads them: not taken over either.
+	fs::rename(d + "/log.rawlog", d + "/log");
+	EXPECT_THROW(writeGz(), std::runtime_error);
+	fs::remove(d + "/log");  // with their rawlog gone, the images are the new one's to replace
 	writeGz();
 	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0), cv::Vec3b(9, 9, 9));
+	// Their marker names log.rawlog.gz; a copy of the folder under another stem is that copy's.
+	fs::copy(d + "/log.rawlog.gz", d + "/copy.rawlog.gz");
+	fs::copy(d + "/log_Images", d + "/copy_Images", fs::copy_options::recursive);
+	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/copy.rawlog.gz", "omnirange-test", {}, false));
+	// The marker's rawlog, there, of the same stem, holds them against another name.
+	try
+	{
+		requireRawlogOutputAllowed(d + "/log", "omnirange-test", {}, false);
+		ADD_FAILURE() << "log.rawlog.gz's images were to be replaced";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("reads '" + d + "/log_Images' too"), std::string::npos) << e.what();
+	}
 }
 
 TEST(OutputRule, ARawlogWhoseImagesARunWasKilledReplacingIsNotRead)

@@ -306,12 +306,27 @@ MirrorRim CalibrateApp::runRim()
 				doubts.push_back("the disc's centre is " + formatDouble(std::round(off)) + " px from the calibrated centre (" +
 								 formatDouble(cam->cx) + ", " + formatDouble(cam->cy) + ") of the ini" +
 								 ": the rim is not the mirror's, or the camera moved since it was calibrated");
-	// The centre is a pixel of images this size: another camera's size would place it elsewhere.
-	if (const auto cam = calibratedCamera(); cam && (cam->image_width != rim.image_width || cam->image_height != rim.image_height))
-		doubts.push_back("the images are " + std::to_string(rim.image_width) + "x" + std::to_string(rim.image_height) +
-						 " but the ini's camera is " + std::to_string(cam->image_width) + "x" +
-						 std::to_string(cam->image_height) + " (image_width, image_height): the centre would be written "
-						 "for another camera");
+	// The centre is a pixel of images this size: another camera's size (the -c ini's, or the one
+	// --save-to writes into) would place it elsewhere.
+	std::vector<std::pair<std::string, CameraParams>> cameras;
+	if (const auto cam = calibratedCamera(); cam) cameras.emplace_back(o_.ini.empty() ? o_.save_to : o_.ini, *cam);
+	if (!o_.ini.empty() && !o_.save_to.empty() && std::filesystem::exists(o_.save_to))
+		try
+		{
+			cameras.emplace_back(o_.save_to, RangefinderParams::loadFromFile(o_.save_to, o_.section).camera);
+		}
+		catch (const std::exception&)
+		{
+		}
+	for (const auto& [file, cam] : cameras)
+		if (cam.image_width != rim.image_width || cam.image_height != rim.image_height)
+		{
+			doubts.push_back("the images are " + std::to_string(rim.image_width) + "x" + std::to_string(rim.image_height) +
+							 " but the camera of " + file + " is " + std::to_string(cam.image_width) + "x" +
+							 std::to_string(cam.image_height) + " (image_width, image_height): the centre would be written "
+							 "for another camera");
+			break;
+		}
 	requireSure(doubts);
 	if (!o_.save_to.empty())
 	{

@@ -45,8 +45,15 @@ void keepModeOf(const std::string& target, const std::string& tmp)
 	if (fs::is_regular_file(target, ec)) fs::permissions(tmp, fs::status(target, ec).permissions());
 }
 
+std::string temporaryOf(const std::string& target)
+{
+	const std::filesystem::path t(target);
+	return (t.parent_path() / ("." + t.filename().string() + ".tmp-" + std::to_string(static_cast<long>(::getpid()))))
+		.string();
+}
+
 StagedFile::StagedFile(const std::string& given, const std::function<void(const std::string&)>& write)
-	: path_(replacedFileOf(given)), tmp_(path_ + ".tmp-" + std::to_string(static_cast<long>(::getpid())))
+	: path_(replacedFileOf(given)), tmp_(temporaryOf(path_))
 {
 	temporaries::add(tmp_);
 	try

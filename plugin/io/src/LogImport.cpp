@@ -241,7 +241,7 @@ UserLogs readUserLogs(const LogImportOptions& o)
 									 " m/s and turns " + formatDouble(std::round(turn * 100) / 100) +
 									 " rad/s, past any robot's (" + formatDouble(kMaxOdometrySpeed) + " m/s, " +
 									 formatDouble(std::round(kMaxOdometryTurnRate * 100) / 100) +
-									 " rad/s): x and y in millimetres, or the heading in degrees?");
+									 " rad/s): x and y in millimetres, the heading in degrees, or a jump (a reset)?");
 	}
 	for (const TimedImage& im : u.images)
 	{

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 #include <climits>
 #include <filesystem>
 #include <fstream>
@@ -241,12 +242,25 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 			throw std::runtime_error("the output folder '" + output + "' is a file" + (force ? "" : " (give another output)"));
 		if (force || fs::is_empty(p, ec)) return;
 		if (!isOutputFolderOf(output, program))
+		{
+			// Another program's output is not the user's to remove: say whose it is, and advise no removal.
+			std::ifstream marker(p / kOutputMarker);
+			std::string writer;
+			if (marker && std::getline(marker, writer) && !trimmed(writer).empty())
+				throw std::runtime_error("'" + output + "' is what " + trimmed(writer) + " wrote, not " + program +
+										 " (give another output)");
 			throw std::runtime_error("'" + output + "' is a folder " + program + " did not write (no " + kOutputMarker +
 									 " naming it)" + hint);
+		}
 		// The folder is the program's, but what a user put in it since is not.
 		if (const std::string added = firstUnlistedIn(output); !added.empty())
 			throw std::runtime_error("'" + (p / added).string() + "' is not something " + program +
 									 " wrote into its output '" + output + "' (move it out, or give another output)");
+		// Replacing it notes in its marker and renames it (moveAside()): found now, not after the run.
+		const fs::path parent = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+		if (::access((p / kOutputMarker).c_str(), W_OK) != 0 || ::access(parent.c_str(), W_OK | X_OK) != 0)
+			throw std::runtime_error("'" + output + "' cannot be replaced (" + std::strerror(errno) +
+									 "): it, its marker or the folder it is in is read-only");
 		return;
 	}
 	if (!fs::is_regular_file(status))
@@ -327,16 +341,22 @@ bool deadRun(const std::string& pid)
 	return id != ::getpid() && ::kill(static_cast<pid_t>(id), 0) != 0 && errno == ESRCH;
 }
 
-/** `p` is a folder whose marker says run `pid` moved it aside (moveAside()). */
-bool movedAsideBy(const fs::path& p, const std::string& pid)
+/** `p` is a folder whose marker has `line`. */
+bool markerSays(const fs::path& p, const std::string& line)
 {
 	std::error_code ec;
 	if (fs::is_symlink(p, ec) || !fs::is_directory(p, ec)) return false;
 	std::ifstream f(p / kOutputMarker);
-	for (std::string line; std::getline(f, line);)
-		if (line == "aside " + pid) return true;
+	for (std::string l; std::getline(f, l);)
+		if (l == line) return true;
 	return false;
 }
+
+/** `p` is a folder run `pid` made (markOutputFolder()). */
+bool madeBy(const fs::path& p, const std::string& pid) { return markerSays(p, "run " + pid); }
+
+/** `p` is a folder whose marker says run `pid` moved it aside (moveAside()). */
+bool movedAsideBy(const fs::path& p, const std::string& pid) { return markerSays(p, "aside " + pid); }
 }  // namespace
 
 std::string halfReplaced(const std::string& target)
@@ -382,16 +402,21 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	for (const auto& e : fs::directory_iterator(dir, ec))
 	{
 		const std::string other = e.path().filename().string();
-		for (const std::string suffix : {".staging-", ".tmp-", ".old-"})
+		// What a run names its leftovers (temporaryOf(), StagedFolder, moveAside()).
+		for (const auto& prefix : {name + ".staging-", "." + name + ".tmp-", name + ".old-"})
 		{
-			if (other.rfind(name + suffix, 0) != 0) continue;
-			const std::string pid = other.substr(name.size() + suffix.size());
+			if (other.rfind(prefix, 0) != 0) continue;
+			const std::string pid = other.substr(prefix.size());
 			if (!deadRun(pid)) continue;  // not a PID, or a run still going
-			// An old copy is ours only if the run of its PID moved it aside (moveAside()
-			// noted so in its marker): "NAME.old-2024" may be a user's backup.
-			if (suffix == ".old-" && !(marked(e.path()) && movedAsideBy(e.path(), pid))) continue;
+			// A folder is that run's only if its marker says so: "NAME.old-2024" or
+			// "NAME.staging-2024" may be a user's copy of a report, marker and all.
+			const bool old = prefix == name + ".old-";
+			if (fs::is_directory(fs::symlink_status(e.path(), ec)) &&
+				!(marked(e.path()) && (old ? movedAsideBy(e.path(), pid) : madeBy(e.path(), pid))))
+				continue;
+			if (old && !fs::is_directory(fs::symlink_status(e.path(), ec))) continue;
 			// An old copy put back where its output is missing is moved, not removed: its being ours is enough.
-			if (suffix == ".old-" && !fs::exists(fs::symlink_status(t, ec)))
+			if (old && !fs::exists(fs::symlink_status(t, ec)))
 				fs::rename(e.path(), t, ec);
 			else if (ours(e.path()))
 				fs::remove_all(e.path(), ec);
@@ -455,9 +480,9 @@ StagedFolder::~StagedFolder()
 void StagedFolder::commit()
 {
 	listOutputFolder(staging_);
+	replaceFolder(target_, staging_);  // if it fails, the old folder is back and the staging goes with this object
 	temporaries::forget(staging_);
 	done_ = true;
-	replaceFolder(target_, staging_);
 }
 
 void StagedFolder::keep()
@@ -496,7 +521,7 @@ std::string firstUnlistedIn(const std::string& dir)
 void markOutputFolder(const std::string& dir, const std::string& program)
 {
 	std::ofstream f(fs::path(dir) / kOutputMarker);
-	f << program << "\n";
+	f << program << "\nrun " << ::getpid() << "\n";  // the run: a leftover of it is told from a copy
 	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
 }
 

@@ -61,14 +61,29 @@ bool imagesLinkOf(const std::string& rawlog, const std::string& images)
 void requireImagesOf(const std::string& images, const std::string& rawlog)
 {
 	std::error_code ec;
-	if (fs::is_symlink(images, ec) || !fs::is_directory(images, ec)) return;
-	std::ifstream f(fs::path(images) / kOutputMarker);
+	const fs::path dir = fs::path(rawlog).parent_path();
 	const std::string mine = fs::path(rawlog).filename().string();
+	// Another rawlog here that reads these images (NAME, NAME.rawlog, NAME.rawlog.gz; a link too).
+	std::string stem = mine;
+	for (const std::string ext : {".rawlog.gz", ".rawlog"})
+		if (stem.size() > ext.size() && stem.compare(stem.size() - ext.size(), ext.size(), ext) == 0)
+		{
+			stem.resize(stem.size() - ext.size());
+			break;
+		}
+	for (const auto& other : {stem, stem + ".rawlog", stem + ".rawlog.gz"})
+		if (other != mine && fs::exists(fs::symlink_status(dir / other, ec)) &&
+			(fs::is_symlink(dir / other, ec) || isOfKind((dir / other).string(), OutputKind::Rawlog)))
+			throw std::runtime_error("'" + (dir / other).string() + "' reads '" + images + "' too: '" + rawlog +
+									 "' would give it other images (give the output another name)");
+	if (fs::is_symlink(images, ec) || !fs::is_directory(images, ec)) return;
+	// The rawlog the folder was written with, if it is of this name's stem (a copied folder names another).
+	std::ifstream f(fs::path(images) / kOutputMarker);
 	for (std::string line; std::getline(f, line);)
 		if (line.rfind("rawlog ", 0) == 0 && line.substr(7) != mine)
 		{
-			const fs::path owner = fs::path(rawlog).parent_path() / line.substr(7);
-			if (fs::exists(fs::symlink_status(owner, ec)))
+			const fs::path owner = dir / line.substr(7);
+			if (imagesDirFor(owner.string()) == images && fs::exists(fs::symlink_status(owner, ec)))
 				throw std::runtime_error("'" + images + "' holds the images of '" + owner.string() + "', which '" + rawlog +
 										 "' would take over (give the output another name)");
 		}
@@ -90,9 +105,9 @@ void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& pr
 RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, int gz_level)
 	: path_(replacedFileOf(path)),
 	  owner_(program),  // its NAME_Images folder's marker names the program, as any folder of its
-	  tmp_path_(path_ + ".tmp-" + std::to_string(::getpid())),
+	  tmp_path_(temporaryOf(path_)),
 	  images_(imagesDirFor(path_)),  // beside the file written, where a reader of it looks
-	  tmp_images_(images_ + ".tmp-" + std::to_string(::getpid())),
+	  tmp_images_(temporaryOf(images_)),
 	  out_(std::make_unique<mrpt::io::CFileGZOutputStream>())
 {
 	recoverLeftoversOf(path_, OutputKind::Rawlog);  // what killed runs of this output left

@@ -32,6 +32,12 @@ void keepModeOf(const std::string& target, const std::string& tmp);
  * several files stages each, then commits them together, so a failure while
  * any is written leaves every old file whole. Destroyed uncommitted (an
  * error, an exception), it removes its temporary. */
+/** Where a run writes `target` (a file or a folder) before renaming it into
+ * place: ".NAME.tmp-PID" beside it. Hidden, and of a form nobody names a
+ * backup, so that the next run can tell a killed run's leftover from a
+ * user's "NAME.tmp-2024". */
+std::string temporaryOf(const std::string& target);
+
 class StagedFile
 {
    public:

@@ -1,7 +1,7 @@
 #pragma once
 // The temporary files and folders a run has made and not yet renamed into
 // place. An interrupted run (SIGINT, SIGTERM) removes them before it ends,
-// so it leaves no NAME.tmp-PID files or half-filled image folders behind.
+// so it leaves no .NAME.tmp-PID files or half-filled image folders behind.
 
 #include <string>
 
