@@ -8,6 +8,7 @@
 #include "omnirange_eval/SensoryFrameFormat.h"
 
 #include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Temporaries.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/Progress.h>
 #include <omnirange/io/RawlogScan.h>
@@ -147,10 +148,9 @@ Metrics Experiment::runStages()
 	// The robot's camera makes the images, [rangefinder]'s reads them: another mirror, scale or
 	// centre (a --robot of another camera) reads every ray wrong, which the report must not blame on colour.
 	r_.camera_mismatch = cameraMismatch(sim::RobotParams::loadFile(c_.robot).omnicam.camera, c_.rangefinder.camera);
-	if (!r_.camera_mismatch.empty())
-		MRPT_LOG_WARN_STREAM("the robot's camera (" << c_.robot << ") is not [rangefinder]'s camera: they differ in "
-													<< joined(r_.camera_mismatch)
-													<< ": the images are read as another camera's, and every range with them");
+	if (!r_.camera_mismatch.empty())  // on stderr, -q or not: every figure of the run depends on it
+		temporaries::warn("the robot's camera (" + c_.robot + ") is not [rangefinder]'s camera: they differ in " +
+						  joined(r_.camera_mismatch) + ": the images are read as another camera's, and every range with them");
 	fs::create_directories(out_ + "/dataset");
 	stage_ = 0;
 	const bool rbpf = std::any_of(r_.sensors.begin(), r_.sensors.end(), [](const auto& s) { return !s.rbpf_ini.empty(); });

@@ -142,16 +142,16 @@ std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r
 	const double max_difference = AccuracyOptions{}.max_difference;
 	std::ostringstream o;
 	o << "# omnirange experiment: " << c.name << "\n\n"
+	  << (r.camera_mismatch.empty()
+			  ? std::string()
+			  : "**Warning:** the robot's camera, which made the images, is not `[rangefinder]`'s, which read them: they "
+				"differ in " + joined(r.camera_mismatch) + ". Every range below is read through the wrong camera.\n\n")
 	  << "From `" << c.ini_file << "`: " << r.simulated.frames << " simulated frames ("
 	  << fmt("%.0f", r.simulated.route_seconds) << " s of route), histogram trained on " << r.training_pairs
 	  << " image/laser pairs from the route's first " << r.training_until << " frames; everything below is scored on the "
 	  << (r.simulated.frames - r.training_until) << " frames after them."
 	  << (r.learned.empty() ? "" : " Parameters learned against the laser: " + r.learned + ".")
 	  << " The whole run took " << fmt("%.0f", r.seconds) << " s. The robot: `" << c.robot << "`.\n\n"
-	  << (r.camera_mismatch.empty()
-			  ? std::string()
-			  : "**Warning:** the robot's camera, which made the images, is not `[rangefinder]`'s, which read them: they "
-				"differ in " + joined(r.camera_mismatch) + ". Every range below is read through the wrong camera.\n\n")
 	  << "## Accuracy: laser against omnicam (paper Table II, Fig. 9)\n\n"
 	  << r.accuracy.table(max_difference) << "\n![differences](accuracy_histogram.png)\n\n"
 	  << (r.accuracy.truth.frames > 0 ? "## Accuracy: omnicam against the true floor boundary\n\nEvery omnicam ray against "
