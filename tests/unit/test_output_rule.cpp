@@ -273,7 +273,11 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	writeRawlog(d + "/.x.rawlog.tmp-999993");
 	write(d + "/.x.rawlog.tmp-999992", "a user's text");
 	writeRawlog(d + "/x.rawlog.tmp-2023");
+	writeRawlog(d + "/x.rawlog.staging-2023");
+	writeRawlog(d + "/x.rawlog.old-2023");
 	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
+	EXPECT_TRUE(fs::exists(d + "/x.rawlog.staging-2023"));
+	EXPECT_TRUE(fs::exists(d + "/x.rawlog.old-2023"));
 	EXPECT_FALSE(fs::exists(d + "/.x.rawlog.tmp-999994"));
 	EXPECT_FALSE(fs::exists(d + "/.x.rawlog.tmp-999993"));
 	EXPECT_TRUE(fs::exists(d + "/.x.rawlog.tmp-999992"));

@@ -184,13 +184,10 @@ PolarScanner::PolarScanner(const OmniCameraModel& cam, const PolarScannerParams&
 			const long u = std::lround(f.u), v = std::lround(f.v);
 			if (u < 0 || v < 0 || u >= width_ || v >= height_)
 				throw std::invalid_argument(
-					"scanner: the scan circle (max_range " +
-					std::to_string(p_.max_range) + " m = " + std::to_string(max_rho_) +
-					" px, plus the N+K+1 = " + std::to_string(window) +
-					" px filter window) does not fit in the " + std::to_string(width_) +
-					"x" + std::to_string(height_) + " image around (" +
-					std::to_string(cam.params().cx) + ", " +
-					std::to_string(cam.params().cy) + ")");
+					"scanner: the scan circle (max_range " + formatDouble(p_.max_range) + " m = " +
+					formatDouble(std::round(max_rho_ * 10) / 10) + " px, plus the N+K+1 = " + std::to_string(window) +
+					" px filter window) does not fit in the " + std::to_string(width_) + "x" + std::to_string(height_) +
+					" image around (" + formatDouble(cam.params().cx) + ", " + formatDouble(cam.params().cy) + ")");
 			const long idx = v * width_ + u;
 			if (idx == prev) continue;
 			prev = idx;

@@ -411,10 +411,11 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 			// A folder is that run's only if its marker says so: "NAME.old-2024" or
 			// "NAME.staging-2024" may be a user's copy of a report, marker and all.
 			const bool old = prefix == name + ".old-";
+			// A file's temporaries are hidden (temporaryOf()): "f.hist.staging-2023" is a user's copy.
+			if (!fs::is_directory(fs::symlink_status(e.path(), ec)) && prefix != "." + name + ".tmp-") continue;
 			if (fs::is_directory(fs::symlink_status(e.path(), ec)) &&
 				!(marked(e.path()) && (old ? movedAsideBy(e.path(), pid) : madeBy(e.path(), pid))))
 				continue;
-			if (old && !fs::is_directory(fs::symlink_status(e.path(), ec))) continue;
 			// An old copy put back where its output is missing is moved, not removed: its being ours is enough.
 			if (old && !fs::exists(fs::symlink_status(t, ec)))
 				fs::rename(e.path(), t, ec);
