@@ -303,11 +303,7 @@ std::string moveAside(const std::string& target)
 	std::error_code ec;
 	// The proof that TARGET.old-PID is this run's and not a user's backup of that name.
 	if (!fs::is_symlink(target, ec) && fs::exists(fs::path(target) / kOutputMarker, ec))
-	{
-		std::ofstream f(fs::path(target) / kOutputMarker, std::ios::app);
-		f << "aside " << ::getpid() << "\n";
-		if (!f) throw std::runtime_error(cannotWrite((fs::path(target) / kOutputMarker).string()));
-	}
+		noteInMarker(target, "aside " + std::to_string(::getpid()));
 	fs::rename(target, old);
 	return old;
 }
@@ -492,21 +488,22 @@ void StagedFolder::keep()
 	done_ = true;
 }
 
-void listOutputFile(const std::string& dir, const std::string& name)
+void noteInMarker(const std::string& dir, const std::string& line)
 {
+	errno = 0;
 	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
-	f << "file " << name << "\n";
+	f << line << "\n";
 	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
 }
+
+void listOutputFile(const std::string& dir, const std::string& name) { noteInMarker(dir, "file " + name); }
 
 void listOutputFolder(const std::string& dir)
 {
 	bool has_list = false;
 	const std::set<std::string> listed = listedIn(dir, has_list);
-	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
 	for (const auto& e : filesIn(dir))
-		if (!listed.count(e)) f << "file " << e << "\n";
-	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
+		if (!listed.count(e)) listOutputFile(dir, e);
 }
 
 std::string firstUnlistedIn(const std::string& dir)

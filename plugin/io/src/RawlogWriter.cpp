@@ -19,17 +19,23 @@ namespace fs = std::filesystem;
 
 namespace omnirange
 {
-std::string imagesDirFor(const std::string& rawlog_path)
+namespace
 {
-	fs::path p(rawlog_path);
-	std::string stem = p.filename().string();
+/** NAME of NAME.rawlog, NAME.rawlog.gz or NAME: the three share NAME_Images. */
+std::string rawlogStem(const std::string& file_name)
+{
+	std::string stem = file_name;
 	for (const std::string ext : {".rawlog.gz", ".rawlog"})
 		if (stem.size() > ext.size() && stem.compare(stem.size() - ext.size(), ext.size(), ext) == 0)
-		{
-			stem.resize(stem.size() - ext.size());
-			break;
-		}
-	return (p.parent_path() / (stem + "_Images")).string();
+			return stem.substr(0, stem.size() - ext.size());
+	return stem;
+}
+}  // namespace
+
+std::string imagesDirFor(const std::string& rawlog_path)
+{
+	const fs::path p(rawlog_path);
+	return (p.parent_path() / (rawlogStem(p.filename().string()) + "_Images")).string();
 }
 
 std::string imagesDirToRead(const std::string& rawlog_path)
@@ -64,13 +70,7 @@ void requireImagesOf(const std::string& images, const std::string& rawlog)
 	const fs::path dir = fs::path(rawlog).parent_path();
 	const std::string mine = fs::path(rawlog).filename().string();
 	// Another rawlog here that reads these images (NAME, NAME.rawlog, NAME.rawlog.gz; a link too).
-	std::string stem = mine;
-	for (const std::string ext : {".rawlog.gz", ".rawlog"})
-		if (stem.size() > ext.size() && stem.compare(stem.size() - ext.size(), ext.size(), ext) == 0)
-		{
-			stem.resize(stem.size() - ext.size());
-			break;
-		}
+	const std::string stem = rawlogStem(mine);
 	for (const auto& other : {stem, stem + ".rawlog", stem + ".rawlog.gz"})
 		if (other != mine && fs::exists(fs::symlink_status(dir / other, ec)) &&
 			(fs::is_symlink(dir / other, ec) || isOfKind((dir / other).string(), OutputKind::Rawlog)))
@@ -153,9 +153,7 @@ void RawlogWriter::startImages()
 	fs::remove_all(tmp_images_);
 	fs::create_directories(tmp_images_);
 	markOutputFolder(tmp_images_, owner_);
-	std::ofstream marker(fs::path(tmp_images_) / kOutputMarker, std::ios::app);
-	marker << "rawlog " << fs::path(path_).filename().string() << "\n";
-	if (!marker) throw std::runtime_error("cannot write '" + (fs::path(tmp_images_) / kOutputMarker).string() + "'");
+	noteInMarker(tmp_images_, "rawlog " + fs::path(path_).filename().string());
 	has_images_ = true;
 }
 

@@ -60,6 +60,10 @@ void requireDistinctOutputs(const std::vector<std::string>& paths);
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force = false);
 
+/** Appends `line` to the marker of the folder `dir` (what its run, its
+ * files, its rawlog or its moving aside were); throws naming the marker. */
+void noteInMarker(const std::string& dir, const std::string& line);
+
 /** Adds to the marker of `dir` the file `name` (relative to it), before the
  * program writes it: a run killed while it fills a folder leaves a list of
  * what was its own, so what a user adds there later is told apart. */
