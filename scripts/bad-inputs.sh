@@ -100,7 +100,8 @@ run_case() {
   [ $code -eq 124 ] && verdict="PROBLEM (hang)"
   [ $code -gt 128 ] && verdict="PROBLEM (signal $((code - 128)))"
   [ "$verdict" == "pass" ] || problems=$((problems + 1))
-  local app; app=$(basename "$1")
+  local app a; for a in "$@"; do case "$a" in */omnirange-*) app=$(basename "$a"); break ;; esac; done
+  app=${app:-$(basename "$1")}
   echo "| $n | $what | $app | $code | ${first:-} | $lines | $left | $kept | $verdict |"
 }
 
@@ -443,6 +444,17 @@ kept few_report.failed/notes.txt
 head -3 "$src/docs/results/suite.csv" > two_rows.csv && cp "$src/README.md" readme_copy.md && cp readme_copy.md readme_copy.orig
 run_case "summary: --fill from a CSV that lacks rows the table shows" "error:would lose its rows" none.out -- "$apps/omnirange-summary" -q --csv two_rows.csv --fill readme_copy.md
 cmp -s readme_copy.md readme_copy.orig || { echo "| | PROBLEM: readme_copy.md was changed by a refused fill |"; problems=$((problems + 1)); }
+# After a fourteenth: another user's output in a sticky folder (as /tmp), an old output that cannot be
+# removed whole. Both need a user other than root: root runs them as nobody, if nobody can read here.
+nobody=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+if [ "$(id -u)" -eq 0 ] && "${nobody[@]}" test -r f.ini -a -r s_Images 2>/dev/null; then
+  mkdir -m 1777 sticky && cp floor.hist sticky/f.hist && chmod 666 sticky/f.hist
+  run_case "train: another user's histogram in a sticky folder" "error:belongs to another user" none.out -- "${nobody[@]}" "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o sticky/f.hist
+  cmp -s sticky/f.hist floor.hist || { echo "| | PROBLEM: another user's sticky/f.hist was changed |"; problems=$((problems + 1)); }
+  mkdir -m 777 ro_old && "${nobody[@]}" "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o ro_old/d.rawlog && chmod a-w ro_old/d_Images
+  run_case "sim: its old images cannot all be removed (a read-only folder)" "warn:could not remove the replaced" none.out -- "${nobody[@]}" "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o ro_old/d.rawlog
+  "$apps/omnirange-scan" -q -i ro_old/d.rawlog -c f.ini -H floor.hist -o ro_old_scan.rawlog || { echo "| | PROBLEM: the new rawlog beside an old folder kept is not read |"; problems=$((problems + 1)); }
+fi
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

@@ -144,8 +144,9 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		if (progress) progress(static_cast<int>(k + 1), static_cast<int>(in.poses.size()));
 	}
 
-	// The true map, as an MRPT grid map and a PNG: staged, then committed
-	// with the rawlog and its images, so a failure leaves the old three whole.
+	// The true map, as an MRPT grid map and a PNG: staged, then put in place
+	// after the images and before the rawlog (RawlogWriter::commit()), so that
+	// no rawlog is ever beside another run's true map.
 	const std::string base = stemOf(o.output);
 	const auto grid = trueMap(in.world, o.map_resolution, robot.omnicam.camera.h);
 	StagedFile map(base + "_truemap.gridmap.gz", [&](const std::string& tmp) {
@@ -160,9 +161,10 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	mrpt::img::CImage png;
 	grid.getAsImage(png, true);  // north up, as saveAsBitmapFile() draws it
 	StagedFile picture = stageImage(base + "_truemap.png", png.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY));
-	out.commit();
-	map.commit();
-	picture.commit();
+	out.commit([&] {
+		map.commit();
+		picture.commit();
+	});
 
 	SimSummary s;
 	s.frames = static_cast<int>(in.poses.size());

@@ -19,6 +19,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace omnirange;
 namespace fs = std::filesystem;
@@ -262,6 +264,24 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 				  added) << said;
 		fs::remove_all(staging);
 	}
+	// Killed before it listed its files (an experiment during its simulation): what it wrote by then is
+	// its hidden temporaries and folders its marker names; with anything else in it, it is kept and said.
+	for (const bool added : {false, true})
+	{
+		const std::string staging = d + "/report.staging-999988";
+		fs::create_directories(staging + "/dataset/.log_Images.tmp-999988");
+		write(staging + "/" + kOutputMarker, "omnirange-test\nrun 999988\n");
+		write(staging + "/dataset/.log_Images.tmp-999988/" + kOutputMarker, "omnirange-test\nrun 999988\nfile 0.jpg\n");
+		write(staging + "/dataset/.log_Images.tmp-999988/0.jpg", "ours");
+		write(staging + "/dataset/.log.rawlog.tmp-999988", "ours");
+		write(staging + "/dataset/" + (added ? "notes.txt" : ".log_truemap.png.tmp-999988"), "either");
+		testing::internal::CaptureStderr();
+		recoverLeftoversOf(d + "/report", OutputKind::Folder, "omnirange-test");
+		const std::string said = testing::internal::GetCapturedStderr();
+		EXPECT_EQ(fs::exists(staging), added) << (added ? "a user's file was removed" : "an unlisted leftover stayed");
+		EXPECT_EQ(said.find("dataset/notes.txt") != std::string::npos, added) << said;
+		fs::remove_all(staging);
+	}
 	// A path through a folder that is not there: the system could not write it, though it reads as "d".
 	EXPECT_NE(refusal(d + "/missing/..", OutputKind::Folder).find("passes through"), std::string::npos);
 	EXPECT_NE(refusal(d + "/missing/../x.rawlog", OutputKind::Rawlog).find("which is not a folder"), std::string::npos);
@@ -283,6 +303,15 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	EXPECT_TRUE(fs::exists(d + "/.x.rawlog.tmp-999992"));
 	EXPECT_TRUE(fs::exists(d + "/x.rawlog.tmp-2023"));
 	EXPECT_EQ(temporaryOf(d + "/x.rawlog").rfind(d + "/.x.rawlog.tmp-", 0), 0u);
+	// A run killed a moment ago, not yet reaped by its parent (a zombie), is gone too.
+	const pid_t zombie = ::fork();
+	if (zombie == 0) ::_exit(0);
+	for (int i = 0; i < 200 && test::readText("/proc/" + std::to_string(zombie) + "/stat").find(") Z") == std::string::npos; ++i)
+		::usleep(10000);
+	write(d + "/.x.rawlog.tmp-" + std::to_string(zombie), "");
+	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
+	EXPECT_FALSE(fs::exists(d + "/.x.rawlog.tmp-" + std::to_string(zombie)));
+	::waitpid(zombie, nullptr, 0);
 	// A user's gzip file (a .tar.gz backup) is gzip but no rawlog: a leftover's
 	// name does not make it one, and a rawlog output does not replace it.
 	const auto gzipOf = [](const std::string& path) {
@@ -401,6 +430,39 @@ TEST(OutputRule, ARawlogWhoseImagesARunWasKilledReplacingIsNotRead)
 	{
 		EXPECT_NE(std::string(e.what()).find("log_Images.old-999988"), std::string::npos) << e.what();
 	}
+}
+
+TEST(OutputRule, WhatBelongsWithARawlogGoesInAfterItsImagesAndBeforeIt)
+{
+	// A simulation's true map: a run killed while it goes in must leave what readers refuse,
+	// never a whole-looking rawlog beside another run's true map.
+	const std::string d = fresh("with_images");
+	const auto writeLog = [&](int value, const std::function<void()>& with_images) {
+		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit(with_images);
+	};
+	writeLog(1, [&] { write(d + "/log_truemap.txt", "first"); });
+	const std::string first_rawlog = read(d + "/log.rawlog");
+	bool called = false;
+	writeLog(2, [&] {
+		called = true;
+		// The state a kill here leaves: the new images in, the old rawlog, the old images aside.
+		EXPECT_EQ(read(d + "/log.rawlog"), first_rawlog);
+		EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 2);
+		// ... which readers refuse once this run is gone (ARawlogWhoseImagesARunWasKilledReplacingIsNotRead).
+		EXPECT_TRUE(fs::exists(d + "/log_Images.old-" + std::to_string(::getpid())));
+		write(d + "/log_truemap.txt", "second");
+	});
+	EXPECT_TRUE(called);
+	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog"));
+	EXPECT_EQ(read(d + "/log_truemap.txt"), "second");
+	// One that fails: the old images come back and the rawlog is the old one.
+	const std::string second_rawlog = read(d + "/log.rawlog");
+	EXPECT_THROW(writeLog(3, [] { throw std::runtime_error("cannot put the true map in place"); }), std::runtime_error);
+	EXPECT_EQ(read(d + "/log.rawlog"), second_rawlog);
+	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 2);
 }
 
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)

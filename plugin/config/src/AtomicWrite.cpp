@@ -3,6 +3,7 @@
 #include "omnirange/config/Temporaries.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <opencv2/imgcodecs.hpp>
 #include <unistd.h>
 #include <zlib.h>
@@ -34,8 +35,23 @@ std::string replacedFileOf(const std::string& given)
 		const auto mode = fs::status(path, ec).permissions();
 		if (::access(path.c_str(), W_OK) != 0 || (mode & fs::perms::owner_write) == fs::perms::none)
 			throw std::runtime_error("'" + given + "' is read-only: refusing to replace it");
+		if (const std::string why = whyCannotReplace(path); !why.empty())
+			throw std::runtime_error("'" + given + "' cannot be replaced (" + why + ")");
 	}
 	return path;
+}
+
+std::string whyCannotReplace(const std::string& path)
+{
+	const std::filesystem::path p(path);
+	const std::string parent = p.parent_path().empty() ? "." : p.parent_path().string();
+	if (::access(parent.c_str(), W_OK | X_OK) != 0) return std::strerror(errno);
+	struct stat folder{}, file{};
+	if (::stat(parent.c_str(), &folder) != 0 || ::lstat(path.c_str(), &file) != 0) return "";
+	const uid_t me = ::geteuid();
+	if ((folder.st_mode & S_ISVTX) && me != 0 && file.st_uid != me && folder.st_uid != me)
+		return "it belongs to another user, in a folder where only its owner may rename it";
+	return "";
 }
 
 void keepModeOf(const std::string& target, const std::string& tmp)
@@ -92,8 +108,9 @@ void StagedFile::commit()
 	temporaries::forget(tmp_);
 	if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
 	{
+		const std::string reason = std::strerror(errno);
 		std::remove(tmp_.c_str());
-		throw std::runtime_error("cannot rename temporary file to '" + path_ + "'");
+		throw std::runtime_error("cannot put the new '" + path_ + "' in place (" + reason + ")");
 	}
 }
 

@@ -257,10 +257,11 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 			throw std::runtime_error("'" + (p / added).string() + "' is not something " + program +
 									 " wrote into its output '" + output + "' (move it out, or give another output)");
 		// Replacing it notes in its marker and renames it (moveAside()): found now, not after the run.
-		const fs::path parent = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-		if (::access((p / kOutputMarker).c_str(), W_OK) != 0 || ::access(parent.c_str(), W_OK | X_OK) != 0)
-			throw std::runtime_error("'" + output + "' cannot be replaced (" + std::strerror(errno) +
-									 "): it, its marker or the folder it is in is read-only");
+		if (::access((p / kOutputMarker).c_str(), W_OK) != 0)
+			throw std::runtime_error("'" + output + "' cannot be replaced: its marker '" + kOutputMarker + "' is " +
+									 (errno == EACCES ? "read-only" : std::strerror(errno)));
+		if (const std::string why = whyCannotReplace(output); !why.empty())
+			throw std::runtime_error("'" + output + "' cannot be replaced (" + why + ")");
 		return;
 	}
 	if (!fs::is_regular_file(status))
@@ -304,7 +305,9 @@ std::string moveAside(const std::string& target)
 	// The proof that TARGET.old-PID is this run's and not a user's backup of that name.
 	if (!fs::is_symlink(target, ec) && fs::exists(fs::path(target) / kOutputMarker, ec))
 		noteInMarker(target, "aside " + std::to_string(::getpid()));
-	fs::rename(target, old);
+	fs::rename(target, old, ec);
+	if (ec)
+		throw std::runtime_error("cannot move '" + target + "' aside to replace it (" + ec.message() + "); it is as it was");
 	return old;
 }
 
@@ -324,7 +327,7 @@ void replaceFolder(const std::string& target, const std::string& fresh)
 		throw std::runtime_error("cannot move '" + fresh + "' to '" + target + "' (" + e.what() + "); '" + target +
 								 "' is as it was");
 	}
-	if (had_old) fs::remove_all(old, ec);
+	if (had_old) removeReplaced(old);
 }
 
 namespace
@@ -334,7 +337,14 @@ bool deadRun(const std::string& pid)
 {
 	if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) return false;
 	const long id = std::stol(pid);
-	return id != ::getpid() && ::kill(static_cast<pid_t>(id), 0) != 0 && errno == ESRCH;
+	if (id == ::getpid()) return false;
+	if (::kill(static_cast<pid_t>(id), 0) != 0) return errno == ESRCH;
+	// Killed but not yet reaped by its parent (a zombie): gone all the same.
+	std::ifstream stat("/proc/" + pid + "/stat");
+	std::string line;
+	std::getline(stat, line);
+	const auto end_of_name = line.rfind(')');
+	return end_of_name != std::string::npos && line.size() > end_of_name + 2 && line[end_of_name + 2] == 'Z';
 }
 
 /** `p` is a folder whose marker has `line`. */
@@ -351,9 +361,66 @@ bool markerSays(const fs::path& p, const std::string& line)
 /** `p` is a folder run `pid` made (markOutputFolder()). */
 bool madeBy(const fs::path& p, const std::string& pid) { return markerSays(p, "run " + pid); }
 
+/** Removes `p`, its marker last (what cannot be removed whole stays a
+ * folder of ours); "" or the system's reason it could not. */
+std::string removedMarkerLast(const fs::path& p)
+{
+	std::error_code ec, failed;
+	std::vector<fs::path> inside;
+	if (fs::is_directory(fs::symlink_status(p, ec)))
+		for (const auto& e : fs::directory_iterator(p, ec))
+			if (e.path().filename() != kOutputMarker) inside.push_back(e.path());
+	for (const auto& q : inside)
+		if (fs::remove_all(q, ec); ec && !failed) failed = ec;
+	fs::remove_all(p, ec);
+	if (!fs::exists(fs::symlink_status(p, ec))) return "";
+	return failed ? failed.message() : "a file in it could not be removed";
+}
+
 /** `p` is a folder whose marker says run `pid` moved it aside (moveAside()). */
 bool movedAsideBy(const fs::path& p, const std::string& pid) { return markerSays(p, "aside " + pid); }
+
+/** The first thing under `dir` that the run `pid` did not write, relative to
+ * `dir` ("" if none). A folder with a list of its files (listOutputFile())
+ * is compared with it; one without (a run killed before it listed them)
+ * holds only what runs write before they list: a hidden temporary of run
+ * `pid` (temporaryOf()), a folder made by run `pid`, a plain folder holding
+ * only these. */
+std::string firstNotMadeBy(const fs::path& dir, const std::string& pid)
+{
+	bool has_list = false;
+	listedIn(dir.string(), has_list);
+	if (has_list) return firstUnlistedIn(dir.string());
+	std::error_code ec;
+	for (const auto& e : fs::directory_iterator(dir, ec))
+	{
+		const std::string name = e.path().filename().string();
+		const std::string tmp = ".tmp-" + pid;
+		if (name == kOutputMarker) continue;
+		if (fs::is_directory(fs::symlink_status(e.path(), ec)))
+		{
+			if (const std::string inner = firstNotMadeBy(e.path(), pid); !inner.empty()) return name + "/" + inner;
+		}
+		else if (!(name.front() == '.' && name.size() > tmp.size() &&
+				   name.compare(name.size() - tmp.size(), tmp.size(), tmp) == 0))
+			return name;
+	}
+	return "";
+}
 }  // namespace
+
+void removeReplaced(const std::string& old)
+{
+	const std::string why = removedMarkerLast(old);
+	if (why.empty()) return;
+	// Renamed, so that no reader takes it for an output half replaced (halfReplaced()).
+	const auto at = old.rfind(".old-");
+	const std::string kept = at == std::string::npos ? old : old.substr(0, at) + ".replaced-" + old.substr(at + 5);
+	std::error_code ec;
+	fs::rename(old, kept, ec);
+	temporaries::warn("could not remove the replaced '" + (ec ? old : kept) + "' (" + why +
+					  "): the new output is whole; remove that folder yourself");
+}
 
 std::string halfReplaced(const std::string& target)
 {
@@ -381,19 +448,13 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	const auto marked = [&](const fs::path& p) {
 		return program.empty() ? fs::exists(p / kOutputMarker, ec) : isOutputFolderOf(p.string(), program);
 	};
-	// Removed only when every file in it is one the run listed as its own
-	// (a folder with no list yet: nothing but the marker).
-	const auto ours = [&](const fs::path& p) {
-		if (fs::is_directory(fs::symlink_status(p, ec)))
-		{
-			if (!marked(p)) return false;
-			if (!firstUnlistedIn(p.string()).empty()) return false;
-			bool has_list = false;
-			listedIn(p.string(), has_list);
-			return has_list || filesIn(p.string()).empty();
-		}
+	// A folder: what in it the run did not make (firstNotMadeBy()); a file: not of the output's kind.
+	const auto notOurs = [&](const fs::path& p, const std::string& pid) -> std::string {
+		if (fs::is_directory(fs::symlink_status(p, ec))) return marked(p) ? firstNotMadeBy(p, pid) : p.string();
 		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
-			   (fs::file_size(p, ec) == 0 || isOfKind(p.string(), kind));
+					   (fs::file_size(p, ec) == 0 || isOfKind(p.string(), kind))
+				   ? ""
+				   : p.string();
 	};
 	for (const auto& e : fs::directory_iterator(dir, ec))
 	{
@@ -415,14 +476,14 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 			// An old copy put back where its output is missing is moved, not removed: its being ours is enough.
 			if (old && !fs::exists(fs::symlink_status(t, ec)))
 				fs::rename(e.path(), t, ec);
-			else if (ours(e.path()))
-				fs::remove_all(e.path(), ec);
-			else if (const std::string added = fs::is_directory(e.path(), ec) && marked(e.path())
-												   ? firstUnlistedIn(e.path().string())
-												   : "";
-					 !added.empty())
+			else if (const std::string added = notOurs(e.path(), pid); added.empty())
+			{
+				if (const std::string why = removedMarkerLast(e.path()); !why.empty())
+					temporaries::warn("could not remove '" + e.path().string() + "', a killed run's leftover (" + why + ")");
+			}
+			else if (fs::is_directory(e.path(), ec))
 				temporaries::warn("kept '" + e.path().string() + "', a killed run's leftover: it holds '" + added +
-								  "', which is not on that run's list of its files (remove the folder once nothing in it is yours)");
+								  "', which that run did not write (remove the folder once nothing in it is yours)");
 		}
 	}
 }

@@ -30,7 +30,7 @@ RawlogReader::RawlogReader(const std::string& path)
 	if (const std::string old = halfReplaced(imagesDirToRead(path)); !old.empty())
 		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path +
 								 "': a run that was replacing them was killed, leaving the old ones in '" + old +
-								 "' (run it again, or remove the folder that is not this rawlog's)");
+								 "' (run that program again: which folder is this rawlog's cannot be told)");
 	mrpt::img::CImage::setImagesPathBase(imagesDirToRead(path));
 	temporaries::setActivity("reading rawlog '" + path + "'");
 }

@@ -188,7 +188,7 @@ mrpt::img::CImage RawlogWriter::externalImage(
 	return img;
 }
 
-void RawlogWriter::commit()
+void RawlogWriter::commit(const std::function<void()>& with_images)
 {
 	out_->close();
 	// CFileGZOutputStream::close() reports nothing: read the file back, so a
@@ -199,6 +199,7 @@ void RawlogWriter::commit()
 	const bool link = !has_images_ && !link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_);
 	if (!has_images_ && !link)
 	{
+		if (with_images) with_images();
 		fs::rename(tmp_path_, path_);
 		committed_ = true;
 		return;
@@ -220,6 +221,7 @@ void RawlogWriter::commit()
 		// Relative, so that a folder holding both can be moved (a report's staging renamed into place).
 		else fs::create_directory_symlink(fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path()), images_);
 		moved_in = true;
+		if (with_images) with_images();
 		fs::rename(tmp_path_, path_);
 	}
 	catch (const std::exception& e)
@@ -231,8 +233,7 @@ void RawlogWriter::commit()
 								 "); the old ones are as they were");
 	}
 	committed_ = true;
-	std::error_code ec;
-	if (had_old) fs::remove_all(old, ec);
+	if (had_old) removeReplaced(old);
 }
 
 }  // namespace omnirange

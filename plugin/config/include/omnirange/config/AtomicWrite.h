@@ -23,6 +23,11 @@ std::string namingTheOutput(std::string message, const std::string& from, const 
  * (root may write anything, but a user who made a file read-only meant it
  * to stay). */
 std::string replacedFileOf(const std::string& given);
+
+/** Why this process cannot rename or remove `path` in its folder, as the
+ * system's reason ("" when it can): the folder is not writable, or it is
+ * sticky (as /tmp) and neither `path` nor the folder is this user's. */
+std::string whyCannotReplace(const std::string& path);
 /** Gives the finished temporary `tmp` the mode of the file `target` it is
  * about to replace, if that exists. */
 void keepModeOf(const std::string& target, const std::string& tmp);

@@ -120,6 +120,12 @@ std::string moveAside(const std::string& target);
  * the error names both. All-or-nothing for a multi-file output. */
 void replaceFolder(const std::string& target, const std::string& fresh);
 
+/** Removes `old`, what an output replaced (TARGET.old-PID). What cannot be
+ * removed is renamed TARGET.replaced-PID (no reader takes it for a half
+ * replaced output) and warned about with the system's reason; the new
+ * output is in place by then, so the run does not fail. */
+void removeReplaced(const std::string& old);
+
 /** TARGET.old-PID that a run, now gone, moved aside and did not finish
  * replacing (moveAside()): `target` may be that run's new folder beside an
  * old file it belongs with; "" if there is none. */

@@ -7,6 +7,7 @@
 #include <mrpt/img/CImage.h>
 #include <mrpt/serialization/CSerializable.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -60,8 +61,12 @@ class RawlogWriter
 	/** Finishes the rawlog and moves it (and its images, if any) into place,
 	 * replacing what a rawlog writer of ours wrote there before. If a step
 	 * fails, the old rawlog and images are left as they were. Throws
-	 * std::runtime_error naming a NAME_Images folder that is not ours. */
-	void commit();
+	 * std::runtime_error naming a NAME_Images folder that is not ours.
+	 * `with_images` puts files that belong with this rawlog into place (a
+	 * simulation's true map): after the images, before the rawlog, so that a
+	 * run killed before the rawlog is in leaves what readers refuse
+	 * (halfReplaced(), the old images still aside). */
+	void commit(const std::function<void()>& with_images = {});
 
 	std::size_t objectsWritten() const { return count_; }
 
