@@ -113,7 +113,7 @@ scan "rawlog is a folder" error -i s_Images -c f.ini -H floor.hist -o out.rawlog
 scan "rawlog cut at 20 kB" error -i cut.rawlog -c f.ini -H floor.hist -o out.rawlog
 scan "rawlog empty" error -i empty.rawlog -c f.ini -H floor.hist -o out.rawlog
 scan "rawlog of random bytes" error -i random.rawlog -c f.ini -H floor.hist -o out.rawlog
-scan "rawlog without its images folder" error -i noimages.rawlog -c f.ini -H floor.hist -o out.rawlog
+scan "rawlog without its images folder" "error:there is no folder .noimages_Images." -i noimages.rawlog -c f.ini -H floor.hist -o out.rawlog
 scan "one JPEG cut short" error -i cutimg.rawlog -c f.ini -H floor.hist -o out.rawlog
 run_case "one JPEG cut short, --skip-bad-images" "warn:skipped" out.rawlog -- "$apps/omnirange-scan" -i cutimg.rawlog -c f.ini -H floor.hist -o out.rawlog --skip-bad-images
 scan "a corrupt JPEG stored inside the rawlog" "libexit:corrupt-embedded-jpeg.rawlog" -i "$src/tests/data/corrupt-embedded-jpeg.rawlog" -c f.ini -H floor.hist -o out.rawlog
@@ -318,6 +318,7 @@ mkfifo fill.fifo
 run_case "summary: --fill a FIFO" "error:not a regular file" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill fill.fifo
 long_name=$(printf 'c%.0s' $(seq 240)).rawlog
 run_case "scan: an output name of 247 characters (no room for its temporaries)" "error:leave room for the names of its temporaries" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o "$long_name"
+run_case "accuracy: a prefix of 250 characters (names each output it would make)" "error:_pairs.csv' is 260 characters" none.out -- "$apps/omnirange-accuracy" -q -i scanned.rawlog -o "$(printf 'c%.0s' $(seq 250))"
 # Sparse files: large to a reader, nothing on the disk.
 cp floor.hist big.hist && truncate -s 1G big.hist
 run_case "scan: -H a 1 GB file that begins as a histogram" "error:more than the" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H big.hist -o none.out
@@ -436,10 +437,14 @@ kept victim/note.txt
 "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o lt.rawlog && rm lt_truemap.png && ln -s lt.rawlog lt_truemap.png && cp lt.rawlog lt.rawlog.orig
 run_case "sim --force: its true map PNG a link to its rawlog" "error:in the same place" none.out -- "$apps/omnirange-sim" -q --force -w w.world -r w.route -n 3 -o lt.rawlog
 cmp -s lt.rawlog lt.rawlog.orig || { echo "| | PROBLEM: the rawlog behind lt_truemap.png was changed |"; problems=$((problems + 1)); }
-printf 'base = factory.ini\n[experiment]\nname = f\n' > exp/ini/few.ini
-"$apps/omnirange-experiment" -q exp/ini/few.ini -n 5 -o few_report 2>/dev/null; echo mine > few_report.failed/notes.txt
-run_case "experiment: fails again beside a failed run's folder a user added to" "error:too few" none.out -- "$apps/omnirange-experiment" -q exp/ini/few.ini -n 5 -o few_report
+# A late failure (observations2map told to build no grid: a valid ini, so nothing refuses it before the work).
+printf '[MappingApplication]\noccupancyGrid_count = 0\n' > exp/ini/nogrid.ini
+printf 'base = factory.ini\n[experiment]\nname = f\nlearn = false\nmap_omni_ini = nogrid.ini\n' > exp/ini/few.ini
+"$apps/omnirange-experiment" -q exp/ini/few.ini -n 10 -o few_report 2>/dev/null; echo mine > few_report.failed/notes.txt
+run_case "experiment: fails again beside a failed run's folder a user added to" "error:maps with ground-truth poses" none.out -- "$apps/omnirange-experiment" -q exp/ini/few.ini -n 10 -o few_report
 kept few_report.failed/notes.txt
+run_case "experiment: -n 5 with learn = true (one training pair)" "error:too few for learn = true" none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o early_report
+! ls -d early_report* 2>/dev/null || { echo "| | PROBLEM: a run refused for too few frames left a folder |"; problems=$((problems + 1)); }
 # After a tenth: a table filled from a CSV missing some of its rows.
 head -3 "$src/docs/results/suite.csv" > two_rows.csv && cp "$src/README.md" readme_copy.md && cp readme_copy.md readme_copy.orig
 run_case "summary: --fill from a CSV that lacks rows the table shows" "error:would lose its rows" none.out -- "$apps/omnirange-summary" -q --csv two_rows.csv --fill readme_copy.md

@@ -112,6 +112,7 @@ Metrics Experiment::run()
 									c_.rbpf_laser_ini, c_.rbpf_omni_ini};
 	inputs.insert(inputs.end(), c_.world_maps.begin(), c_.world_maps.end());
 	StagedFolder staged(report, kProgram, inputs, force_);
+	c_.requireEnoughFrames();  // the output first: its refusal is the one a user must see
 	const std::string staging = staged.path();
 	setFolder(staging);
 	Metrics m;
@@ -131,8 +132,9 @@ Metrics Experiment::run()
 			failed = staging;
 		else
 			fs::remove_all(failed), fs::rename(staging, failed);
-		throw std::runtime_error(std::string(e.what()) + " (partial output in '" + failed + "'; '" + report +
-								 "' is as it was)");
+		// The message names the files where they are now, not in the staging folder they were written in.
+		throw std::runtime_error(namingTheOutput(e.what(), staging, failed) + " (partial output in '" + failed + "'; '" +
+								 report + "' is as it was)");
 	}
 	staged.commit();
 	setFolder(report);
@@ -195,7 +197,7 @@ void Experiment::train()
 	o.training.space = c_.colour_space;
 	o.training.bins = c_.bins;
 	o.training.obstacle_band = c_.obstacle_band;
-	r_.training_until = std::max(1, static_cast<int>(std::lround(c_.train_fraction * r_.simulated.frames)));
+	r_.training_until = c_.trainingFrames(r_.simulated.frames);
 	o.until = r_.training_until;
 	o.figures_prefix = out_ + "/fig1";
 	if (c_.learn) return learn(o);

@@ -7,6 +7,7 @@
 #include <omnirange_sim/World.h>
 
 #include <omnirange/config/LayeredIni.h>
+#include <omnirange/train/ParameterLearning.h>
 #include <omnirange/train/RawlogTraining.h>
 
 #include <filesystem>
@@ -109,6 +110,35 @@ void checkSimulatorInputs(ExperimentConfig& c)
 	sim::checkRouteClear(sim::loadRoute(c.route), world, robot.robot.clearance, robot.omnicam.camera.h);
 }
 }  // namespace
+
+int ExperimentConfig::plannedFrames() const
+{
+	const auto r = sim::RobotParams::loadFile(robot).robot;
+	const int route_frames = static_cast<int>(sim::sampleTrajectory(sim::loadRoute(route), r.speed, r.turn_rate, 1.0 / r.frame_rate).size());
+	return max_frames > 0 ? std::min(max_frames, route_frames) : route_frames;
+}
+
+int ExperimentConfig::trainingFrames(int frames) const
+{
+	return std::max(1, static_cast<int>(std::lround(train_fraction * frames)));
+}
+
+void ExperimentConfig::requireEnoughFrames() const
+{
+	const int frames = plannedFrames(), trained_on = trainingFrames(frames);
+	const std::string planned = std::to_string(frames) + " frames (" + (max_frames > 0 ? "max_frames or -n" : "the route's") + ")";
+	if (trained_on >= frames)
+		throw std::runtime_error(planned + " leave none to score after training on the first " +
+								 std::to_string(trained_on) + " (train_fraction " + formatDouble(train_fraction) + ")");
+	RawlogTrainingOptions training;
+	training.every = train_every, training.until = trained_on;
+	int selected = 0;
+	for (int k = 0; k < trained_on; ++k) selected += training.selects(k);
+	if (learn && !enoughToLearn(LearningOptions{}, selected))
+		throw std::runtime_error(planned + " give " + std::to_string(selected) +
+								 (selected == 1 ? " training pair" : " training pairs") + " (train_fraction " + formatDouble(train_fraction) + ", train_every " +
+								 std::to_string(train_every) + "): too few for learn = true to train on some and validate on others");
+}
 
 ExperimentConfig ExperimentConfig::load(const std::string& ini)
 {

@@ -430,6 +430,18 @@ TEST(OutputRule, ARawlogWhoseImagesARunWasKilledReplacingIsNotRead)
 	{
 		EXPECT_NE(std::string(e.what()).find("log_Images.old-999988"), std::string::npos) << e.what();
 	}
+	// A report that run 999987 moved aside, killed before its new one was in: a rawlog in it is named there.
+	fs::create_directory(d + "/report.old-999987");
+	write(d + "/report.old-999987/" + kOutputMarker, "omnirange-test\naside 999987\n");
+	try
+	{
+		RawlogReader reader(d + "/report/scanned.rawlog");
+		ADD_FAILURE() << "a missing rawlog was opened";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("report.old-999987"), std::string::npos) << e.what();
+	}
 }
 
 TEST(OutputRule, WhatBelongsWithARawlogGoesInAfterItsImagesAndBeforeIt)

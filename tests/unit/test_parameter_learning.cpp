@@ -92,6 +92,20 @@ TEST(ParameterLearning, OnePairIsNoSplit)
 	EXPECT_THROW(validationSplitFromString("random"), std::invalid_argument);
 }
 
+TEST(ParameterLearning, EnoughToLearnMeansSomePairsTrainAndSomeValidate)
+{
+	// The check an experiment makes before its simulation, for every split.
+	LearningOptions lo;  // interleaved: every fourth pair validates
+	EXPECT_FALSE(enoughToLearn(lo, 3));
+	EXPECT_TRUE(enoughToLearn(lo, 4));
+	lo.split = ValidationSplit::Later;
+	EXPECT_FALSE(enoughToLearn(lo, 1));
+	EXPECT_TRUE(enoughToLearn(lo, 2));
+	lo.split = ValidationSplit::Blocks;
+	EXPECT_FALSE(enoughToLearn(lo, 1));  // one block: nothing to train the others' histograms
+	EXPECT_TRUE(enoughToLearn(lo, 2));
+}
+
 TEST(HistogramTraining, ALightChangeCountsEveryPixelAsSeenAndInTwoOtherLights)
 {
 	const RangefinderParams rp;

@@ -43,6 +43,14 @@ struct ExperimentConfig
 	RangefinderParams rangefinder;
 
 	bool hasCheckRegion() const { return !check_region.empty(); }
+	/** The frames the simulation will make: the route's, at most max_frames. */
+	int plannedFrames() const;
+	/** The frames of `frames` trained on: the first train_fraction (one at least). */
+	int trainingFrames(int frames) const;
+	/** Throws std::runtime_error, before any stage, when the planned frames
+	 * leave none to score after training, or (learn) too few pairs to train
+	 * and validate on: max_frames (or -n) may be small. */
+	void requireEnoughFrames() const;
 
 	static const OptionsTable<ExperimentConfig>& table();
 	/** Reads [experiment] and [rangefinder] of `ini` and checks everything

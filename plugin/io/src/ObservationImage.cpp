@@ -188,7 +188,15 @@ cv::Mat decodeImageFile(const std::string& file, const std::string& label, int f
 {
 	const std::string what = "image '" + file + "'" + (label.empty() ? "" : " of " + label);
 	if (!std::filesystem::is_regular_file(file))  // a FIFO or a device would block or never end
-		throw std::runtime_error(what + (std::filesystem::exists(file) ? " is not a regular file" : " is missing"));
+	{
+		if (std::filesystem::exists(file)) throw std::runtime_error(what + " is not a regular file");
+		// A rawlog copied or renamed without its folder ("d.rawlog.bak" reads "d.rawlog.bak_Images").
+		const auto folder = std::filesystem::path(file).parent_path();
+		if (!folder.empty() && !std::filesystem::exists(folder))
+			throw std::runtime_error(what + " is missing: there is no folder '" + folder.string() +
+									 "' (a rawlog reads its images from NAME_Images beside it, named as the rawlog is)");
+		throw std::runtime_error(what + " is missing");
+	}
 	std::ifstream f(file, std::ios::binary | std::ios::ate);
 	std::vector<unsigned char> bytes(f ? static_cast<std::size_t>(f.tellg()) : 0);
 	f.seekg(0);

@@ -183,6 +183,19 @@ std::vector<std::string> filesIn(const std::string& dir)
 	return files;
 }
 
+/** A name the file system takes, with room for the run's own suffixes
+ * (".staging-PID", "_Images.tmp-PID"); the message shows the name's end,
+ * which tells a name the program derives (PREFIX_histogram.png) from another. */
+void requireNameFits(const std::string& output)
+{
+	constexpr std::size_t kLongestName = NAME_MAX - 32;
+	const std::string name = fs::path(output).filename().string();
+	if (name.size() <= kLongestName) return;
+	throw std::runtime_error("the output's name '" + name.substr(0, 12) + "..." + name.substr(name.size() - 20) + "' is " +
+							 std::to_string(name.size()) + " characters: at most " + std::to_string(kLongestName) +
+							 " leave room for the names of its temporaries");
+}
+
 std::set<std::string> listedIn(const std::string& dir, bool& has_list)
 {
 	std::ifstream f(fs::path(dir) / kOutputMarker);
@@ -201,12 +214,7 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	if (output.empty()) return;
 	if (kind != OutputKind::Folder && output_as_given.back() == '/')
 		throw std::runtime_error("'" + output_as_given + "' ends with '/', which names a folder: this output is a file");
-	// A name the file system takes, with room for the run's own suffixes (".staging-PID", "_Images.tmp-PID").
-	constexpr std::size_t kLongestName = NAME_MAX - 32;
-	if (const std::string name = fs::path(output).filename().string(); name.size() > kLongestName)
-		throw std::runtime_error("the output's name '" + name.substr(0, 24) + "...' is " + std::to_string(name.size()) +
-								 " characters: at most " + std::to_string(kLongestName) +
-								 " leave room for the names of its temporaries");
+	requireNameFits(output);
 	// "a/missing/..": the system cannot pass through a folder that is not there, though the text reads as "a".
 	fs::path walked;
 	for (const auto& part : fs::path(output_as_given))
@@ -293,7 +301,7 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 						   const std::vector<std::string>& inputs, bool force)
 {
 	std::vector<std::string> paths;
-	for (const auto& o : outputs) paths.push_back(o.path);
+	for (const auto& o : outputs) paths.push_back(o.path), requireNameFits(outputPath(o.path));
 	requireDistinctOutputs(paths);
 	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
 }
@@ -407,6 +415,20 @@ std::string firstNotMadeBy(const fs::path& dir, const std::string& pid)
 	}
 	return "";
 }
+
+/** TARGET.old-PID that run PID, now gone, moved aside (halfReplaced()). */
+std::string halfReplacedItself(const std::string& target)
+{
+	const fs::path t(target);
+	const fs::path dir = t.parent_path().empty() ? fs::path(".") : t.parent_path();
+	const std::string prefix = t.filename().string() + ".old-";
+	std::error_code ec;
+	for (const auto& e : fs::directory_iterator(dir, ec))
+		if (const std::string name = e.path().filename().string(); name.rfind(prefix, 0) == 0)
+			if (const std::string pid = name.substr(prefix.size()); deadRun(pid) && movedAsideBy(e.path(), pid))
+				return e.path().string();
+	return "";
+}
 }  // namespace
 
 void removeReplaced(const std::string& old)
@@ -424,16 +446,14 @@ void removeReplaced(const std::string& old)
 
 std::string halfReplaced(const std::string& target)
 {
-	const fs::path t(target);
-	const fs::path dir = t.parent_path().empty() ? fs::path(".") : t.parent_path();
-	const std::string prefix = t.filename().string() + ".old-";
 	std::error_code ec;
-	for (const auto& e : fs::directory_iterator(dir, ec))
-		if (const std::string name = e.path().filename().string(); name.rfind(prefix, 0) == 0)
-			if (const std::string pid = name.substr(prefix.size()); deadRun(pid) && movedAsideBy(e.path(), pid))
-				return e.path().string();
-	return "";
+	// A folder it is in that is missing: the run may have been killed between moving it aside and putting the new in.
+	for (fs::path up = fs::absolute(target, ec).lexically_normal().parent_path(); up.has_relative_path(); up = up.parent_path())
+		if (!fs::exists(fs::symlink_status(up, ec)))
+			if (const std::string old = halfReplacedItself(up.string()); !old.empty()) return old;
+	return halfReplacedItself(target);
 }
+
 
 void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::string& program)
 {

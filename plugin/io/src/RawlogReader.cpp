@@ -25,7 +25,14 @@ RawlogReader::RawlogReader(const std::string& path)
 {
 	requireRegularFile(path, "rawlog");
 	if (!std::filesystem::is_regular_file(path) || !in_->open(path))
+	{
+		// A report killed between moving its old folder aside and putting the new one in.
+		if (const std::string old = halfReplaced(path); !old.empty())
+			throw std::runtime_error("cannot open rawlog '" + path + "': a run that was replacing '" +
+									 old.substr(0, old.rfind(".old-")) + "' was killed, leaving the old one in '" + old +
+									 "' (run that program again)");
 		throw std::runtime_error("cannot open rawlog '" + path + "'");
+	}
 	// A writer killed between moving its images in and its rawlog: the images may be the next run's.
 	if (const std::string old = halfReplaced(imagesDirToRead(path)); !old.empty())
 		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path +

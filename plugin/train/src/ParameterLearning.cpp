@@ -13,6 +13,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <tuple>
 
 namespace omnirange
@@ -444,6 +445,15 @@ std::vector<int> blockOfPairs(const LearningOptions& lo, int selected)
 	const int n = std::max(1, std::min(lo.blocks, selected));
 	for (int s = 0; s < selected; ++s) block[s] = static_cast<int>(static_cast<long>(s) * n / selected);
 	return block;
+}
+
+bool enoughToLearn(const LearningOptions& lo, int selected)
+{
+	const std::vector<PairRole> roles = splitPairs(lo, selected);
+	const std::vector<int> block = blockOfPairs(lo, selected);
+	const bool blocks = lo.split != ValidationSplit::Blocks || std::set<int>(block.begin(), block.end()).size() >= 2;
+	return std::count(roles.begin(), roles.end(), PairRole::Validate) > 0 &&
+		   (lo.split == ValidationSplit::Blocks || std::count(roles.begin(), roles.end(), PairRole::Train) > 0) && blocks;
 }
 
 ValidationSplit validationSplitFromString(const std::string& s)

@@ -128,7 +128,8 @@ void removeReplaced(const std::string& old);
 
 /** TARGET.old-PID that a run, now gone, moved aside and did not finish
  * replacing (moveAside()): `target` may be that run's new folder beside an
- * old file it belongs with; "" if there is none. */
+ * old file it belongs with; or FOLDER.old-PID of a missing folder `target`
+ * is in (a report killed between its two renames); "" if there is none. */
 std::string halfReplaced(const std::string& target);
 
 /** What killed runs of the output `target` left beside it, as names with a

@@ -168,6 +168,9 @@ std::vector<PairRole> splitPairs(const LearningOptions& options, int selected);
 /** The block of each of `selected` pairs with the Blocks split: `blocks`
  * runs of consecutive pairs, as equal as they can be; all 0 otherwise. */
 std::vector<int> blockOfPairs(const LearningOptions& options, int selected);
+/** `selected` pairs are enough for the split of `options`: some train and
+ * some validate (with the Blocks split, in two blocks at least). */
+bool enoughToLearn(const LearningOptions& options, int selected);
 
 /** One laser ray's part of LearnedCandidate::score, and whether the omnicam
  * read nearer than the laser there (LearnedCandidate::frame_shortfalls).
