@@ -460,6 +460,14 @@ if [ "$(id -u)" -eq 0 ] && "${nobody[@]}" test -r f.ini -a -r s_Images 2>/dev/nu
   run_case "sim: its old images cannot all be removed (a read-only folder)" "warn:could not remove the replaced" none.out -- "${nobody[@]}" "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o ro_old/d.rawlog
   "$apps/omnirange-scan" -q -i ro_old/d.rawlog -c f.ini -H floor.hist -o ro_old_scan.rawlog || { echo "| | PROBLEM: the new rawlog beside an old folder kept is not read |"; problems=$((problems + 1)); }
 fi
+# After a fifteenth: an image that links to itself, a frame rate of almost nothing, a damaged class name.
+cp s.rawlog selfimg.rawlog && mkdir -p selfimg_Images && cp s_Images/* selfimg_Images/
+f=$(ls selfimg_Images | grep -v '^\.' | sort | sed -n 3p) && rm "selfimg_Images/$f" && ln -s "$f" "selfimg_Images/$f"
+scan "an image that is a link to itself" "error:is a link that leads back to itself" -i selfimg.rawlog -c f.ini -H floor.hist -o out.rawlog
+sed 's/^frame_rate *=.*/frame_rate = 1e-300/' "$src/ini/robot-omnip2dx.ini" > robot_slow.ini
+run_case "sim: robot frame_rate = 1e-300" "error:frame_rate must be within" r5.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -c robot_slow.ini -n 2 -o r5.rawlog
+gzip -dc s.rawlog | sed 's/CObservation2DRangeScan/CObservation2DRa\xffgeScan/' | gzip -c > badclass.rawlog && ln -sfn s_Images badclass_Images
+scan "a rawlog with a byte of a class name damaged" "error:truncated or corrupt after" -i badclass.rawlog -c f.ini -H floor.hist -o out.rawlog
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

@@ -148,7 +148,7 @@ void RobotParams::validate() const
 	constexpr double deg = M_PI / 180;
 	require(r.turn_rate >= 1 * deg && r.turn_rate <= 1000 * deg,
 			"[robot] turn_rate_deg must be within [1, 1000] deg/s");
-	require(r.frame_rate > 0 && r.frame_rate <= 100, "[robot] frame_rate must be within (0, 100] Hz");
+	require(r.frame_rate >= 0.01 && r.frame_rate <= 100, "[robot] frame_rate must be within [0.01, 100] Hz");
 	require(r.length > 0 && r.width > 0 && r.height > 0 && r.length <= 10 && r.width <= 10,
 			"[robot] the body's size must be within (0, 10] m");
 	require(r.height < o.camera.h, "[robot] the body must be lower than the omnicam's h");

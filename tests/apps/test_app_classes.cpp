@@ -686,6 +686,9 @@ TEST(AppClasses, OpenCVsAndMRPTsErrorsAreOneLineWithoutPathsOrCallStacks)
 		EXPECT_EQ(errorText(e), "MRPT: the sensor 'X' is unknown");
 	}
 	EXPECT_EQ(errorText(std::runtime_error("two\nlines")), "two lines");
+	// A class name read from a damaged rawlog: its byte that is no text shows as '?', a name in UTF-8 as itself.
+	EXPECT_EQ(errorText(std::runtime_error("class 'CObservation2DRa\xffgeScan' in 'r\xc3\xa9sum\xc3\xa9.rawlog'")),
+			  "class 'CObservation2DRa?geScan' in 'r\xc3\xa9sum\xc3\xa9.rawlog'");
 }
 
 TEST(AppClasses, ARimCentreIsSavedOnlyForACameraOfTheImagesSize)

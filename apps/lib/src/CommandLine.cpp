@@ -3,6 +3,7 @@
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/io/MemoryLimit.h>
 #include <omnirange/io/OutputRule.h>
+#include <omnirange/config/ErrorText.h>
 #include <omnirange/config/Temporaries.h>
 
 
@@ -19,32 +20,6 @@ namespace omnirange::app
 {
 namespace
 {
-std::string oneLine(std::string s)
-{
-	for (auto& c : s)
-		if (c == '\n' || c == '\r') c = ' ';
-	return s;
-}
-
-/** MRPT's exception text ("==== MRPT exception ====", "Message: ...",
- * "Location: ...", a call stack) as its messages, innermost last. */
-std::string mrptMessages(const std::string& text)
-{
-	std::istringstream in(text);
-	std::string messages, location;
-	for (std::string line; std::getline(in, line);)
-		for (const std::string tag : {"Message:", "Location:"})
-			if (line.rfind(tag, 0) == 0)
-			{
-				const auto from = line.find_first_not_of(' ', tag.size());
-				if (from == std::string::npos) continue;
-				std::string& to = tag == "Message:" ? messages : location;
-				to += (to.empty() ? "" : "; ") + line.substr(from);
-			}
-	// Some of MRPT's errors carry their text in the location line only.
-	return messages.empty() ? location : messages;
-}
-
 /** TCLAP output whose failure message is one line instead of the usage. */
 class OneLineOutput : public TCLAP::StdOutput
 {

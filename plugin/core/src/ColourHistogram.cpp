@@ -1,11 +1,14 @@
 #include "omnirange/core/ColourHistogram.h"
 
 #include "omnirange/config/AtomicWrite.h"
+#include "omnirange/config/OptionsTable.h"
 
 #include <opencv2/core.hpp>
 #include <zlib.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -180,9 +183,10 @@ void ColourHistogram::save(const std::string& path) const
 
 ColourHistogram ColourHistogram::load(const std::string& path)
 {
-	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open histogram file '" + path + "'");
+	requireRegularFile(path, "histogram");
+	errno = 0;
 	std::ifstream f(path, std::ios::binary);
-	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "'");
+	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "' (" + std::strerror(errno) + ")");
 	std::ostringstream ss;
 	ss << f.rdbuf();
 	return deserialize(ss.str(), path);

@@ -1,7 +1,9 @@
 #include "omnirange/core/ColourModel.h"
 
 #include "omnirange/config/AtomicWrite.h"
+#include "omnirange/config/OptionsTable.h"
 
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -36,9 +38,10 @@ void ColourModel::save(const std::string& path) const
 ColourModel ColourModel::load(const std::string& path)
 {
 	// Only regular files: a device or a pipe would be read without end.
-	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open histogram file '" + path + "'");
+	requireRegularFile(path, "histogram");
+	errno = 0;
 	std::ifstream f(path, std::ios::binary);
-	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "'");
+	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "' (" + std::strerror(errno) + ")");
 	// The header says how big the file can be: two histograms and a reference colour. A larger
 	// file (a 5 GB mistake) is refused before it is read into memory.
 	std::string head(64, '\0');

@@ -187,12 +187,16 @@ bool isImageFileName(const std::string& file)
 cv::Mat decodeImageFile(const std::string& file, const std::string& label, int flags)
 {
 	const std::string what = "image '" + file + "'" + (label.empty() ? "" : " of " + label);
-	if (!std::filesystem::is_regular_file(file))  // a FIFO or a device would block or never end
+	std::error_code ec;
+	if (const auto status = std::filesystem::status(file, ec); !std::filesystem::is_regular_file(status))
 	{
-		if (std::filesystem::exists(file)) throw std::runtime_error(what + " is not a regular file");
+		// A FIFO or a device would block or never end.
+		if (std::filesystem::exists(status)) throw std::runtime_error(what + " is not a regular file");
+		if (ec == std::errc::too_many_symbolic_link_levels)
+			throw std::runtime_error(what + " is a link that leads back to itself");
 		// A rawlog copied or renamed without its folder ("d.rawlog.bak" reads "d.rawlog.bak_Images").
 		const auto folder = std::filesystem::path(file).parent_path();
-		if (!folder.empty() && !std::filesystem::exists(folder))
+		if (!folder.empty() && !std::filesystem::exists(folder, ec))
 			throw std::runtime_error(what + " is missing: there is no folder '" + folder.string() +
 									 "' (a rawlog reads its images from NAME_Images beside it, named as the rawlog is)");
 		throw std::runtime_error(what + " is missing");

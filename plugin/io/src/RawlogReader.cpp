@@ -2,6 +2,7 @@
 
 #include "omnirange/io/OutputRule.h"
 #include "omnirange/io/RawlogWriter.h"
+#include "omnirange/config/ErrorText.h"
 #include "omnirange/config/OptionsTable.h"
 #include "omnirange/config/Temporaries.h"
 
@@ -44,23 +45,6 @@ RawlogReader::RawlogReader(const std::string& path)
 
 RawlogReader::~RawlogReader() = default;
 
-namespace
-{
-/** The informative line of an MRPT exception, whose text is a framed stack. */
-std::string gist(const std::exception& e)
-{
-	std::istringstream in(e.what());
-	std::string best;
-	for (std::string line; std::getline(in, line);)
-	{
-		if (line.find("Message:") != std::string::npos) return line.substr(line.find("Message:") + 8);
-		if (line.find("====") == std::string::npos && line.find(" at ") == std::string::npos &&
-			line.find_first_not_of(" \t") != std::string::npos && best.empty())
-			best = line;
-	}
-	return best.empty() ? "unreadable data" : best;
-}
-}  // namespace
 
 void RawlogReader::requireTimeGoesOn(const mrpt::serialization::CSerializable::Ptr& obj)
 {
@@ -108,7 +92,8 @@ mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 	{
 		const std::string what = e.what();
 		if (what.find("EOF") != std::string::npos) throw fail("it ends inside an object");
-		throw fail(gist(e));
+		const std::string said = mrptMessages(what);
+		throw fail(oneLine(said.empty() ? what : said));
 	}
 	if (!obj) throw fail("a null object");
 	++count_;
