@@ -103,6 +103,13 @@ TEST(LayeredIni, AnErrorInABaseNamesTheBaseNotTheFileRead)
 	// The file's own key: the file is named.
 	const std::string own = refusal(write(d, "own.ini", "base = mine.ini\n[rangefinder]\nthreshold = 3\n"));
 	EXPECT_NE(own.find("own.ini: [rangefinder] threshold = '3'"), std::string::npos) << own;
+	// A value refused by a check after loading ("[section] key must ...") names the base that set it;
+	// one refused with keys of two files (the scan circle: N here, the image in the base) names the file read.
+	write(d, "base-check.ini", "[rangefinder]\nsensor_label = OMNI\nmax_range = -1\n");
+	const std::string checked = refusal(write(d, "mine3.ini", "base = base-check.ini\n[rangefinder]\nN = 20\n"));
+	EXPECT_EQ(checked.rfind(fs::absolute(d + "/base-check.ini").string() + ": [rangefinder]", 0), 0u) << checked;
+	const std::string circle = refusal(write(d, "mine4.ini", "base = base-check.ini\n[rangefinder]\nmax_range = 4\nN = 5000\n"));
+	EXPECT_EQ(circle.rfind(d + "/mine4.ini: [rangefinder] scanner: the scan circle", 0), 0u) << circle;
 }
 
 TEST(LayeredIni, ABaseKeyInsideASectionIsAnOrdinaryKey)

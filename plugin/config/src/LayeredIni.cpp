@@ -105,9 +105,18 @@ LayeredIni readLayeredIni(const std::string& path)
 std::string namingItsFile(const LayeredIni& ini, const std::string& path, const std::exception& e)
 {
 	std::string file = path;
-	if (const auto* k = dynamic_cast<const KeyError*>(&e))
-		if (const std::string from = ini.originOf(k->section, k->key); !from.empty()) file = from;
-	return file + ": " + e.what();
+	const std::string what = e.what();
+	std::string section, key;
+	if (const auto* k = dynamic_cast<const KeyError*>(&e)) section = k->section, key = k->key;
+	// A check of values after loading (validate()) says "[section] key ...", its first key the one it is about.
+	else if (const auto close = what.find("] "); what.rfind("[", 0) == 0 && close != std::string::npos)
+	{
+		section = what.substr(1, close - 1);
+		const auto from = close + 2;
+		key = what.substr(from, what.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_", from) - from);
+	}
+	if (const std::string from = ini.originOf(section, key); !from.empty()) file = from;
+	return file + ": " + what;
 }
 
 }  // namespace omnirange

@@ -114,6 +114,9 @@ void RangefinderParams::loadFromConfig(const mrpt::config::CConfigFileBase& c, c
 	try
 	{
 		validate();
+		// The scan circle must fit in the image: keys of several kinds (N, K, max_range, the camera) at once,
+		// found here while the ini is known rather than when a scanner is made.
+		PolarScanner(OmniCameraModel(camera), scanner);
 	}
 	catch (const std::invalid_argument& e)
 	{

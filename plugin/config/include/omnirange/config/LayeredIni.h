@@ -33,7 +33,8 @@ struct LayeredIni
 };
 
 /** "FILE: why" for an error in the ini `path` read with its bases: FILE is
- * the base that set the key a KeyError names, else `path`. */
+ * the base that set the key a KeyError names (or the key a message
+ * "[section] key ..." begins with), else `path`. */
 std::string namingItsFile(const LayeredIni& ini, const std::string& path, const std::exception& e);
 
 /** The `base = FILE` of the ini `path`, resolved against its folder; "" if it has none. */
