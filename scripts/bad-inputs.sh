@@ -468,6 +468,10 @@ sed 's/^frame_rate *=.*/frame_rate = 1e-300/' "$src/ini/robot-omnip2dx.ini" > ro
 run_case "sim: robot frame_rate = 1e-300" "error:frame_rate must be within" r5.rawlog -- "$apps/omnirange-sim" -q -w w.world -r w.route -c robot_slow.ini -n 2 -o r5.rawlog
 gzip -dc s.rawlog | sed 's/CObservation2DRangeScan/CObservation2DRa\xffgeScan/' | gzip -c > badclass.rawlog && ln -sfn s_Images badclass_Images
 scan "a rawlog with a byte of a class name damaged" "error:truncated or corrupt after" -i badclass.rawlog -c f.ini -H floor.hist -o out.rawlog
+printf '100.0, 0, 0, 0\n100.2, 0.1, 0, 0\n100.2, 0.1, 0, 0\n100.4, 0.2, 0, 0\n' > odo_twice.csv
+run_case "import: an odometry row logged twice" "error:the same row as the one before it" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry odo_twice.csv -o imp.rawlog
+cp imp/100.0.jpg rim1.jpg && ln -sf rim1.jpg rim_again.jpg
+run_case "calibrate: the same --rim image twice (once through a link)" "error:is named twice" cal.ini -- "$apps/omnirange-calibrate" -q --rim rim1.jpg --rim rim_again.jpg --save-to cal.ini
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

@@ -118,6 +118,11 @@ TEST(OutputRule, NoOutputIsHoldsOrSitsInAnInputEvenWithForce)
 		EXPECT_NE(refusal(d + "/link/log.csv", OutputKind::Text, {d + "/data/log.csv"}, force), "");
 	}
 	EXPECT_EQ(refusal(d + "/elsewhere.rawlog", OutputKind::Rawlog, {d + "/data/log.csv", d + "/data/images"}), "");
+	// "data/../x" is beside data, not in it; through the link "link/../x" is beside what it names, not in it either.
+	write(d + "/beside.csv", "1,2");
+	EXPECT_EQ(refusal(d + "/data", OutputKind::Folder, {d + "/data/../beside.csv"}, true), "");
+	EXPECT_EQ(refusal(d + "/link", OutputKind::Folder, {d + "/link/../beside.csv"}, true), "");
+	EXPECT_NE(refusal(d + "/link", OutputKind::Folder, {d + "/link/images/../log.csv"}, true), "");
 }
 
 TEST(OutputRule, WhatAnInputBringsIsAnInputToo)

@@ -10,6 +10,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/core/utils/logger.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <csignal>
 #include <iostream>
@@ -76,6 +77,19 @@ std::string prefixPath(TCLAP::ValueArg<std::string>& arg, const std::string& exa
 									"' is a folder; give a prefix for the files, e.g. '" +
 									(std::filesystem::path(prefix) / example).string() + "'");
 	return given;
+}
+
+void requireNamedOnce(const std::vector<std::string>& files, const std::string& option)
+{
+	std::vector<std::filesystem::path> seen;
+	for (const auto& f : files)
+	{
+		std::error_code ec;
+		const auto place = std::filesystem::weakly_canonical(f, ec);  // through links
+		if (std::find(seen.begin(), seen.end(), place) != seen.end())
+			throw std::runtime_error(option + " '" + f + "' is named twice");
+		seen.push_back(place);
+	}
 }
 
 void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv)

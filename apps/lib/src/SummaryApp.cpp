@@ -52,16 +52,11 @@ SummaryApp::Options SummaryApp::parse(int argc, const char* const* argv)
 void SummaryApp::requireDistinctFiles(const Options& o)
 {
 	namespace fs = std::filesystem;
-	std::vector<fs::path> seen;
 	const auto place = [](const std::string& f) { return fs::weakly_canonical(f); };  // through links
 	for (const auto& f : o.fill)
-	{
 		if (!o.csv.empty() && place(f) == place(o.csv))
 			throw std::runtime_error("--fill '" + f + "' is the --csv it would be filled from");
-		if (std::find(seen.begin(), seen.end(), place(f)) != seen.end())
-			throw std::runtime_error("--fill '" + f + "' is named twice");
-		seen.push_back(place(f));
-	}
+	requireNamedOnce(o.fill, "--fill");
 }
 
 SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summary"), o_(std::move(o))

@@ -63,6 +63,12 @@ double number(const std::string& field, const std::string& name)
 	}
 }
 
+/** A row the same as the one before it (a logger that wrote a line twice) is said as such, not as time gone back. */
+void requireNotRepeated(std::vector<std::string>& before, const std::vector<std::string>& row)
+{
+	if (row == before) throw std::invalid_argument("the same row as the one before it (logged twice?): remove one of them");
+	before = row;
+}
 }  // namespace
 
 void requireTimeAfter(double previous, double time, const std::string& what)
@@ -123,7 +129,9 @@ std::vector<LaserRow> readLaserCsv(const std::string& path)
 {
 	std::vector<LaserRow> rows;
 	double previous = -INFINITY;
+	std::vector<std::string> before;
 	forEachCsvRow(path, "laser log", [&](const std::vector<std::string>& f) {
+		requireNotRepeated(before, f);
 		if (f.size() < 3) throw std::invalid_argument("expected TIME, then two or more ranges");
 		LaserRow row;
 		row.time = logTime(f[0]);
@@ -142,7 +150,9 @@ std::vector<OdometryRow> readOdometryCsv(const std::string& path)
 {
 	std::vector<OdometryRow> rows;
 	double previous = -INFINITY;
+	std::vector<std::string> before;
 	forEachCsvRow(path, "odometry log", [&](const std::vector<std::string>& f) {
+		requireNotRepeated(before, f);
 		if (f.size() != 4) throw std::invalid_argument("expected TIME, x, y, phi");
 		OdometryRow row;
 		row.time = logTime(f[0]);

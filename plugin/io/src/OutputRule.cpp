@@ -93,12 +93,21 @@ const char* kindName(OutputKind kind)
 	return "";
 }
 
-/** `path` as written, made absolute, without its "." parts; ".." is kept (through a link it is not the parent as written). */
+/** `path` as written, made absolute, without its "." parts, each ".."
+ * leaving the folder before it (through a link, as the system goes: to the
+ * parent of the folder the link names). */
 fs::path asWritten(const std::string& path)
 {
 	fs::path out;
+	std::error_code ec;
 	for (const auto& part : fs::absolute(path))
-		if (part != "." && !part.empty()) out /= part;
+	{
+		if (part == "." || part.empty()) continue;
+		// "dir/.." leaves dir ("o_lc/../x" is not in "o_lc"): for a link, to the parent of what it names, as the system goes.
+		if (part == ".." && out.has_relative_path())
+			out = (fs::is_symlink(out, ec) ? fs::weakly_canonical(out, ec) : out).parent_path();
+		else out /= part;
+	}
 	return out;
 }
 
