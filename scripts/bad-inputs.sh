@@ -459,6 +459,9 @@ if [ "$(id -u)" -eq 0 ] && "${nobody[@]}" test -r f.ini -a -r s_Images 2>/dev/nu
   mkdir -m 777 ro_old && "${nobody[@]}" "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o ro_old/d.rawlog && chmod a-w ro_old/d_Images
   run_case "sim: its old images cannot all be removed (a read-only folder)" "warn:could not remove the replaced" none.out -- "${nobody[@]}" "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o ro_old/d.rawlog
   "$apps/omnirange-scan" -q -i ro_old/d.rawlog -c f.ini -H floor.hist -o ro_old_scan.rawlog || { echo "| | PROBLEM: the new rawlog beside an old folder kept is not read |"; problems=$((problems + 1)); }
+  mkdir -m 666 no_search
+  run_case "train: -o in a folder this user may not look in" "error:cannot reach the output" none.out -- "${nobody[@]}" "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o no_search/t.hist
+  chmod 755 no_search
 fi
 # After a fifteenth: an image that links to itself, a frame rate of almost nothing, a damaged class name.
 cp s.rawlog selfimg.rawlog && mkdir -p selfimg_Images && cp s_Images/* selfimg_Images/

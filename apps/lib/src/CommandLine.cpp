@@ -72,7 +72,8 @@ std::string prefixPath(TCLAP::ValueArg<std::string>& arg, const std::string& exa
 	const std::string given = optionalPath(arg);
 	if (given.empty()) return given;
 	const std::string prefix = outputPath(given);
-	if (given.back() == '/' || prefix == "." || prefix == ".." || std::filesystem::is_directory(prefix))
+	std::error_code ec;  // a folder this user cannot look in: the output rule says so, with the reason
+	if (given.back() == '/' || prefix == "." || prefix == ".." || std::filesystem::is_directory(prefix, ec))
 		throw std::invalid_argument((arg.getFlag().empty() ? "--" + arg.getName() : "-" + arg.getFlag()) + " '" + given +
 									"' is a folder; give a prefix for the files, e.g. '" +
 									(std::filesystem::path(prefix) / example).string() + "'");

@@ -192,6 +192,16 @@ std::vector<std::string> filesIn(const std::string& dir)
 	return files;
 }
 
+/** The system lets this user look where `output` is: a folder on the way
+ * without search permission would make every later answer about it wrong. */
+void requireReachable(const std::string& output)
+{
+	std::error_code ec;
+	(void)fs::symlink_status(output, ec);
+	if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
+		throw std::runtime_error("cannot reach the output '" + output + "' (" + ec.message() + ")");
+}
+
 /** A name the file system takes, with room for the run's own suffixes
  * (".staging-PID", "_Images.tmp-PID"); the message shows the name's end,
  * which tells a name the program derives (PREFIX_histogram.png) from another. */
@@ -223,6 +233,7 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	if (output.empty()) return;
 	if (kind != OutputKind::Folder && output_as_given.back() == '/')
 		throw std::runtime_error("'" + output_as_given + "' ends with '/', which names a folder: this output is a file");
+	requireReachable(output);
 	requireNameFits(output);
 	// "a/missing/..": the system cannot pass through a folder that is not there, though the text reads as "a".
 	fs::path walked;
@@ -310,7 +321,8 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 						   const std::vector<std::string>& inputs, bool force)
 {
 	std::vector<std::string> paths;
-	for (const auto& o : outputs) paths.push_back(o.path), requireNameFits(outputPath(o.path));
+	for (const auto& o : outputs)
+		if (!o.path.empty()) paths.push_back(o.path), requireReachable(outputPath(o.path)), requireNameFits(outputPath(o.path));
 	requireDistinctOutputs(paths);
 	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
 }
