@@ -475,6 +475,8 @@ printf '100.0, 0, 0, 0\n100.2, 0.1, 0, 0\n100.2, 0.1, 0, 0\n100.4, 0.2, 0, 0\n' 
 run_case "import: an odometry row logged twice" "error:the same row as the one before it" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry odo_twice.csv -o imp.rawlog
 cp imp/100.0.jpg rim1.jpg && ln -sf rim1.jpg rim_again.jpg
 run_case "calibrate: the same --rim image twice (once through a link)" "error:is named twice" cal.ini -- "$apps/omnirange-calibrate" -q --rim rim1.jpg --rim rim_again.jpg --save-to cal.ini
+printf 'base = factory.ini\n[experiment]\nmap_omni_ini = icp-slam-omniscan.ini\n' > exp/ini/wrong_map.ini
+run_case "experiment: map_omni_ini names an icp-slam ini" "error:it is an icp-slam ini" none.out -- "$apps/omnirange-experiment" -q exp/ini/wrong_map.ini -n 10 -o wrong_map
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

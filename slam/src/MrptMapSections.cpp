@@ -202,9 +202,12 @@ void requireRecorded(const mrpt::config::CConfigFile& ini, RecordingConfig& reco
 		const std::string ls = lowercase(s);
 		if (!inScope(ls)) continue;
 		const bool app = ls == "mappingapplication";
+		// icp-slam's own sections, in the ini of another program: most likely the wrong file was named.
+		const bool icp = ls == "icp" || ls == "odometry_guard" || ls == "loop_closure";
 		if (!app && recording.read.count(ls) == 0)
-			throw std::invalid_argument("unknown section [" + s + "]: MRPT reads no such section here (misspelt, or "
-										"past its map's count?)");
+			throw std::invalid_argument("unknown section [" + s + "]: MRPT reads no such section here " +
+										(icp ? "(it is an icp-slam ini's: is this the file meant?)"
+											 : "(misspelt, or past its map's count?)"));
 		const auto& read = recording.read[ls];
 		std::vector<std::string> keys;
 		ini.getAllKeys(s, keys);
