@@ -62,7 +62,7 @@ void resolvePaths(ExperimentConfig& c, const LayeredIni& layers)
 	const auto resolve = [&](std::string& v, const std::string& key, bool must_exist) {
 		if (v.empty()) throw std::invalid_argument("[experiment] " + key + " is missing");
 		const std::string from = layers.originOf("experiment", key);
-		const fs::path dir = fs::absolute(from.empty() ? layers.files.back() : from).parent_path();
+		const fs::path dir = iniFolderOf(from.empty() ? layers.files.back() : from);
 		v = fs::path(v).is_absolute() ? v : (dir / v).lexically_normal().string();
 		if (must_exist && !fs::is_regular_file(v)) throw std::invalid_argument("[experiment] " + key + ": no file '" + v + "'");
 	};

@@ -55,6 +55,11 @@ TEST(LayeredIni, BasesChainAndAFileWithoutOneIsItself)
 	EXPECT_EQ(ini.merged->read_int("s", "only_root", 0), 1);
 	EXPECT_EQ(readLayeredIni(d + "/deep/root.ini").files.size(), 1u);
 	EXPECT_EQ(iniBaseOf(d + "/deep/root.ini"), "");
+	// An ini read through a link takes its base from beside the file, where it was written, not from beside the link.
+	write(d + "/other", "mid.ini", "[s]\nk = beside the link\n");
+	fs::remove(d + "/other/top.ini");
+	fs::create_symlink("../top.ini", d + "/other/top.ini");
+	EXPECT_EQ(readLayeredIni(d + "/other/top.ini").merged->read_int("s", "only_root", 0), 1);
 }
 
 TEST(LayeredIni, AMissingBaseACycleAndARepeatedKeyAreErrorsNamingTheFile)

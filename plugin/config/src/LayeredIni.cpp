@@ -17,6 +17,13 @@ namespace
 constexpr std::size_t kMaxIniLayers = 16;  // inis deep in 'base =' lines
 }  // namespace
 
+std::filesystem::path iniFolderOf(const std::string& ini)
+{
+	std::error_code ec;
+	const fs::path real = fs::weakly_canonical(fs::absolute(ini), ec);
+	return (ec ? fs::absolute(ini) : real).parent_path();
+}
+
 std::string iniBaseOf(const std::string& path)
 {
 	requireRegularFile(path, "ini file");
@@ -30,7 +37,7 @@ std::string iniBaseOf(const std::string& path)
 		const std::string value = trimmed(line.substr(line.find('=') + 1));
 		if (value.empty()) throw std::runtime_error(path + ": 'base =' names no file");
 		const fs::path p(value);
-		return p.is_absolute() ? value : (fs::absolute(path).parent_path() / p).lexically_normal().string();
+		return p.is_absolute() ? value : (iniFolderOf(path) / p).lexically_normal().string();
 	}
 	return {};
 }

@@ -7,6 +7,7 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
@@ -31,6 +32,11 @@ struct LayeredIni
 		return it == origin.end() ? std::string() : it->second;
 	}
 };
+
+/** The folder an ini's relative paths (`base =`, an experiment's files)
+ * are read from: the folder the file really is in, through links, since
+ * that is where it was written beside them. */
+std::filesystem::path iniFolderOf(const std::string& ini);
 
 /** "FILE: why" for an error in the ini `path` read with its bases: FILE is
  * the base that set the key a KeyError names (or the key a message
