@@ -425,7 +425,7 @@ printf '%*s' 64 '' | dd of="pngd_Images/$f" bs=1 seek=$((size / 2)) conv=notrunc
 run_case "scan: a PNG damaged inside (its end chunk kept)" "error:is damaged" pd.rawlog -- "$apps/omnirange-scan" -q -i pngd.rawlog -c f.ini -H floor.hist -o pd.rawlog
 run_case "train: --max-dt 1e300" "error:max_dt must be within" md.hist -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o md.hist --max-dt 1e300
 cp tables.md twice.md
-run_case "summary: --fill one file twice" "error:is named twice" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill twice.md --fill ./twice.md
+run_case "summary: --fill one file twice" "error:is given twice" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill twice.md --fill ./twice.md
 mkfifo rawlog.fifo
 scan "rawlog is a FIFO" "error:is not a regular file" -i rawlog.fifo -c f.ini -H floor.hist -o out.rawlog
 # After a ninth: an MRPT program's log folder outside the report, a true map linked onto the rawlog, a failed run's folder with a user's file.
@@ -474,7 +474,7 @@ scan "a rawlog with a byte of a class name damaged" "error:truncated or corrupt 
 printf '100.0, 0, 0, 0\n100.2, 0.1, 0, 0\n100.2, 0.1, 0, 0\n100.4, 0.2, 0, 0\n' > odo_twice.csv
 run_case "import: an odometry row logged twice" "error:the same row as the one before it" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --odometry odo_twice.csv -o imp.rawlog
 cp imp/100.0.jpg rim1.jpg && ln -sf rim1.jpg rim_again.jpg
-run_case "calibrate: the same --rim image twice (once through a link)" "error:is named twice" cal.ini -- "$apps/omnirange-calibrate" -q --rim rim1.jpg --rim rim_again.jpg --save-to cal.ini
+run_case "calibrate: the same --rim image twice (once through a link)" "error:is given twice" cal.ini -- "$apps/omnirange-calibrate" -q --rim rim1.jpg --rim rim_again.jpg --save-to cal.ini
 printf 'base = factory.ini\n[experiment]\nmap_omni_ini = icp-slam-omniscan.ini\n' > exp/ini/wrong_map.ini
 run_case "experiment: map_omni_ini names an icp-slam ini" "error:it is an icp-slam ini" none.out -- "$apps/omnirange-experiment" -q exp/ini/wrong_map.ini -n 10 -o wrong_map
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }

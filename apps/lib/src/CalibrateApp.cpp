@@ -120,7 +120,6 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-calibrate"), o_(std::move(o))
 {
 	setMinLoggingLevel(o_.verbosity);
-	requireNamedOnce(o_.rim_images, "--rim"), requireNamedOnce(o_.checkerboards, "--checkerboard");
 	// --save-to writes keys into an ini (the -c one is the usual choice), never into what was read.
 	std::vector<std::string> inputs{o_.calibration.input, o_.histogram, o_.ocamcalib};
 	inputs.insert(inputs.end(), o_.checkerboards.begin(), o_.checkerboards.end());

@@ -80,19 +80,6 @@ std::string prefixPath(TCLAP::ValueArg<std::string>& arg, const std::string& exa
 	return given;
 }
 
-void requireNamedOnce(const std::vector<std::string>& files, const std::string& option)
-{
-	std::vector<std::filesystem::path> seen;
-	for (const auto& f : files)
-	{
-		std::error_code ec;
-		const auto place = std::filesystem::weakly_canonical(f, ec);  // through links
-		if (std::find(seen.begin(), seen.end(), place) != seen.end())
-			throw std::runtime_error(option + " '" + f + "' is named twice");
-		seen.push_back(place);
-	}
-}
-
 void parseArgs(TCLAP::CmdLine& cmd, int argc, const char* const* argv)
 {
 	OneLineOutput out;

@@ -56,7 +56,7 @@ void SummaryApp::requireDistinctFiles(const Options& o)
 	for (const auto& f : o.fill)
 		if (!o.csv.empty() && place(f) == place(o.csv))
 			throw std::runtime_error("--fill '" + f + "' is the --csv it would be filled from");
-	requireNamedOnce(o.fill, "--fill");
+	requireNamedOnce(o.fill, "--fill");  // filled twice, the second would read the first's output
 }
 
 SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summary"), o_(std::move(o))

@@ -73,6 +73,14 @@ void requireRegularFile(const std::string& path, const std::string& what)
 		throw std::runtime_error("the " + what + " '" + path + "' is not a regular file");
 }
 
+void requireNamedOnce(const std::vector<std::string>& files, const std::string& what)
+{
+	for (std::size_t i = 0; i < files.size(); ++i)
+		for (std::size_t j = i + 1; j < files.size(); ++j)
+			if (std::error_code ec; files[i] == files[j] || std::filesystem::equivalent(files[i], files[j], ec))
+				throw std::invalid_argument(what + " '" + files[j] + "' is given twice (also as '" + files[i] + "')");
+}
+
 namespace
 {
 /** std::getline that stops at `cap` bytes: a file of one endless line (a

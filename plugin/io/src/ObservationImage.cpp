@@ -249,15 +249,16 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams&
 	return img;
 }
 
+std::string sizeText(const cv::Size& size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }
+
 void requireCameraSize(const cv::Mat& img, const mrpt::obs::CObservationImage& obs, const CameraParams& cam)
 {
 	if (img.cols != cam.image_width || img.rows != cam.image_height)
 		throw std::runtime_error(
-			(obs.image.isExternallyStored() ? "image '" + obs.image.getExternalStorageFile() + "'"
+			// With its folder, as every other image message names it.
+			(obs.image.isExternallyStored() ? "image '" + obs.image.getExternalStorageFileAbsolutePath() + "'"
 											: "an embedded " + obs.sensorLabel + " image") +
-			" is " + std::to_string(img.cols) + "x" +
-			std::to_string(img.rows) + " but the camera is " + std::to_string(cam.image_width) + "x" +
-			std::to_string(cam.image_height));
+			" is " + sizeText(img.size()) + " but the camera is " + sizeText({cam.image_width, cam.image_height}));
 }
 
 }  // namespace omnirange

@@ -1,5 +1,6 @@
 #include "omnirange/train/CheckerboardCalibration.h"
 #include "omnirange/io/ObservationImage.h"
+#include "omnirange/config/OptionsTable.h"
 #include "omnirange/config/Temporaries.h"
 
 #include <mrpt/img/CImage.h>
@@ -123,10 +124,7 @@ void requireBoardAndFiles(const std::vector<std::string>& files, const Checkerbo
 		throw std::invalid_argument("the board needs 2 to " + std::to_string(kMaxBoardCorners) +
 									" inner corners each way and a square within [0.001, 10] m");
 	// One photograph given twice would count as two boards and look like agreement.
-	for (std::size_t i = 0; i < files.size(); ++i)
-		for (std::size_t j = i + 1; j < files.size(); ++j)
-			if (std::error_code ec; files[i] == files[j] || std::filesystem::equivalent(files[i], files[j], ec))
-				throw std::invalid_argument("image '" + files[j] + "' is given twice (also as '" + files[i] + "')");
+	requireNamedOnce(files, "image");
 }
 
 /** The image `file`, checked against the first one's size and the board's. */
@@ -135,7 +133,9 @@ cv::Mat readBoardImage(const std::string& file, const CheckerboardOptions& o, cv
 	temporaries::setActivity("reading image '" + file + "'");
 	const cv::Mat gray = decodeImageFile(file, "", cv::IMREAD_GRAYSCALE);
 	if (first_size.empty()) first_size = gray.size();
-	if (gray.size() != first_size) throw std::runtime_error("image '" + file + "' has another size than the first image");
+	if (gray.size() != first_size)
+		throw std::runtime_error("image '" + file + "' is " + sizeText(gray.size()) + ", the first image " +
+								 sizeText(first_size) + ": one of them is not of this camera");
 	// Fewer than a few pixels a square cannot show a board (and OpenCV's detectors assert on it).
 	if (gray.cols < 4 * (o.columns + 1) || gray.rows < 4 * (o.rows + 1))
 		throw std::runtime_error("image '" + file + "' is " + std::to_string(gray.cols) + "x" + std::to_string(gray.rows) +

@@ -1,5 +1,6 @@
 #include "omnirange/train/MirrorRim.h"
 #include "omnirange/io/ObservationImage.h"
+#include "omnirange/config/OptionsTable.h"
 #include "omnirange/config/Temporaries.h"
 
 #include <opencv2/imgcodecs.hpp>
@@ -12,6 +13,7 @@ namespace omnirange
 {
 MirrorRim detectMirrorRim(const std::vector<std::string>& images)
 {
+	requireNamedOnce(images, "image");  // one photograph given twice would count as two
 	cv::Mat brightest;
 	for (const auto& file : images)
 	{
@@ -19,7 +21,8 @@ MirrorRim detectMirrorRim(const std::vector<std::string>& images)
 		const cv::Mat gray = decodeImageFile(file, "", cv::IMREAD_GRAYSCALE);
 		if (brightest.empty()) brightest = gray.clone();
 		else if (gray.size() != brightest.size())
-			throw std::runtime_error("image '" + file + "' has another size than the first image");
+			throw std::runtime_error("image '" + file + "' is " + sizeText(gray.size()) + ", the first image " +
+									 sizeText(brightest.size()) + ": one of them is not of this camera");
 		else cv::max(brightest, gray, brightest);
 	}
 	if (brightest.empty()) throw std::runtime_error("no image to find the mirror in");

@@ -52,11 +52,6 @@ std::string requiredPath(TCLAP::ValueArg<std::string>& arg);
  * std::invalid_argument when given empty (`--save-to ''` would be ignored). */
 std::string optionalPath(TCLAP::ValueArg<std::string>& arg);
 
-/** Throws std::runtime_error("OPTION 'F' is named twice") when a file of
- * `files` is given twice (through links or another spelling): it would
- * count twice. */
-void requireNamedOnce(const std::vector<std::string>& files, const std::string& option);
-
 /** The value of a prefix option (PREFIX_pairs.csv, PREFIX.md): "" when not
  * given; throws std::invalid_argument when it names a folder ("out/", ".",
  * an existing folder), whose files would be hidden ("out/_pairs.csv"). */

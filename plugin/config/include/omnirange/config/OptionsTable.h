@@ -79,6 +79,11 @@ std::string joined(const std::vector<std::string>& items);
  * read without end. A missing file is left to the reader's own message. */
 void requireRegularFile(const std::string& path, const std::string& what);
 
+/** Throws std::invalid_argument("WHAT 'F' is given twice (also as 'E')")
+ * when a file of `files` is there twice, through a link or another
+ * spelling: one photograph would count as two. */
+void requireNamedOnce(const std::vector<std::string>& files, const std::string& what);
+
 /** [bytes] The largest ini read (MRPT's reader holds it whole; ours are a few kB). */
 inline constexpr std::uintmax_t kMaxIniBytes = std::uintmax_t(1) << 20;
 

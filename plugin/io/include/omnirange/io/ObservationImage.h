@@ -35,4 +35,7 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams&
 /** Throws std::runtime_error naming the image `obs` unless `img` has the camera's size. */
 void requireCameraSize(const cv::Mat& img, const mrpt::obs::CObservationImage& obs, const CameraParams& camera);
 
+/** "WIDTHxHEIGHT", as messages give an image's size. */
+std::string sizeText(const cv::Size& size);
+
 }  // namespace omnirange
