@@ -8,6 +8,7 @@
 #include <omnirange/config/AtomicWrite.h>
 #include <omnirange/config/OptionsTable.h>
 #include <omnirange/config/SensorLabels.h>
+#include <omnirange/config/Threads.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 
@@ -117,7 +118,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	const RobotParams& robot = in.robot;
 	MRPT_LOG_INFO_STREAM("world '" << in.world.name << "': " << in.world.solids.size() << " solids; route "
 								   << in.waypoints << " waypoints, " << in.poses.size() << " frames");
-	cv::setNumThreads(o.threads);
+	useThreads(o.threads);
 	const OmniRenderer renderer(in.world, robot);
 
 	// The frames: ODOMETRY, GT, OMNICAM, TRUTH, LASER at each pose.

@@ -4,6 +4,7 @@
 
 #include "omnirange/core/FloorAdaptation.h"
 #include "omnirange/config/AtomicWrite.h"
+#include "omnirange/config/Threads.h"
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/RawlogProcessor.h"
 #include "omnirange/io/RawlogWriter.h"
@@ -136,7 +137,7 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 {
 	if (o.threads < 1 || o.threads > 256) throw std::invalid_argument("threads must be within [1, 256]");
 	if (!o.decode_only) requireRawlogOutputAllowed(o.output, kScanProgram, {o.input, imagesDirToRead(o.input)}, o.force);
-	cv::setNumThreads(o.threads);
+	useThreads(o.threads);
 
 	RawlogProcessor loop(o.input);
 	std::optional<RawlogWriter> writer;
