@@ -5,6 +5,7 @@
 #include <omnirange/config/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogReader.h>
+#include <omnirange/io/RawlogScan.h>
 #include <omnirange/io/RawlogWriter.h>
 
 #include "../common/FactorySample.h"
@@ -468,18 +469,35 @@ TEST(OutputRule, WhatBelongsWithARawlogGoesInAfterItsImagesAndBeforeIt)
 		// The state a kill here leaves: the new images in, the old rawlog, the old images aside.
 		EXPECT_EQ(read(d + "/log.rawlog"), first_rawlog);
 		EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 2);
-		// ... which readers refuse once this run is gone (ARawlogWhoseImagesARunWasKilledReplacingIsNotRead).
 		EXPECT_TRUE(fs::exists(d + "/log_Images.old-" + std::to_string(::getpid())));
+		// Every reader refuses it, whether this run is still going or was killed here.
+		EXPECT_THROW(RawlogReader(d + "/log.rawlog"), std::runtime_error);
 		write(d + "/log_truemap.txt", "second");
 	});
 	EXPECT_TRUE(called);
 	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog"));
+	// With no old images to move aside (a user removed them), the same: the new images are refused until their rawlog is in.
+	fs::remove_all(d + "/log_Images");
+	writeLog(4, [&] { EXPECT_THROW(RawlogReader(d + "/log.rawlog"), std::runtime_error); });
+	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog"));
 	EXPECT_EQ(read(d + "/log_truemap.txt"), "second");
 	// One that fails: the old images come back and the rawlog is the old one.
 	const std::string second_rawlog = read(d + "/log.rawlog");
+	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 4);
 	EXPECT_THROW(writeLog(3, [] { throw std::runtime_error("cannot put the true map in place"); }), std::runtime_error);
 	EXPECT_EQ(read(d + "/log.rawlog"), second_rawlog);
-	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 2);
+	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 4);
+	// A rawlog whose images are a link (a scan's): the link, which can hold no mark, goes in after the rawlog,
+	// so the old rawlog is never beside the new link.
+	fs::create_directory(d + "/other_Images");
+	for (const std::string input_images : {"/log_Images", "/other_Images"})
+	{
+		RawlogWriter w(d + "/scan.rawlog", kScanProgram);
+		w.write(mrpt::obs::CObservationOdometry());
+		w.linkImagesTo(d + input_images);
+		w.commit([&] { EXPECT_FALSE(fs::exists(fs::symlink_status(d + "/scan_Images"))) << input_images; });
+		EXPECT_TRUE(fs::is_symlink(d + "/scan_Images"));
+	}
 }
 
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)

@@ -8,6 +8,8 @@
 
 #include <signal.h>
 #include <zlib.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -342,6 +344,7 @@ std::string moveAside(const std::string& target)
 
 void replaceFolder(const std::string& target, const std::string& fresh)
 {
+	const FolderLock lock(target);
 	std::string old;
 	std::error_code ec;
 	const bool had_old = fs::exists(fs::symlink_status(target, ec));
@@ -592,10 +595,46 @@ void StagedFolder::keep()
 
 void noteInMarker(const std::string& dir, const std::string& line)
 {
+	std::error_code ec;
+	// Written through, a link would carry the line into a file that is not this folder's.
+	if (fs::is_symlink(fs::path(dir) / kOutputMarker, ec))
+		throw std::runtime_error("the marker '" + (fs::path(dir) / kOutputMarker).string() + "' is a link, not a file of ours");
 	errno = 0;
 	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
 	f << line << "\n";
 	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
+}
+
+void unnoteInMarker(const std::string& dir, const std::string& line)
+{
+	const std::string marker = (fs::path(dir) / kOutputMarker).string();
+	std::ifstream in(marker);
+	std::string kept;
+	for (std::string l; std::getline(in, l);)
+		if (l != line) kept += l + "\n";
+	in.close();
+	writeFileAtomically(marker, kept);
+}
+
+std::string pendingIn(const std::string& dir)
+{
+	std::ifstream f(fs::path(dir) / kOutputMarker);
+	for (std::string l; std::getline(f, l);)
+		if (l.rfind("pending ", 0) == 0) return l.substr(8);
+	return "";
+}
+
+FolderLock::FolderLock(const std::string& path)
+{
+	const fs::path dir = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+	fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	// Without a lock (a folder that cannot be opened so) the run goes on as before: the renames say what fails.
+	if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+}
+
+FolderLock::~FolderLock()
+{
+	if (fd_ >= 0) ::close(fd_);  // closing releases the lock
 }
 
 void listOutputFile(const std::string& dir, const std::string& name) { noteInMarker(dir, "file " + name); }

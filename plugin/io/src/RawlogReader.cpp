@@ -39,6 +39,11 @@ RawlogReader::RawlogReader(const std::string& path)
 		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path +
 								 "': a run that was replacing them was killed, leaving the old ones in '" + old +
 								 "' (run that program again: which folder is this rawlog's cannot be told)");
+	// Images moved in before their rawlog, by a run still putting them in place or killed before its rawlog was.
+	if (const std::string run = pendingIn(imagesDirToRead(path)); !run.empty())
+		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path + "': run " +
+								 run + " put them in place and had not yet put in their rawlog (if it was killed, run " +
+								 "that program again)");
 	mrpt::img::CImage::setImagesPathBase(imagesDirToRead(path));
 	temporaries::setActivity("reading rawlog '" + path + "'");
 }

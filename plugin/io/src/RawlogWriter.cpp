@@ -196,6 +196,7 @@ void RawlogWriter::commit(const std::function<void()>& with_images)
 	requireWholeGzipFile(tmp_path_, path_);
 	keepModeOf(path_, tmp_path_);
 	syncToDisk(tmp_path_, path_);
+	const FolderLock lock(path_);  // another run's renames wait for these
 	const bool link = !has_images_ && !link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_);
 	if (!has_images_ && !link)
 	{
@@ -204,35 +205,43 @@ void RawlogWriter::commit(const std::function<void()>& with_images)
 		committed_ = true;
 		return;
 	}
-	// The old images go aside, the new ones in, then the rawlog; only when
-	// all three moves succeeded is the old folder removed.
 	// The rule the programs check before they start, checked again here for
 	// every writer (a library user need not have called it).
 	requireOutputAllowed(images_, OutputKind::Folder, owner_, {},
 						 replace_any_ || (owner_ == kScanProgram && imagesLinkOf(path_, images_)));
 	if (!replace_any_) requireImagesOf(images_, path_);
-	if (has_images_) listOutputFolder(tmp_images_);
+	// New images go in marked "pending" until their rawlog is in: a run killed
+	// between the two leaves images that every reader refuses, old rawlog or not.
+	const std::string pending = "pending " + std::to_string(::getpid());
+	if (has_images_) listOutputFolder(tmp_images_), noteInMarker(tmp_images_, pending);
+	// The old images go aside, the new ones in, then the rawlog (a link, which
+	// can hold no mark, after the rawlog); only when all moves succeeded is
+	// the old folder removed.
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
 	const std::string old = had_old ? moveAside(images_) : "";
-	bool moved_in = false;
+	bool moved_in = false, rawlog_in = false;
 	try
 	{
-		if (has_images_) fs::rename(tmp_images_, images_);
-		// Relative, so that a folder holding both can be moved (a report's staging renamed into place).
-		else fs::create_directory_symlink(fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path()), images_);
-		moved_in = true;
+		if (has_images_) fs::rename(tmp_images_, images_), moved_in = true;
 		if (with_images) with_images();
-		fs::rename(tmp_path_, path_);
+		fs::rename(tmp_path_, path_), rawlog_in = true;
+		// Relative, so that a folder holding both can be moved (a report's staging renamed into place).
+		if (!has_images_)
+			fs::create_directory_symlink(fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path()), images_);
 	}
 	catch (const std::exception& e)
 	{
 		std::error_code ec;
-		if (moved_in) fs::remove_all(images_, ec);  // ours, just moved in (a link: only the link)
+		if (moved_in) fs::remove_all(images_, ec);  // ours, just moved in
 		if (had_old) fs::rename(old, images_, ec);
+		if (rawlog_in)  // only the link failed: the rawlog is in and its images are not
+			throw std::runtime_error("cannot link '" + images_ + "' to '" + link_to_ + "' (" + e.what() + "): '" + path_ +
+									 "' is in place without its images");
 		throw std::runtime_error("cannot move '" + path_ + "' and its images into place (" + e.what() +
 								 "); the old ones are as they were");
 	}
 	committed_ = true;
+	if (has_images_) unnoteInMarker(images_, pending);
 	if (had_old) removeReplaced(old);
 }
 

@@ -63,6 +63,26 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 /** Appends `line` to the marker of the folder `dir` (what its run, its
  * files, its rawlog or its moving aside were); throws naming the marker. */
 void noteInMarker(const std::string& dir, const std::string& line);
+/** Takes `line` out of the marker of `dir` (the marker rewritten whole). */
+void unnoteInMarker(const std::string& dir, const std::string& line);
+/** The run noted in the marker of `dir` as "pending PID": a folder moved in
+ * before the file it belongs with (RawlogWriter::commit()); "" if none. */
+std::string pendingIn(const std::string& dir);
+
+/** Holds the folder `path` is in locked (flock) while it lives: two runs
+ * putting outputs in place there take turns, so neither sees the other's
+ * half-done renames. Every commit of ours takes it. */
+class FolderLock
+{
+   public:
+	explicit FolderLock(const std::string& path);
+	~FolderLock();
+	FolderLock(const FolderLock&) = delete;
+	FolderLock& operator=(const FolderLock&) = delete;
+
+   private:
+	int fd_{-1};
+};
 
 /** Adds to the marker of `dir` the file `name` (relative to it), before the
  * program writes it: a run killed while it fills a folder leaves a list of
