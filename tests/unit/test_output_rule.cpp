@@ -20,6 +20,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -528,6 +529,54 @@ TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)
 	EXPECT_EQ(read(d + "/log_truemap.gridmap.gz"), "new map");
 	EXPECT_EQ(read(d + "/log_truemap.png").substr(1, 3), "PNG");
 	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 4);
+}
+
+TEST(OutputRule, AnOutputOfSeveralFilesGoesInAllOrNoneAndAKilledRunsHalfIsUndone)
+{
+	// train --learn's histogram, ini and candidates; the accuracy's tables; the summary's pages.
+	const std::string d = fresh("file_set");
+	write(d + "/a.txt", "old a"), write(d + "/b.txt", "old b");
+	const auto stage = [&](const std::string& name, const std::string& text) {
+		return std::make_unique<StagedFile>(d + "/" + name, [&](const std::string& tmp) { write(tmp, text); });
+	};
+	const auto leftovers = [&] {
+		int n = 0;
+		for (const auto& e : fs::directory_iterator(d)) n += e.path().filename().string().front() == '.';
+		return n;
+	};
+	// A rename that fails (the third file's temporary gone): every file as it was, nothing left.
+	{
+		std::vector<std::unique_ptr<StagedFile>> set;
+		set.push_back(stage("a.txt", "new a")), set.push_back(stage("b.txt", "new b")), set.push_back(stage("c.txt", "new c"));
+		fs::remove(temporaryOf(d + "/c.txt"));
+		EXPECT_THROW(commitAll(pointersTo(set)), std::runtime_error);
+	}
+	EXPECT_EQ(read(d + "/a.txt"), "old a");
+	EXPECT_EQ(read(d + "/b.txt"), "old b");
+	EXPECT_FALSE(fs::exists(d + "/c.txt"));
+	EXPECT_EQ(leftovers(), 0);
+	// One that goes in: every file new, nothing left.
+	{
+		std::vector<std::unique_ptr<StagedFile>> set;
+		set.push_back(stage("a.txt", "new a")), set.push_back(stage("c.txt", "new c"));
+		commitAll(pointersTo(set));
+	}
+	EXPECT_EQ(read(d + "/a.txt"), "new a");
+	EXPECT_EQ(read(d + "/c.txt"), "new c");
+	EXPECT_EQ(leftovers(), 0);
+	// Run 999986, killed after putting in a new b (the old aside) and a new d (none before), before its journals went.
+	fs::rename(d + "/b.txt", d + "/.b.txt.old-999986");
+	write(d + "/b.txt", "killed run's b"), write(d + "/d.txt", "killed run's d");
+	const std::string journal = "run 999986 1\n" + d + "/b.txt\t" + d + "/.b.txt.old-999986\n" + d + "/d.txt\t\n";
+	write(d + "/.b.txt.commit-999986", journal), write(d + "/.d.txt.commit-999986", journal);
+	EXPECT_THROW(requireWholeSet(d + "/b.txt"), std::runtime_error);  // every reader refuses either file
+	EXPECT_THROW(requireWholeSet(d + "/d.txt"), std::runtime_error);
+	EXPECT_NO_THROW(requireWholeSet(d + "/a.txt"));
+	recoverLeftoversOf(d + "/d.txt", OutputKind::Text);  // the next run writing one of them
+	EXPECT_EQ(read(d + "/b.txt"), "old b");
+	EXPECT_FALSE(fs::exists(d + "/d.txt"));
+	EXPECT_NO_THROW(requireWholeSet(d + "/b.txt"));
+	EXPECT_EQ(leftovers(), 0);
 }
 
 TEST(OutputRule, AWriteThatFailsNamesTheFileTheUserAskedForNotItsTemporary)

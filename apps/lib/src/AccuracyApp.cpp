@@ -8,6 +8,7 @@
 #include <omnirange/io/OutputRule.h>
 
 #include <filesystem>
+#include <optional>
 
 namespace omnirange::app
 {
@@ -49,17 +50,23 @@ eval::AccuracyResult AccuracyApp::run()
 						  "omnirange-accuracy", {o_.input});
 	const eval::AccuracyResult r = eval::evaluateAccuracy(o_.input, a);
 	const std::string table = r.table(a.max_difference);
-	writeFileAtomically(o_.output + "_pairs.csv", r.csv);
-	writeImageAtomically(o_.output + "_histogram.png",
-						 eval::differenceHistogram(r.stats.differences, o_.title.empty() ? o_.input : o_.title,
-												   a.max_difference));
-	writeFileAtomically(o_.output + "_table.md", table);
+	// The files of one run, all or none.
+	const auto text = [](const std::string& content) {
+		return [&content](const std::string& tmp) { writeFileAtomically(tmp, content); };
+	};
+	StagedFile pairs(o_.output + "_pairs.csv", text(r.csv));
+	StagedFile histogram = stageImage(
+		o_.output + "_histogram.png",
+		eval::differenceHistogram(r.stats.differences, o_.title.empty() ? o_.input : o_.title, a.max_difference));
+	StagedFile table_md(o_.output + "_table.md", text(table));
+	const std::string truth_table = r.truth.frames > 0 ? r.truth.table() : "";
+	std::optional<StagedFile> truth;
+	if (r.truth.frames > 0) truth.emplace(o_.output + "_truth.md", text(truth_table));
+	std::vector<StagedFile*> files{&pairs, &histogram, &table_md};
+	if (truth) files.push_back(&*truth);
+	commitAll(files);
 	MRPT_LOG_INFO_STREAM("\n" << table);
-	if (r.truth.frames > 0)
-	{
-		writeFileAtomically(o_.output + "_truth.md", r.truth.table());
-		MRPT_LOG_INFO_STREAM("against the truth:\n" << r.truth.table());
-	}
+	if (truth) MRPT_LOG_INFO_STREAM("against the truth:\n" << truth_table);
 	return r;
 }
 

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace omnirange::app
@@ -64,7 +65,7 @@ SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summa
 	setMinLoggingLevel(o_.verbosity);
 }
 
-void SummaryApp::fillOrCheck(const std::string& file, const std::string& csv)
+std::string SummaryApp::filledOrChecked(const std::string& file, const std::string& csv)
 {
 	requireRegularFile(file, "file to fill");
 	// A Markdown page of tables, not a disk image: refused before it is read into memory.
@@ -93,18 +94,23 @@ void SummaryApp::fillOrCheck(const std::string& file, const std::string& csv)
 	if (filled == text.str())
 	{
 		MRPT_LOG_INFO_STREAM(file << ": its tables are " << csv << "'s");
-		return;
+		return "";
 	}
 	if (o_.check) throw std::runtime_error(file + ": a table differs from what " + csv + " gives (omnirange-summary --fill)");
-	writeFileAtomically(file, filled);
-	MRPT_LOG_INFO_STREAM(file << ": tables made again from " << csv);
+	return filled;
 }
 
 void SummaryApp::run()
 {
 	if (!o_.fill.empty())
 	{
-		for (const auto& f : o_.fill) fillOrCheck(f, o_.csv);
+		// Every page filled, or none: pages that quote one another stay in step.
+		std::vector<std::unique_ptr<StagedFile>> pages;
+		for (const auto& f : o_.fill)
+			if (const std::string filled = filledOrChecked(f, o_.csv); !filled.empty())
+				pages.push_back(std::make_unique<StagedFile>(f, [&](const std::string& tmp) { writeFileAtomically(tmp, filled); }));
+		commitAll(pointersTo(pages));
+		for (const auto& f : o_.fill) MRPT_LOG_INFO_STREAM(f << ": its tables are " << o_.csv << "'s now");
 		return;
 	}
 	std::vector<eval::SuiteEntry> entries = eval::loadSuite(o_.suite);
@@ -121,8 +127,9 @@ void SummaryApp::run()
 	const eval::Summary s = o_.csv.empty() ? eval::collectMetrics(entries, o_.results) : eval::readCsv(o_.csv);
 	std::string page = std::string(kSummaryPageBegins) + "\n\nMade by omnirange-summary from each report's metrics.ini.\n";
 	for (const auto& name : eval::tableNames()) page += "\n## " + name + "\n\n" + eval::markdownTable(name, s);
-	writeFileAtomically(o_.output + ".csv", eval::toCsv(s));
-	writeFileAtomically(o_.output + ".md", page);
+	StagedFile csv(o_.output + ".csv", [&](const std::string& tmp) { writeFileAtomically(tmp, eval::toCsv(s)); });
+	StagedFile md(o_.output + ".md", [&](const std::string& tmp) { writeFileAtomically(tmp, page); });
+	commitAll({&csv, &md});
 	MRPT_LOG_INFO_STREAM("\naccuracy (against the laser and the truth), after the training fifth:\n"
 						 << eval::markdownTable("short", s) << "\npath error, ATE RMSE / final position error:\n"
 						 << eval::markdownTable("paths", s) << "\nevery table: " << o_.output

@@ -108,8 +108,7 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 	std::optional<StagedFile> candidates;
 	if (!o_.learn_candidates.empty())
 		candidates.emplace(o_.learn_candidates, [&](const std::string& tmp) { writeFileAtomically(tmp, candidatesCsv(l)); });
-	histogram.commit(), ini.commit();
-	if (candidates) candidates->commit();
+	commitAll(candidates ? std::vector<StagedFile*>{&histogram, &ini, &*candidates} : std::vector<StagedFile*>{&histogram, &ini});
 	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: %s (mean error %.4f m) -> %s, %s", l.training_pairs,
 					  l.validation_pairs, describe(l.best).c_str(), l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
 	if (const auto other = bestInOtherSpace(l))

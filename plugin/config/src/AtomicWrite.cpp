@@ -3,6 +3,7 @@
 #include "omnirange/config/Temporaries.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <opencv2/imgcodecs.hpp>
 #include <unistd.h>
@@ -13,6 +14,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -112,6 +115,155 @@ void StagedFile::commit()
 		std::remove(tmp_.c_str());
 		throw std::runtime_error("cannot put the new '" + path_ + "' in place (" + reason + ")");
 	}
+}
+
+namespace
+{
+/** The folders this process holds locked: a commit inside another (a
+ * simulation's true maps inside its rawlog's) must not wait for itself,
+ * as flock() would make it on a second descriptor. */
+std::set<std::string>& heldFolders()
+{
+	static std::set<std::string> held;
+	return held;
+}
+std::mutex held_mutex;
+}  // namespace
+
+FolderLock::FolderLock(const std::string& path)
+{
+	namespace fs = std::filesystem;
+	std::error_code ec;
+	const fs::path given = fs::path(path).parent_path().empty() ? "." : fs::path(path).parent_path();
+	folder_ = fs::weakly_canonical(fs::absolute(given, ec), ec).string();
+	{
+		const std::lock_guard<std::mutex> guard(held_mutex);
+		owner_ = heldFolders().insert(folder_).second;  // else held already, by a commit this one is inside
+	}
+	if (!owner_) return;
+	fd_ = ::open(folder_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	// Without a lock (a folder that cannot be opened so) the run goes on as before: the renames say what fails.
+	if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+}
+
+FolderLock::~FolderLock()
+{
+	if (!owner_) return;
+	if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+	const std::lock_guard<std::mutex> guard(held_mutex);
+	heldFolders().erase(folder_);
+}
+
+namespace
+{
+namespace fs = std::filesystem;
+
+/** Beside `target`, what a set commit names after it: ".NAME.commit-PID", ".NAME.old-PID". */
+std::string besideAs(const std::string& target, const std::string& what, const std::string& pid)
+{
+	const fs::path t(target);
+	return (t.parent_path() / ("." + t.filename().string() + "." + what + "-" + pid)).string();
+}
+
+/** The journal beside `target`, if any: its path, and its run ("PID START"). */
+std::pair<std::string, std::string> journalOf(const std::string& target)
+{
+	const fs::path t(target);
+	const fs::path dir = t.parent_path().empty() ? "." : t.parent_path();
+	const std::string prefix = "." + t.filename().string() + ".commit-";
+	std::error_code ec;
+	for (const auto& e : fs::directory_iterator(dir, ec))
+		if (e.path().filename().string().rfind(prefix, 0) == 0 && fs::is_regular_file(e.symlink_status(ec)))
+		{
+			std::ifstream f(e.path());
+			std::string run;
+			std::getline(f, run);
+			if (run.rfind("run ", 0) == 0) return {e.path().string(), run.substr(4)};
+		}
+	return {};
+}
+
+/** The set a journal names: each target and where its old file went ("" if it had none). */
+std::vector<std::pair<std::string, std::string>> setIn(const std::string& journal)
+{
+	std::ifstream f(journal);
+	std::vector<std::pair<std::string, std::string>> set;
+	std::string line;
+	std::getline(f, line);  // the run
+	while (std::getline(f, line))
+		if (const auto tab = line.find('\t'); tab != std::string::npos) set.emplace_back(line.substr(0, tab), line.substr(tab + 1));
+	return set;
+}
+}  // namespace
+
+void commitAll(const std::vector<StagedFile*>& files)
+{
+	if (files.empty()) return;
+	const FolderLock lock(files.front()->path_);
+	const std::string run = temporaries::thisRun(), pid = run.substr(0, run.find(' '));
+	std::string journal = "run " + run + "\n";
+	std::vector<std::string> asides;
+	for (const auto* f : files)
+	{
+		std::error_code ec;
+		asides.push_back(fs::exists(fs::symlink_status(f->path_, ec)) ? besideAs(f->path_, "old", pid) : "");
+		journal += f->path_ + "\t" + asides.back() + "\n";
+	}
+	std::vector<std::string> journals;
+	for (const auto* f : files)
+	{
+		journals.push_back(besideAs(f->path_, "commit", pid));
+		temporaries::add(journals.back());
+		writeFileAtomically(journals.back(), journal);
+	}
+	std::size_t aside = 0, in = 0;
+	try
+	{
+		for (; aside < files.size(); ++aside)
+			if (!asides[aside].empty()) fs::rename(files[aside]->path_, asides[aside]);
+		for (; in < files.size(); ++in) fs::rename(files[in]->tmp_, files[in]->path_);
+	}
+	catch (const std::exception& e)
+	{
+		std::error_code ec;
+		for (std::size_t i = 0; i < in; ++i) fs::remove(files[i]->path_, ec);
+		for (std::size_t i = 0; i < aside; ++i)
+			if (!asides[i].empty()) fs::rename(asides[i], files[i]->path_, ec);
+		for (const auto& j : journals) fs::remove(j, ec), temporaries::forget(j);
+		const auto* fe = dynamic_cast<const fs::filesystem_error*>(&e);
+		throw std::runtime_error("cannot put '" + files[in < files.size() ? in : aside]->path_ + "' in place (" +
+								 (fe ? fe->code().message() : e.what()) + "); every file of this output is as it was");
+	}
+	for (auto* f : files) f->committed_ = true, temporaries::forget(f->tmp_);
+	// The journals first: while one is there, the old files it names are too.
+	std::error_code ec;
+	for (const auto& j : journals) fs::remove(j, ec), temporaries::forget(j);
+	for (const auto& a : asides)
+		if (!a.empty()) fs::remove(a, ec);
+}
+
+void requireWholeSet(const std::string& path)
+{
+	if (const auto [journal, run] = journalOf(path); !journal.empty())
+		throw std::runtime_error("'" + path + "' may be one of a set of files a run (" + run.substr(0, run.find(' ')) +
+								 ") was putting in place and had not finished: the others may be of another run (if " +
+								 "it was killed, run that program again)");
+}
+
+void recoverSetOf(const std::string& path)
+{
+	const auto [journal, run] = journalOf(path);
+	const auto space = run.find(' ');
+	if (journal.empty() || !temporaries::runGone(run.substr(0, space), space == std::string::npos ? "" : run.substr(space + 1)))
+		return;
+	const std::string pid = run.substr(0, space);
+	std::error_code ec;
+	for (const auto& [target, aside] : setIn(journal))
+	{
+		if (!aside.empty() && fs::exists(fs::symlink_status(aside, ec))) fs::rename(aside, target, ec);
+		else if (aside.empty()) fs::remove(target, ec);  // new in this set: it had no old file
+	}
+	for (const auto& [target, aside] : setIn(journal)) fs::remove(besideAs(target, "commit", pid), ec);
 }
 
 void writeAtomically(

@@ -6,13 +6,18 @@
 
 #include <atomic>
 #include <chrono>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <mutex>
 #include <set>
+#include <sstream>
+#include <string>
 #include <thread>
+#include <vector>
 
 namespace omnirange::temporaries
 {
@@ -154,6 +159,41 @@ bool interrupted() { return interrupting.load(); }
 void waitForInterrupt()
 {
 	for (;;) ::pause();
+}
+
+namespace
+{
+/** The fields of /proc/PID/stat after the command's name: [0] the state, [19] the start time. */
+std::vector<std::string> statOf(const std::string& pid)
+{
+	std::ifstream f("/proc/" + pid + "/stat");
+	std::string line;
+	std::getline(f, line);
+	const auto end_of_name = line.rfind(')');
+	std::vector<std::string> fields;
+	if (end_of_name == std::string::npos) return fields;
+	std::istringstream in(line.substr(end_of_name + 1));
+	for (std::string v; in >> v;) fields.push_back(v);
+	return fields;
+}
+}  // namespace
+
+std::string thisRun()
+{
+	const std::string pid = std::to_string(::getpid());
+	const auto stat = statOf(pid);
+	return pid + " " + (stat.size() > 19 ? stat[19] : "");
+}
+
+bool runGone(const std::string& pid, const std::string& start)
+{
+	if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) return false;
+	const long id = std::stol(pid);
+	if (id == ::getpid()) return false;
+	if (::kill(static_cast<pid_t>(id), 0) != 0) return errno == ESRCH;
+	const auto stat = statOf(pid);
+	if (!stat.empty() && stat[0] == "Z") return true;  // killed, not yet reaped by its parent
+	return !start.empty() && stat.size() > 19 && stat[19] != start;
 }
 
 }  // namespace omnirange::temporaries

@@ -184,6 +184,7 @@ void ColourHistogram::save(const std::string& path) const
 ColourHistogram ColourHistogram::load(const std::string& path)
 {
 	requireRegularFile(path, "histogram");
+	requireWholeSet(path);
 	errno = 0;
 	std::ifstream f(path, std::ios::binary);
 	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "' (" + std::strerror(errno) + ")");

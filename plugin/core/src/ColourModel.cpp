@@ -39,6 +39,7 @@ ColourModel ColourModel::load(const std::string& path)
 {
 	// Only regular files: a device or a pipe would be read without end.
 	requireRegularFile(path, "histogram");
+	requireWholeSet(path);  // learned with an ini that may not be in place yet
 	errno = 0;
 	std::ifstream f(path, std::ios::binary);
 	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "' (" + std::strerror(errno) + ")");

@@ -364,20 +364,8 @@ void replaceFolder(const std::string& target, const std::string& fresh)
 
 namespace
 {
-/** The process `pid` (digits) is gone: its leftovers are nobody's run's. */
-bool deadRun(const std::string& pid)
-{
-	if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) return false;
-	const long id = std::stol(pid);
-	if (id == ::getpid()) return false;
-	if (::kill(static_cast<pid_t>(id), 0) != 0) return errno == ESRCH;
-	// Killed but not yet reaped by its parent (a zombie): gone all the same.
-	std::ifstream stat("/proc/" + pid + "/stat");
-	std::string line;
-	std::getline(stat, line);
-	const auto end_of_name = line.rfind(')');
-	return end_of_name != std::string::npos && line.size() > end_of_name + 2 && line[end_of_name + 2] == 'Z';
-}
+/** The run `pid` is over: its leftovers are nobody's run's. */
+bool deadRun(const std::string& pid) { return temporaries::runGone(pid); }
 
 /** `p` is a folder whose marker has `line`. */
 bool markerSays(const fs::path& p, const std::string& line)
@@ -486,6 +474,7 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	std::error_code ec;
 	if (!fs::is_directory(dir, ec)) return;
 	const std::string name = t.filename().string();
+	if (kind != OutputKind::Folder) recoverSetOf(target);  // a set of files a killed run was putting in place
 	// Only what our runs leave: a folder holding the marker; a file of the
 	// output's kind, or empty (killed before it wrote). A user's file that
 	// merely has such a name is left alone.
@@ -504,7 +493,7 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	{
 		const std::string other = e.path().filename().string();
 		// What a run names its leftovers (temporaryOf(), StagedFolder, moveAside()).
-		for (const auto& prefix : {name + ".staging-", "." + name + ".tmp-", name + ".old-"})
+		for (const auto& prefix : {name + ".staging-", "." + name + ".tmp-", name + ".old-", "." + name + ".old-"})
 		{
 			if (other.rfind(prefix, 0) != 0) continue;
 			const std::string pid = other.substr(prefix.size());
@@ -512,8 +501,9 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 			// A folder is that run's only if its marker says so: "NAME.old-2024" or
 			// "NAME.staging-2024" may be a user's copy of a report, marker and all.
 			const bool old = prefix == name + ".old-";
-			// A file's temporaries are hidden (temporaryOf()): "f.hist.staging-2023" is a user's copy.
-			if (!fs::is_directory(fs::symlink_status(e.path(), ec)) && prefix != "." + name + ".tmp-") continue;
+			// A file's temporaries are hidden (temporaryOf(), commitAll()'s old copies): "f.hist.staging-2023" is a user's copy.
+			const bool hidden = prefix == "." + name + ".tmp-" || prefix == "." + name + ".old-";
+			if (!fs::is_directory(fs::symlink_status(e.path(), ec)) && !hidden) continue;
 			if (fs::is_directory(fs::symlink_status(e.path(), ec)) &&
 				!(marked(e.path()) && (old ? movedAsideBy(e.path(), pid) : madeBy(e.path(), pid))))
 				continue;
@@ -622,19 +612,6 @@ std::string pendingIn(const std::string& dir)
 	for (std::string l; std::getline(f, l);)
 		if (l.rfind("pending ", 0) == 0) return l.substr(8);
 	return "";
-}
-
-FolderLock::FolderLock(const std::string& path)
-{
-	const fs::path dir = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
-	fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-	// Without a lock (a folder that cannot be opened so) the run goes on as before: the renames say what fails.
-	if (fd_ >= 0) ::flock(fd_, LOCK_EX);
-}
-
-FolderLock::~FolderLock()
-{
-	if (fd_ >= 0) ::close(fd_);  // closing releases the lock
 }
 
 void listOutputFile(const std::string& dir, const std::string& name) { noteInMarker(dir, "file " + name); }

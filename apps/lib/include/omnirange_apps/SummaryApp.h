@@ -34,7 +34,9 @@ class SummaryApp : public mrpt::system::COutputLogger
 	void run();
 
    private:
-	void fillOrCheck(const std::string& file, const std::string& csv);
+	/** `file` with its tables filled from `csv`, or "" when they are already
+	 * (--check: throws when they are not). */
+	std::string filledOrChecked(const std::string& file, const std::string& csv);
 	Options o_;
 };
 

@@ -32,17 +32,17 @@ std::string whyCannotReplace(const std::string& path);
  * about to replace, if that exists. */
 void keepModeOf(const std::string& target, const std::string& tmp);
 
-/** One file of a multi-file output, written in full to a temporary beside
- * `path` and synced, but renamed into place only by commit(): an output of
- * several files stages each, then commits them together, so a failure while
- * any is written leaves every old file whole. Destroyed uncommitted (an
- * error, an exception), it removes its temporary. */
 /** Where a run writes `target` (a file or a folder) before renaming it into
  * place: ".NAME.tmp-PID" beside it. Hidden, and of a form nobody names a
  * backup, so that the next run can tell a killed run's leftover from a
  * user's "NAME.tmp-2024". */
 std::string temporaryOf(const std::string& target);
 
+/** One file of a multi-file output, written in full to a temporary beside
+ * `path` and synced, but renamed into place only by commit(): an output of
+ * several files stages each, then commits them together (commitAll()), so
+ * a failure while any is written leaves every old file whole. Destroyed
+ * uncommitted (an error, an exception), it removes its temporary. */
 class StagedFile
 {
    public:
@@ -56,9 +56,63 @@ class StagedFile
 	void commit();
 
    private:
+	friend void commitAll(const std::vector<StagedFile*>& files);
+/** The files of `owned`, for commitAll(). */
+template <class Owner>
+std::vector<StagedFile*> pointersTo(const std::vector<Owner>& owned)
+{
+	std::vector<StagedFile*> files;
+	for (const auto& f : owned) files.push_back(&*f);
+	return files;
+}
 	std::string path_, tmp_;
 	bool committed_{false};
 };
+
+/** Holds the folder `path` is in locked (flock) while it lives: two runs
+ * putting outputs in place there take turns, so neither sees the other's
+ * half-done renames. Every commit of ours takes it. */
+class FolderLock
+{
+   public:
+	explicit FolderLock(const std::string& path);
+	~FolderLock();
+	FolderLock(const FolderLock&) = delete;
+	FolderLock& operator=(const FolderLock&) = delete;
+
+   private:
+	std::string folder_;
+	int fd_{-1};
+	bool owner_{false};  ///< false: a commit this one is inside holds the folder
+};
+
+/** Puts the files of one output in place as one. A journal beside each
+ * (.NAME.commit-PID) names the set and where each old file goes aside
+ * (.NAME.old-PID); then every old file goes aside, every new one in, and the
+ * journals and old files are removed. If a rename fails, every new file
+ * comes out and every old one goes back, and the error says so. A run
+ * killed in between leaves its journals: every reader of a file of the set
+ * refuses it (requireWholeSet()) and the next run writing one of them puts
+ * the old set back (recoverSetOf()). */
+void commitAll(const std::vector<StagedFile*>& files);
+/** The files of `owned`, for commitAll(). */
+template <class Owner>
+std::vector<StagedFile*> pointersTo(const std::vector<Owner>& owned)
+{
+	std::vector<StagedFile*> files;
+	for (const auto& f : owned) files.push_back(&*f);
+	return files;
+}
+
+/** Throws std::runtime_error naming `path` when a run is putting it in
+ * place with other files, or was killed doing so (its journal is beside
+ * it): the set may be half of one run's and half of another's. */
+void requireWholeSet(const std::string& path);
+
+/** When a run that is over left a journal beside `path` (commitAll()):
+ * every file of its set goes back as it was (an old one from aside, a new
+ * one that had no old one removed), and its journals go. */
+void recoverSetOf(const std::string& path);
 
 /** Calls `write(tmp_path)`, syncs it to disk and renames it to `path`.
  * If `write` throws, the temporary file is removed and the error rethrown;

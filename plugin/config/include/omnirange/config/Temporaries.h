@@ -36,4 +36,12 @@ void warn(const std::string& what);
 /** What setActivity() last said ("" if nothing): an error with no file of its own (out of memory) names it. */
 std::string currentActivity();
 
+/** "PID START": this process, with its start time (a PID is reused later,
+ * after a reboot soon; the pair is not). */
+std::string thisRun();
+/** The run `pid` (digits), started at `start` ("" to leave that out), is
+ * over: no such process, one killed and not yet reaped, or another process
+ * that has its PID now. Its leftovers are nobody's run's. */
+bool runGone(const std::string& pid, const std::string& start = "");
+
 }  // namespace omnirange::temporaries

@@ -69,21 +69,6 @@ void unnoteInMarker(const std::string& dir, const std::string& line);
  * before the file it belongs with (RawlogWriter::commit()); "" if none. */
 std::string pendingIn(const std::string& dir);
 
-/** Holds the folder `path` is in locked (flock) while it lives: two runs
- * putting outputs in place there take turns, so neither sees the other's
- * half-done renames. Every commit of ours takes it. */
-class FolderLock
-{
-   public:
-	explicit FolderLock(const std::string& path);
-	~FolderLock();
-	FolderLock(const FolderLock&) = delete;
-	FolderLock& operator=(const FolderLock&) = delete;
-
-   private:
-	int fd_{-1};
-};
-
 /** Adds to the marker of `dir` the file `name` (relative to it), before the
  * program writes it: a run killed while it fills a folder leaves a list of
  * what was its own, so what a user adds there later is told apart. */
