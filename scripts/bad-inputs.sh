@@ -477,6 +477,8 @@ cp imp/100.0.jpg rim1.jpg && ln -sf rim1.jpg rim_again.jpg
 run_case "calibrate: the same --rim image twice (once through a link)" "error:is given twice" cal.ini -- "$apps/omnirange-calibrate" -q --rim rim1.jpg --rim rim_again.jpg --save-to cal.ini
 printf 'base = factory.ini\n[experiment]\nmap_omni_ini = icp-slam-omniscan.ini\n' > exp/ini/wrong_map.ini
 run_case "experiment: map_omni_ini names an icp-slam ini" "error:it is an icp-slam ini" none.out -- "$apps/omnirange-experiment" -q exp/ini/wrong_map.ini -n 10 -o wrong_map
+printf 'base = /proc/kmsg\n[rangefinder]\nN = 10\n' > kmsg.ini
+scan "ini: a base that is a kernel file (/proc/kmsg blocks)" "error:is a file of the kernel's" -i s.rawlog -c kmsg.ini -H floor.hist -o out.rawlog
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

@@ -223,6 +223,8 @@ class Parser
 			if (!(std::abs(c.x) <= kMaxWorldCoordinate && std::abs(c.y) <= kMaxWorldCoordinate))
 				throw error("the solid reaches beyond " + std::to_string(static_cast<int>(kMaxWorldCoordinate)) +
 							" m from the origin");
+		if (w_.solids.size() >= kMaxWorldSolids)
+			throw error("more than " + std::to_string(kMaxWorldSolids) + " solids: a world this large would take minutes a frame");
 		w_.solids.push_back({fp, z0, z1, material, line_});
 	}
 

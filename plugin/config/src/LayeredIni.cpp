@@ -61,7 +61,7 @@ LayeredIni readLayeredIni(const std::string& path)
 	LayeredIni ini;
 	for (std::string file = path; !file.empty(); file = iniBaseOf(file))
 	{
-		if (ini.files.empty()) requireRegularFile(file, "ini file");
+		requireRegularFile(file, ini.files.empty() ? "ini file" : "base ini");
 		if (!fs::is_regular_file(file))
 			throw std::runtime_error(ini.files.empty() ? "cannot open ini file '" + file + "'"
 													   : ini.files.back() + ": its base '" + file + "' is not a file");

@@ -1,5 +1,8 @@
 #include "omnirange/config/OptionsTable.h"
 
+#include <linux/magic.h>
+#include <sys/vfs.h>
+
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <algorithm>
@@ -71,6 +74,10 @@ void requireRegularFile(const std::string& path, const std::string& what)
 	std::error_code ec;
 	if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
 		throw std::runtime_error("the " + what + " '" + path + "' is not a regular file");
+	// The kernel's files look regular, but some never end or block (/proc/kmsg).
+	struct statfs fs{};
+	if (::statfs(path.c_str(), &fs) == 0 && (fs.f_type == PROC_SUPER_MAGIC || fs.f_type == SYSFS_MAGIC))
+		throw std::runtime_error("the " + what + " '" + path + "' is a file of the kernel's, not of data");
 }
 
 void requireNamedOnce(const std::vector<std::string>& files, const std::string& what)

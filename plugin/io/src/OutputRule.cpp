@@ -288,8 +288,8 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 									 " wrote into its output '" + output + "' (move it out, or give another output)");
 		// Replacing it notes in its marker and renames it (moveAside()): found now, not after the run.
 		if (::access((p / kOutputMarker).c_str(), W_OK) != 0)
-			throw std::runtime_error("'" + output + "' cannot be replaced: its marker '" + kOutputMarker + "' is " +
-									 (errno == EACCES ? "read-only" : std::strerror(errno)));
+			throw std::runtime_error("'" + output + "' cannot be replaced: its marker '" + kOutputMarker +
+									 "' cannot be written (" + std::strerror(errno) + ")");
 		if (const std::string why = whyCannotReplace(output); !why.empty())
 			throw std::runtime_error("'" + output + "' cannot be replaced (" + why + ")");
 		return;

@@ -74,6 +74,9 @@ class World
  * renderer's shadow grid grow with the extent (a solid 1e6 m away once
  * asked for more memory than there is). */
 constexpr double kMaxWorldCoordinate = 1000.0;
+/** The most solids a world may have (a grid map's cells count one each): the
+ * stock worlds have up to about 20,000; millions would take minutes a frame. */
+constexpr std::size_t kMaxWorldSolids = 1000000;
 
 /** Reads a world file; throws std::runtime_error "FILE:LINE: message". */
 World loadWorld(const std::string& path);
