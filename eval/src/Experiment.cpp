@@ -368,6 +368,8 @@ void Experiment::writeReport()
 	const Metrics m = metricsOf(r_);
 	std::string ini = "[metrics]\n";
 	for (const auto& [k, v] : m) ini += k + " = " + formatDouble(v) + "\n";
+	// Which experiment: a report put under another one's name (-o) is not taken for it.
+	ini += "\n[report]\nexperiment = " + fs::path(c_.ini_file).stem().string() + "\n";
 	writeFileAtomically(out_ + "/metrics.ini", ini);
 	writeFileAtomically(out_ + "/report.md", reportMarkdown(c_, r_));
 }

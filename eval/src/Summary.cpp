@@ -42,7 +42,8 @@ Metrics readMetrics(const std::string& file)
 	std::vector<std::string> sections, keys;
 	ini.getAllSections(sections);
 	for (const auto& section : sections)
-		if (section != "metrics") throw std::runtime_error(file + ": [" + section + "] is not a section of a report's metrics ([metrics])");
+		if (section != "metrics" && section != "report")
+			throw std::runtime_error(file + ": [" + section + "] is not a section of a report's metrics ([metrics], [report])");
 	ini.getAllKeys("metrics", keys);
 	Metrics m;
 	for (const auto& k : keys)
@@ -72,6 +73,10 @@ Summary collectMetrics(const std::vector<SuiteEntry>& entries, const std::string
 		if (!fs::exists(file)) throw std::runtime_error("no report of '" + e.name + "': '" + file + "' is missing");
 		requireRegularFile(file, "report");
 		requireNoRepeatedKeys(file);  // read as strictly as any ini: a garbled report is not an empty one
+		// A report run from another experiment's ini and put here by -o: its figures are not this one's.
+		const mrpt::config::CConfigFile ini(file);
+		if (const std::string made_by = ini.read_string("report", "experiment", ""); !made_by.empty() && made_by != e.name)
+			throw std::runtime_error("'" + file + "' is a report of '" + made_by + "', not of '" + e.name + "'");
 		s.push_back({e.name, e.group, readMetrics(file)});
 	}
 	return s;
