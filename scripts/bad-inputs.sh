@@ -59,7 +59,7 @@ variant scan_huge 'scanlines = 1e9'
 variant r_abc 'R = abc'
 variant r_neg 'R = -5'
 variant unknown 'thresold = 0.1'
-variant width_small 'image_width = 640'
+variant width_small 'image_width = 640' 'cx = 320'
 variant empty_value 'threshold ='
 sed 's/^base = .*/base = nowhere.ini/' f.ini > no_base.ini
 printf '[laser]\nfov = 180\n' > renamed_robot.ini
@@ -118,7 +118,7 @@ scan "one JPEG cut short" error -i cutimg.rawlog -c f.ini -H floor.hist -o out.r
 run_case "one JPEG cut short, --skip-bad-images" "warn:skipped" out.rawlog -- "$apps/omnirange-scan" -i cutimg.rawlog -c f.ini -H floor.hist -o out.rawlog --skip-bad-images
 scan "a corrupt JPEG stored inside the rawlog" "libexit:corrupt-embedded-jpeg.rawlog" -i "$src/tests/data/corrupt-embedded-jpeg.rawlog" -c f.ini -H floor.hist -o out.rawlog
 scan "no image under the label" error "${S[@]}" --omni-label NOSUCH
-scan "image size other than the ini's" error -i s.rawlog -c width_small.ini -H floor.hist -o out.rawlog
+scan "image size other than the ini's" "error:but the camera is 640x768" -i s.rawlog -c width_small.ini -H floor.hist -o out.rawlog
 scan "histogram missing" error -i s.rawlog -c f.ini -H none.hist -o out.rawlog
 scan "histogram is /dev/zero" error -i s.rawlog -c f.ini -H /dev/zero -o out.rawlog
 scan "histogram cut short" error -i s.rawlog -c f.ini -H cut.hist -o out.rawlog

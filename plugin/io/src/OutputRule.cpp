@@ -235,8 +235,8 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	if (output.empty()) return;
 	if (kind != OutputKind::Folder && output_as_given.back() == '/')
 		throw std::runtime_error("'" + output_as_given + "' ends with '/', which names a folder: this output is a file");
-	requireReachable(output);
 	requireNameFits(output);
+	requireReachable(output);
 	// "a/missing/..": the system cannot pass through a folder that is not there, though the text reads as "a".
 	fs::path walked;
 	for (const auto& part : fs::path(output_as_given))
@@ -324,7 +324,7 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 {
 	std::vector<std::string> paths;
 	for (const auto& o : outputs)
-		if (!o.path.empty()) paths.push_back(o.path), requireReachable(outputPath(o.path)), requireNameFits(outputPath(o.path));
+		if (!o.path.empty()) paths.push_back(o.path), requireNameFits(outputPath(o.path)), requireReachable(outputPath(o.path));
 	requireDistinctOutputs(paths);
 	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
 }
