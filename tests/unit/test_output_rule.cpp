@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -40,6 +41,12 @@ void writeRawlog(const std::string& path)
 }
 
 std::string read(const std::string& path) { return test::readText(path); }
+/** The inode of `path`, as a set's journal records a new file's. */
+unsigned long inodeNumber(const std::string& path)
+{
+	struct stat st{};
+	return ::lstat(path.c_str(), &st) == 0 ? static_cast<unsigned long>(st.st_ino) : 0;
+}
 
 /** The error requireOutputAllowed() throws, or "" when it allows the output. */
 std::string refusal(const std::string& out, OutputKind kind, const std::vector<std::string>& inputs = {}, bool force = false)
@@ -567,7 +574,9 @@ TEST(OutputRule, AnOutputOfSeveralFilesGoesInAllOrNoneAndAKilledRunsHalfIsUndone
 	// Run 999986, killed after putting in a new b (the old aside) and a new d (none before), before its journals went.
 	fs::rename(d + "/b.txt", d + "/.b.txt.old-999986");
 	write(d + "/b.txt", "killed run's b"), write(d + "/d.txt", "killed run's d");
-	const std::string journal = "run 999986 1\n" + d + "/b.txt\t" + d + "/.b.txt.old-999986\n" + d + "/d.txt\t\n";
+	const auto inode = [&](const std::string& name) { return std::to_string(inodeNumber(d + "/" + name)); };
+	const std::string journal = "run 999986 1\n" + d + "/b.txt\t" + d + "/.b.txt.old-999986\t" + inode("b.txt") + "\n" +
+								d + "/d.txt\t\t" + inode("d.txt") + "\n";
 	write(d + "/.b.txt.commit-999986", journal), write(d + "/.d.txt.commit-999986", journal);
 	EXPECT_THROW(requireWholeSet(d + "/b.txt"), std::runtime_error);  // every reader refuses either file
 	EXPECT_THROW(requireWholeSet(d + "/d.txt"), std::runtime_error);
@@ -576,6 +585,12 @@ TEST(OutputRule, AnOutputOfSeveralFilesGoesInAllOrNoneAndAKilledRunsHalfIsUndone
 	EXPECT_EQ(read(d + "/b.txt"), "old b");
 	EXPECT_FALSE(fs::exists(d + "/d.txt"));
 	EXPECT_NO_THROW(requireWholeSet(d + "/b.txt"));
+	EXPECT_EQ(leftovers(), 0);
+	// A file put where a killed run's new one was (a user's, since) is not taken out by the undoing.
+	write(d + "/e.txt", "the user's e");
+	write(d + "/.e.txt.commit-999985", "run 999985 1\n" + d + "/e.txt\t\t1\n");
+	recoverLeftoversOf(d + "/e.txt", OutputKind::Text);
+	EXPECT_EQ(read(d + "/e.txt"), "the user's e");
 	EXPECT_EQ(leftovers(), 0);
 }
 

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <mutex>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -183,16 +184,34 @@ std::pair<std::string, std::string> journalOf(const std::string& target)
 	return {};
 }
 
-/** The set a journal names: each target and where its old file went ("" if it had none). */
-std::vector<std::pair<std::string, std::string>> setIn(const std::string& journal)
+/** One file of a set a journal names: where it goes, where its old file went
+ * ("" if it had none), and the inode of the new file (which a rename keeps). */
+struct SetFile
+{
+	std::string target, aside, inode;
+};
+
+std::vector<SetFile> setIn(const std::string& journal)
 {
 	std::ifstream f(journal);
-	std::vector<std::pair<std::string, std::string>> set;
+	std::vector<SetFile> set;
 	std::string line;
 	std::getline(f, line);  // the run
 	while (std::getline(f, line))
-		if (const auto tab = line.find('\t'); tab != std::string::npos) set.emplace_back(line.substr(0, tab), line.substr(tab + 1));
+	{
+		SetFile file;
+		std::istringstream fields(line);
+		if (std::getline(fields, file.target, '\t') && std::getline(fields, file.aside, '\t') && std::getline(fields, file.inode))
+			set.push_back(file);
+	}
 	return set;
+}
+
+/** The inode of `path` ("" if there is none): what tells a run's new file from one put there since. */
+std::string inodeOf(const std::string& path)
+{
+	struct stat st{};
+	return ::lstat(path.c_str(), &st) == 0 ? std::to_string(st.st_ino) : "";
 }
 }  // namespace
 
@@ -207,13 +226,13 @@ void commitAll(const std::vector<StagedFile*>& files)
 	{
 		std::error_code ec;
 		asides.push_back(fs::exists(fs::symlink_status(f->path_, ec)) ? besideAs(f->path_, "old", pid) : "");
-		journal += f->path_ + "\t" + asides.back() + "\n";
+		journal += f->path_ + "\t" + asides.back() + "\t" + inodeOf(f->tmp_) + "\n";
 	}
+	// Not temporaries: an interrupt mid-way leaves them, for readers to refuse and the next run to undo.
 	std::vector<std::string> journals;
 	for (const auto* f : files)
 	{
 		journals.push_back(besideAs(f->path_, "commit", pid));
-		temporaries::add(journals.back());
 		writeFileAtomically(journals.back(), journal);
 	}
 	std::size_t aside = 0, in = 0;
@@ -229,15 +248,16 @@ void commitAll(const std::vector<StagedFile*>& files)
 		for (std::size_t i = 0; i < in; ++i) fs::remove(files[i]->path_, ec);
 		for (std::size_t i = 0; i < aside; ++i)
 			if (!asides[i].empty()) fs::rename(asides[i], files[i]->path_, ec);
-		for (const auto& j : journals) fs::remove(j, ec), temporaries::forget(j);
+		for (const auto& j : journals) fs::remove(j, ec);
 		const auto* fe = dynamic_cast<const fs::filesystem_error*>(&e);
-		throw std::runtime_error("cannot put '" + files[in < files.size() ? in : aside]->path_ + "' in place (" +
-								 (fe ? fe->code().message() : e.what()) + "); every file of this output is as it was");
+		const StagedFile* failed = aside < files.size() ? files[aside] : files[in];
+		throw std::runtime_error("cannot put '" + failed->path_ + "' in place (" + (fe ? fe->code().message() : e.what()) +
+								 "); every file of this output is as it was");
 	}
 	for (auto* f : files) f->committed_ = true, temporaries::forget(f->tmp_);
 	// The journals first: while one is there, the old files it names are too.
 	std::error_code ec;
-	for (const auto& j : journals) fs::remove(j, ec), temporaries::forget(j);
+	for (const auto& j : journals) fs::remove(j, ec);
 	for (const auto& a : asides)
 		if (!a.empty()) fs::remove(a, ec);
 }
@@ -258,12 +278,17 @@ void recoverSetOf(const std::string& path)
 		return;
 	const std::string pid = run.substr(0, space);
 	std::error_code ec;
-	for (const auto& [target, aside] : setIn(journal))
+	for (const auto& f : setIn(journal))
 	{
-		if (!aside.empty() && fs::exists(fs::symlink_status(aside, ec))) fs::rename(aside, target, ec);
-		else if (aside.empty()) fs::remove(target, ec);  // new in this set: it had no old file
+		// Only what that run put in is taken out: a file put there since is someone's.
+		const std::string now = inodeOf(f.target);
+		const bool theirs = !now.empty() && now == f.inode;
+		if (!f.aside.empty() && fs::exists(fs::symlink_status(f.aside, ec)) && (now.empty() || theirs))
+			fs::rename(f.aside, f.target, ec);
+		else if (f.aside.empty() && theirs)
+			fs::remove(f.target, ec);  // new in that set: it had no old file
 	}
-	for (const auto& [target, aside] : setIn(journal)) fs::remove(besideAs(target, "commit", pid), ec);
+	for (const auto& f : setIn(journal)) fs::remove(besideAs(f.target, "commit", pid), ec);
 }
 
 void writeAtomically(
