@@ -162,7 +162,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	mrpt::img::CImage png;
 	grid.getAsImage(png, true);  // north up, as saveAsBitmapFile() draws it
 	StagedFile picture = stageImage(base + "_truemap.png", png.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY));
-	out.commit([&] { commitAll({&map, &picture}); });
+	out.commit({&map, &picture});
 
 	SimSummary s;
 	s.frames = static_cast<int>(in.poses.size());

@@ -467,7 +467,7 @@ TEST(OutputRule, WhatBelongsWithARawlogGoesInAfterItsImagesAndBeforeIt)
 		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
 		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
 		w.write(mrpt::obs::CObservationOdometry());
-		w.commit(with_images);
+		w.commit({}, with_images);
 	};
 	writeLog(1, [&] { write(d + "/log_truemap.txt", "first"); });
 	const std::string first_rawlog = read(d + "/log.rawlog");
@@ -495,6 +495,17 @@ TEST(OutputRule, WhatBelongsWithARawlogGoesInAfterItsImagesAndBeforeIt)
 	EXPECT_THROW(writeLog(3, [] { throw std::runtime_error("cannot put the true map in place"); }), std::runtime_error);
 	EXPECT_EQ(read(d + "/log.rawlog"), second_rawlog);
 	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 4);
+	// Files that go along (a true map) come out again when the rawlog cannot go in (here its temporary is gone).
+	write(d + "/log_truemap.txt", "before");
+	{
+		StagedFile map(d + "/log_truemap.txt", [](const std::string& tmp) { write(tmp, "after"); });
+		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(5, 5, 5)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		EXPECT_THROW(w.commit({&map}, [&] { fs::remove(temporaryOf(d + "/log.rawlog")); }), std::runtime_error);
+	}
+	EXPECT_EQ(read(d + "/log_truemap.txt"), "before");
+	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 4);
 	// A rawlog whose images are a link (a scan's): the link, which can hold no mark, goes in after the rawlog,
 	// so the old rawlog is never beside the new link.
 	fs::create_directory(d + "/other_Images");
@@ -503,9 +514,41 @@ TEST(OutputRule, WhatBelongsWithARawlogGoesInAfterItsImagesAndBeforeIt)
 		RawlogWriter w(d + "/scan.rawlog", kScanProgram);
 		w.write(mrpt::obs::CObservationOdometry());
 		w.linkImagesTo(d + input_images);
-		w.commit([&] { EXPECT_FALSE(fs::exists(fs::symlink_status(d + "/scan_Images"))) << input_images; });
+		w.commit({}, [&] { EXPECT_FALSE(fs::exists(fs::symlink_status(d + "/scan_Images"))) << input_images; });
 		EXPECT_TRUE(fs::is_symlink(d + "/scan_Images"));
 	}
+	// A link that cannot be made fails before anything is moved: the old scan and its link stay.
+	const std::string old_scan = read(d + "/scan.rawlog");
+	fs::create_directories(temporaryOf(d + "/scan_Images") + "/in_the_way");
+	{
+		RawlogWriter w(d + "/scan.rawlog", kScanProgram);
+		w.write(mrpt::obs::CObservationOdometry());
+		w.write(mrpt::obs::CObservationOdometry());
+		w.linkImagesTo(d + "/log_Images");
+		EXPECT_THROW(w.commit(), std::exception);
+	}
+	EXPECT_EQ(read(d + "/scan.rawlog"), old_scan);
+	EXPECT_EQ(fs::read_symlink(d + "/scan_Images").filename(), "other_Images");
+}
+
+TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
+{
+	// A scan reading a dataset while a simulation writes it again: part of what it read is of other images.
+	const std::string d = fresh("replaced_while_read");
+	const auto writeLog = [&](int value) {
+		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit();
+	};
+	writeLog(1);
+	{
+		RawlogReader unchanged(d + "/log.rawlog");
+		while (unchanged.next()) {}
+	}
+	RawlogReader reader(d + "/log.rawlog");
+	writeLog(2);
+	EXPECT_THROW(while (reader.next()) {}, std::runtime_error);
 }
 
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)

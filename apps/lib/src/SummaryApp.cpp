@@ -67,6 +67,7 @@ SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summa
 
 std::string SummaryApp::filledOrChecked(const std::string& file, const std::string& csv)
 {
+	recoverSetOf(file);  // a page a killed --fill was replacing: the old set back before it is read
 	requireRegularFile(file, "file to fill");
 	// A Markdown page of tables, not a disk image: refused before it is read into memory.
 	constexpr std::uintmax_t kLargestPage = 64u << 20;

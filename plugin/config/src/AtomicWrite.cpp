@@ -215,51 +215,86 @@ std::string inodeOf(const std::string& path)
 }
 }  // namespace
 
-void commitAll(const std::vector<StagedFile*>& files)
+FileSetCommit::FileSetCommit(std::vector<StagedFile*> files) : files_(std::move(files))
 {
-	if (files.empty()) return;
-	const FolderLock lock(files.front()->path_);
+	// Every folder of the set, in one order, so that two runs with sets over the same folders cannot each wait for the other.
+	std::set<std::string> folders;
+	for (const auto* f : files_) folders.insert(fs::absolute(f->path_).string());
+	std::set<std::string> seen;
+	for (const auto& path : folders)
+		if (seen.insert(fs::path(path).parent_path().string()).second) locks_.push_back(std::make_unique<FolderLock>(path));
+}
+
+FileSetCommit::~FileSetCommit()
+{
+	if (!finished_ && (aside_ > 0 || in_ > 0)) undo();
+}
+
+void FileSetCommit::put()
+{
+	if (files_.empty()) return;
 	const std::string run = temporaries::thisRun(), pid = run.substr(0, run.find(' '));
 	std::string journal = "run " + run + "\n";
-	std::vector<std::string> asides;
-	for (const auto* f : files)
+	for (const auto* f : files_)
 	{
 		std::error_code ec;
-		asides.push_back(fs::exists(fs::symlink_status(f->path_, ec)) ? besideAs(f->path_, "old", pid) : "");
-		journal += f->path_ + "\t" + asides.back() + "\t" + inodeOf(f->tmp_) + "\n";
+		asides_.push_back(fs::exists(fs::symlink_status(f->path_, ec)) ? besideAs(f->path_, "old", pid) : "");
+		journal += f->path_ + "\t" + asides_.back() + "\t" + inodeOf(f->tmp_) + "\n";
 	}
 	// Not temporaries: an interrupt mid-way leaves them, for readers to refuse and the next run to undo.
-	std::vector<std::string> journals;
-	for (const auto* f : files)
+	for (const auto* f : files_)
 	{
-		journals.push_back(besideAs(f->path_, "commit", pid));
-		writeFileAtomically(journals.back(), journal);
+		journals_.push_back(besideAs(f->path_, "commit", pid));
+		writeFileAtomically(journals_.back(), journal);
 	}
-	std::size_t aside = 0, in = 0;
 	try
 	{
-		for (; aside < files.size(); ++aside)
-			if (!asides[aside].empty()) fs::rename(files[aside]->path_, asides[aside]);
-		for (; in < files.size(); ++in) fs::rename(files[in]->tmp_, files[in]->path_);
+		for (; aside_ < files_.size(); ++aside_)
+			if (!asides_[aside_].empty()) fs::rename(files_[aside_]->path_, asides_[aside_]);
+		for (; in_ < files_.size(); ++in_) fs::rename(files_[in_]->tmp_, files_[in_]->path_);
 	}
 	catch (const std::exception& e)
 	{
-		std::error_code ec;
-		for (std::size_t i = 0; i < in; ++i) fs::remove(files[i]->path_, ec);
-		for (std::size_t i = 0; i < aside; ++i)
-			if (!asides[i].empty()) fs::rename(asides[i], files[i]->path_, ec);
-		for (const auto& j : journals) fs::remove(j, ec);
+		const StagedFile* failed = aside_ < files_.size() ? files_[aside_] : files_[in_];
+		const std::string left = undo();
 		const auto* fe = dynamic_cast<const fs::filesystem_error*>(&e);
-		const StagedFile* failed = aside < files.size() ? files[aside] : files[in];
 		throw std::runtime_error("cannot put '" + failed->path_ + "' in place (" + (fe ? fe->code().message() : e.what()) +
-								 "); every file of this output is as it was");
+								 "); " + (left.empty() ? "every file of this output is as it was" : left));
 	}
-	for (auto* f : files) f->committed_ = true, temporaries::forget(f->tmp_);
+}
+
+std::string FileSetCommit::undo()
+{
+	std::error_code ec;
+	bool whole = true;
+	for (std::size_t i = 0; i < in_; ++i) fs::remove(files_[i]->path_, ec), whole = whole && !ec;
+	for (std::size_t i = 0; i < aside_; ++i)
+		if (!asides_[i].empty()) fs::rename(asides_[i], files_[i]->path_, ec), whole = whole && !ec;
+	aside_ = in_ = 0;
+	finished_ = true;
+	if (!whole)
+		return "not every old file could be put back: they are beside their names as .NAME.old-PID, and the next run "
+			   "of this program puts them back";
+	for (const auto& j : journals_) fs::remove(j, ec);
+	return "";
+}
+
+void FileSetCommit::finish()
+{
+	for (auto* f : files_) f->committed_ = true, temporaries::forget(f->tmp_);
+	finished_ = true;
 	// The journals first: while one is there, the old files it names are too.
 	std::error_code ec;
-	for (const auto& j : journals) fs::remove(j, ec);
-	for (const auto& a : asides)
+	for (const auto& j : journals_) fs::remove(j, ec);
+	for (const auto& a : asides_)
 		if (!a.empty()) fs::remove(a, ec);
+}
+
+void commitAll(const std::vector<StagedFile*>& files)
+{
+	FileSetCommit set(files);
+	set.put();
+	set.finish();
 }
 
 void requireWholeSet(const std::string& path)
@@ -273,10 +308,11 @@ void requireWholeSet(const std::string& path)
 void recoverSetOf(const std::string& path)
 {
 	const auto [journal, run] = journalOf(path);
+	if (journal.empty()) return;
 	const auto space = run.find(' ');
-	if (journal.empty() || !temporaries::runGone(run.substr(0, space), space == std::string::npos ? "" : run.substr(space + 1)))
-		return;
 	const std::string pid = run.substr(0, space);
+	if (!temporaries::runGone(pid, space == std::string::npos ? "" : run.substr(space + 1)))
+		throw std::runtime_error("'" + path + "' is being put in place by another run (" + pid + ") now");
 	std::error_code ec;
 	for (const auto& f : setIn(journal))
 	{

@@ -74,10 +74,14 @@ void requireRegularFile(const std::string& path, const std::string& what)
 	std::error_code ec;
 	if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
 		throw std::runtime_error("the " + what + " '" + path + "' is not a regular file");
+	if (isKernelFile(path)) throw std::runtime_error("the " + what + " '" + path + "' is a file of the kernel's, not of data");
+}
+
+bool isKernelFile(const std::string& path)
+{
 	// The kernel's files look regular, but some never end or block (/proc/kmsg).
 	struct statfs fs{};
-	if (::statfs(path.c_str(), &fs) == 0 && (fs.f_type == PROC_SUPER_MAGIC || fs.f_type == SYSFS_MAGIC))
-		throw std::runtime_error("the " + what + " '" + path + "' is a file of the kernel's, not of data");
+	return ::statfs(path.c_str(), &fs) == 0 && (fs.f_type == PROC_SUPER_MAGIC || fs.f_type == SYSFS_MAGIC);
 }
 
 void requireNamedOnce(const std::vector<std::string>& files, const std::string& what)

@@ -133,7 +133,7 @@ std::vector<std::string> withWhatInputsBring(const std::vector<std::string>& inp
 	{
 		if (in.empty()) continue;
 		all.push_back(in);
-		if (!fs::is_regular_file(in, ec)) continue;
+		if (!fs::is_regular_file(in, ec) || isKernelFile(in)) continue;  // read by its reader, which refuses it
 		if (isOfKind(in, OutputKind::Rawlog) || fs::path(in).extension() == ".rawlog")
 			all.push_back(imagesDirToRead(in));
 		else if (isIni(in))

@@ -6,6 +6,8 @@
 #include "omnirange/config/OptionsTable.h"
 #include "omnirange/config/Temporaries.h"
 
+#include <sys/stat.h>
+
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation.h>
@@ -21,6 +23,16 @@
 
 namespace omnirange
 {
+namespace
+{
+/** "DEVICE:INODE" of the folder `dir` leads to ("" if none): a folder renamed in its place has another. */
+std::string folderIdentity(const std::string& dir)
+{
+	struct stat st{};
+	return ::stat(dir.c_str(), &st) == 0 ? std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) : "";
+}
+}  // namespace
+
 RawlogReader::RawlogReader(const std::string& path)
 	: path_(path), in_(std::make_unique<mrpt::io::CFileGZInputStream>())
 {
@@ -45,10 +57,12 @@ RawlogReader::RawlogReader(const std::string& path)
 								 run + " put them in place and had not yet put in their rawlog (if it was killed, run " +
 								 "that program again)");
 	mrpt::img::CImage::setImagesPathBase(imagesDirToRead(path));
+	images_when_opened_ = folderIdentity(imagesDirToRead(path));
 	temporaries::setActivity("reading rawlog '" + path + "'");
 }
 
 RawlogReader::~RawlogReader() = default;
+
 
 
 void RawlogReader::requireTimeGoesOn(const mrpt::serialization::CSerializable::Ptr& obj)
@@ -85,7 +99,13 @@ mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 	catch (const mrpt::serialization::CExceptionEOF&)
 	{
 		// Nothing at all read: the file ended between two objects.
-		if (in_->getPosition() == before) return nullptr;
+		if (in_->getPosition() == before)
+		{
+			if (folderIdentity(imagesDirToRead(path_)) != images_when_opened_)
+				throw std::runtime_error("the images of rawlog '" + path_ + "' were replaced while it was read (a run " +
+										 "wrote it again meanwhile): read it again");
+			return nullptr;
+		}
 		throw fail("it ends inside an object");
 	}
 	catch (const std::bad_alloc&)

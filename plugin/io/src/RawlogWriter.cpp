@@ -188,7 +188,7 @@ mrpt::img::CImage RawlogWriter::externalImage(
 	return img;
 }
 
-void RawlogWriter::commit(const std::function<void()>& with_images)
+void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::function<void()>& with_images)
 {
 	out_->close();
 	// CFileGZOutputStream::close() reports nothing: read the file back, so a
@@ -197,11 +197,14 @@ void RawlogWriter::commit(const std::function<void()>& with_images)
 	keepModeOf(path_, tmp_path_);
 	syncToDisk(tmp_path_, path_);
 	const FolderLock lock(path_);  // another run's renames wait for these
+	FileSetCommit files(along);
 	const bool link = !has_images_ && !link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_);
 	if (!has_images_ && !link)
 	{
+		files.put();
 		if (with_images) with_images();
 		fs::rename(tmp_path_, path_);
+		files.finish();
 		committed_ = true;
 		return;
 	}
@@ -214,6 +217,15 @@ void RawlogWriter::commit(const std::function<void()>& with_images)
 	// between the two leaves images that every reader refuses, old rawlog or not.
 	const std::string pending = "pending " + std::to_string(::getpid());
 	if (has_images_) listOutputFolder(tmp_images_), noteInMarker(tmp_images_, pending);
+	// A link is made first under a temporary name: one that cannot be made
+	// (a target too long) fails here, before anything is moved. Relative, so
+	// that a folder holding both can be moved (a report's staging renamed into place).
+	const std::string tmp_link = temporaryOf(images_);
+	if (link)
+	{
+		fs::create_directory_symlink(fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path()), tmp_link);
+		temporaries::add(tmp_link);
+	}
 	// The old images go aside, the new ones in, then the rawlog (a link, which
 	// can hold no mark, after the rawlog); only when all moves succeeded is
 	// the old folder removed.
@@ -223,23 +235,26 @@ void RawlogWriter::commit(const std::function<void()>& with_images)
 	try
 	{
 		if (has_images_) fs::rename(tmp_images_, images_), moved_in = true;
+		files.put();
 		if (with_images) with_images();
 		fs::rename(tmp_path_, path_), rawlog_in = true;
-		// Relative, so that a folder holding both can be moved (a report's staging renamed into place).
-		if (!has_images_)
-			fs::create_directory_symlink(fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path()), images_);
+		if (link) fs::rename(tmp_link, images_);
 	}
 	catch (const std::exception& e)
 	{
 		std::error_code ec;
+		if (link) fs::remove(tmp_link, ec), temporaries::forget(tmp_link);
+		if (rawlog_in)  // only the link failed: the rawlog is in, and no images beside it (never the old ones)
+			throw std::runtime_error("cannot link '" + images_ + "' to '" + link_to_ + "' (" + e.what() + "): '" + path_ +
+									 "' is in place without its images; run it again");
+		const std::string left = files.undo();
 		if (moved_in) fs::remove_all(images_, ec);  // ours, just moved in
 		if (had_old) fs::rename(old, images_, ec);
-		if (rawlog_in)  // only the link failed: the rawlog is in and its images are not
-			throw std::runtime_error("cannot link '" + images_ + "' to '" + link_to_ + "' (" + e.what() + "): '" + path_ +
-									 "' is in place without its images");
-		throw std::runtime_error("cannot move '" + path_ + "' and its images into place (" + e.what() +
-								 "); the old ones are as they were");
+		throw std::runtime_error("cannot move '" + path_ + "' and its images into place (" + e.what() + "); " +
+								 (left.empty() ? "the old ones are as they were" : left));
 	}
+	if (link) temporaries::forget(tmp_link);
+	files.finish();
 	committed_ = true;
 	if (has_images_) unnoteInMarker(images_, pending);
 	if (had_old) removeReplaced(old);

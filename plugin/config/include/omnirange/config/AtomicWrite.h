@@ -3,6 +3,7 @@
 // complete, so a failed run never leaves a half-written file that looks whole.
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,15 +57,7 @@ class StagedFile
 	void commit();
 
    private:
-	friend void commitAll(const std::vector<StagedFile*>& files);
-/** The files of `owned`, for commitAll(). */
-template <class Owner>
-std::vector<StagedFile*> pointersTo(const std::vector<Owner>& owned)
-{
-	std::vector<StagedFile*> files;
-	for (const auto& f : owned) files.push_back(&*f);
-	return files;
-}
+	friend class FileSetCommit;
 	std::string path_, tmp_;
 	bool committed_{false};
 };
@@ -86,14 +79,37 @@ class FolderLock
 	bool owner_{false};  ///< false: a commit this one is inside holds the folder
 };
 
-/** Puts the files of one output in place as one. A journal beside each
- * (.NAME.commit-PID) names the set and where each old file goes aside
- * (.NAME.old-PID); then every old file goes aside, every new one in, and the
- * journals and old files are removed. If a rename fails, every new file
- * comes out and every old one goes back, and the error says so. A run
- * killed in between leaves its journals: every reader of a file of the set
- * refuses it (requireWholeSet()) and the next run writing one of them puts
- * the old set back (recoverSetOf()). */
+/** The files of one output put in place as one. put(): a journal beside
+ * each (.NAME.commit-PID) names the set, where each old file goes aside
+ * (.NAME.old-PID) and the new file's inode; every old file goes aside, every
+ * new one in (every folder of the set locked meanwhile). finish(): the
+ * journals go, then the old files. undo() (or a put() that fails, or
+ * destruction before finish()): every new file out, every old one back;
+ * the journals stay if that fails, for the next run. A run killed in between
+ * leaves its journals: every reader of a file of the set refuses it
+ * (requireWholeSet()) and the next run writing one of them puts the old set
+ * back first (recoverSetOf()). */
+class FileSetCommit
+{
+   public:
+	explicit FileSetCommit(std::vector<StagedFile*> files);
+	~FileSetCommit();
+	FileSetCommit(const FileSetCommit&) = delete;
+	FileSetCommit& operator=(const FileSetCommit&) = delete;
+	void put();
+	void finish();
+	/** Puts every old file back; "" or what could not be (the journals then stay). */
+	std::string undo();
+
+   private:
+	std::vector<StagedFile*> files_;
+	std::vector<std::string> asides_, journals_;
+	std::vector<std::unique_ptr<FolderLock>> locks_;
+	std::size_t aside_{0}, in_{0};
+	bool finished_{false};
+};
+
+/** put() and finish() at once. */
 void commitAll(const std::vector<StagedFile*>& files);
 /** The files of `owned`, for commitAll(). */
 template <class Owner>

@@ -75,9 +75,14 @@ std::string trimmed(const std::string& s);
 std::string joined(const std::vector<std::string>& items);
 
 /** Throws std::runtime_error("the WHAT 'PATH' is not a regular file") when
- * `path` is a FIFO, a device or a folder, which a reader would block on or
- * read without end. A missing file is left to the reader's own message. */
+ * `path` is a FIFO, a device, a folder or a kernel file, which a reader
+ * would block on or read without end. A missing file is left to the
+ * reader's own message. */
 void requireRegularFile(const std::string& path, const std::string& what);
+/** `path` is a file of the kernel's (/proc, /sys): it looks regular, but
+ * may never end or block when read (/proc/kmsg). requireRegularFile()
+ * refuses it too. */
+bool isKernelFile(const std::string& path);
 
 /** Throws std::invalid_argument("WHAT 'F' is given twice (also as 'E')")
  * when a file of `files` is there twice, through a link or another

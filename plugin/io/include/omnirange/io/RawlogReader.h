@@ -25,7 +25,8 @@ class RawlogReader
 	explicit RawlogReader(const std::string& path);
 	~RawlogReader();
 
-	/** The next object, or nullptr at a clean end of file. Throws
+	/** The next object, or nullptr at a clean end of file (the images
+	 * folder still the one opened with, else it throws). Throws
 	 * std::runtime_error on a truncated or corrupt file, an unknown class,
 	 * or an observation more than kMaxTimeBack before the latest one (two
 	 * rawlogs joined, or a clock set back: every pairing by time would be wrong). */
@@ -41,6 +42,10 @@ class RawlogReader
 	std::unique_ptr<mrpt::io::CFileGZInputStream> in_;
 	std::size_t count_{0};
 	double latest_{0};  ///< [s] the latest observation's time so far (0: none yet)
+	/** The images folder as it was opened (device and inode, through links):
+	 * at the end it must be the same, or another run wrote the rawlog again
+	 * meanwhile and part of what was read is of other images. */
+	std::string images_when_opened_;
 };
 
 /** [s] How far an observation may come before the latest one: sensors'

@@ -4,6 +4,8 @@
 // commit() renames both into place. Destroyed without commit(), it removes
 // them, so a failed run leaves nothing that looks whole.
 
+#include <omnirange/config/AtomicWrite.h>
+
 #include <mrpt/img/CImage.h>
 #include <mrpt/serialization/CSerializable.h>
 
@@ -62,11 +64,11 @@ class RawlogWriter
 	 * replacing what a rawlog writer of ours wrote there before. If a step
 	 * fails, the old rawlog and images are left as they were. Throws
 	 * std::runtime_error naming a NAME_Images folder that is not ours.
-	 * `with_images` puts files that belong with this rawlog into place (a
-	 * simulation's true map): after the images, before the rawlog, so that a
-	 * run killed before the rawlog is in leaves what readers refuse
-	 * (halfReplaced(), the old images still aside). */
-	void commit(const std::function<void()>& with_images = {});
+	 * `along`: files that belong with this rawlog (a simulation's true map),
+	 * put in after the images and before the rawlog as one set
+	 * (FileSetCommit), and taken out again if the rawlog cannot go in.
+	 * `with_images` is called at that point too (a test looks there). */
+	void commit(const std::vector<StagedFile*>& along = {}, const std::function<void()>& with_images = {});
 
 	std::size_t objectsWritten() const { return count_; }
 
