@@ -484,6 +484,10 @@ scan "rawlog: /proc/kmsg" "error:is a file of the kernel's" -i /proc/kmsg -c f.i
 mkdir -p res_named/factory && printf '[metrics]\nframes = 10\n\n[report]\nexperiment = maze\n' > res_named/factory/metrics.ini
 printf 'factory tuned the factory\n' > named_suite.txt
 run_case "summary: a report of maze put where factory's belongs (-o res/factory)" "error:is a report of 'maze'" sum_named.md -- "$apps/omnirange-summary" -q -s named_suite.txt -r res_named -o sum_named
+# After a sixteenth: a scan read after its input was simulated again (its link now leads to other images).
+"$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o resim.rawlog && "$apps/omnirange-scan" -q -i resim.rawlog -c f.ini -H floor.hist -o resim_scan.rawlog
+"$apps/omnirange-sim" -q -w w.world -r w.route -n 3 -o resim.rawlog
+train "train: a scan whose input was simulated again since" "error:are not the images" rs.hist -i resim_scan.rawlog -c f.ini -o rs.hist
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

@@ -549,6 +549,17 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 	RawlogReader reader(d + "/log.rawlog");
 	writeLog(2);
 	EXPECT_THROW(while (reader.next()) {}, std::runtime_error);
+	// A scan's rawlog links to its input's images: once the input is written again, those are other
+	// images under the same name, and the scan's rawlog is refused rather than read with them.
+	{
+		RawlogWriter scan(d + "/scan.rawlog", kScanProgram);
+		scan.write(mrpt::obs::CObservationOdometry());
+		scan.linkImagesTo(d + "/log_Images");
+		scan.commit();
+	}
+	EXPECT_NO_THROW(RawlogReader(d + "/scan.rawlog"));
+	write(d + "/log_Images/" + kOutputMarker, "omnirange-test\nrun 999984\nrawlog log.rawlog\n");  // as another run leaves it
+	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
 }
 
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)

@@ -614,6 +614,32 @@ std::string pendingIn(const std::string& dir)
 	return "";
 }
 
+std::string runThatMade(const std::string& dir)
+{
+	std::ifstream f(fs::path(dir) / kOutputMarker);
+	for (std::string l; std::getline(f, l);)
+		if (l.rfind("run ", 0) == 0) return l.substr(4);
+	return "";
+}
+
+std::string imagesRecordOf(const std::string& rawlog)
+{
+	const fs::path r(rawlog);
+	return (r.parent_path() / ("." + r.filename().string() + ".images")).string();
+}
+
+void requireImagesItWasMadeFrom(const std::string& rawlog, const std::string& images)
+{
+	std::ifstream f(imagesRecordOf(rawlog));
+	std::string line;
+	if (!f || !std::getline(f, line) || line.rfind(kImagesRecordBegins, 0) != 0) return;
+	const std::string then = line.substr(std::string(kImagesRecordBegins).size()), now = runThatMade(images);
+	if (now != then)
+		throw std::runtime_error("'" + images + "' are not the images '" + rawlog + "' was made from (run " + then +
+								 " made those; these are " + (now.empty() ? "another's" : "run " + now + "'s") +
+								 "): its input was written again since; make it again from its input");
+}
+
 void listOutputFile(const std::string& dir, const std::string& name) { noteInMarker(dir, "file " + name); }
 
 void listOutputFolder(const std::string& dir)

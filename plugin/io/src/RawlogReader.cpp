@@ -56,6 +56,8 @@ RawlogReader::RawlogReader(const std::string& path)
 		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path + "': run " +
 								 run + " put them in place and had not yet put in their rawlog (if it was killed, run " +
 								 "that program again)");
+	// A scan's link to its input's images: still the images it was made from?
+	requireImagesItWasMadeFrom(path, imagesDirToRead(path));
 	mrpt::img::CImage::setImagesPathBase(imagesDirToRead(path));
 	images_when_opened_ = folderIdentity(imagesDirToRead(path));
 	temporaries::setActivity("reading rawlog '" + path + "'");

@@ -12,6 +12,7 @@
 
 #include <cerrno>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <stdexcept>
 
@@ -188,8 +189,30 @@ mrpt::img::CImage RawlogWriter::externalImage(
 	return img;
 }
 
-void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::function<void()>& with_images)
+void RawlogWriter::linkImagesTo(const std::string& existing_dir)
 {
+	link_to_ = existing_dir;
+	link_run_ = runThatMade(existing_dir);  // now, as they are read: checked again at commit
+}
+
+void RawlogWriter::commit(const std::vector<StagedFile*>& along_given, const std::function<void()>& with_images)
+{
+	// A link's images record goes in with the rawlog; the linked images must still be those read.
+	std::vector<StagedFile*> along = along_given;
+	std::optional<StagedFile> record;
+	const std::string record_path = imagesRecordOf(path_);
+	requireOutputAllowed(record_path, OutputKind::Text, owner_, {}, false, kImagesRecordBegins);
+	if (!link_to_.empty() && !link_run_.empty())
+	{
+		if (runThatMade(link_to_) != link_run_)
+			throw std::runtime_error("the images of '" + link_to_ + "' were replaced while they were read (a run wrote them " +
+									 "again meanwhile): read them again");
+		record.emplace(record_path, [&](const std::string& tmp) {
+			writeFileAtomically(tmp, std::string(kImagesRecordBegins) + link_run_ + "\n");
+		});
+		along.push_back(&*record);
+	}
+
 	out_->close();
 	// CFileGZOutputStream::close() reports nothing: read the file back, so a
 	// flush that failed (a full disk) is found before the file is renamed.
@@ -206,6 +229,8 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 		fs::rename(tmp_path_, path_);
 		files.finish();
 		committed_ = true;
+		std::error_code ec;
+		fs::remove(record_path, ec);  // an earlier output's, which linked images
 		return;
 	}
 	// The rule the programs check before they start, checked again here for
@@ -256,6 +281,8 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	if (link) temporaries::forget(tmp_link);
 	files.finish();
 	committed_ = true;
+	std::error_code ec;
+	if (!record) fs::remove(record_path, ec);  // an earlier output's, which linked images
 	if (has_images_) unnoteInMarker(images_, pending);
 	if (had_old) removeReplaced(old);
 }

@@ -56,7 +56,7 @@ class RawlogWriter
 	mrpt::img::CImage externalImageCopy(const std::string& source, const std::string& file_name);
 	/** At commit(), make NAME_Images a symbolic link to an existing images
 	 * folder (a rawlog that adds observations to another keeps its images). */
-	void linkImagesTo(const std::string& existing_dir) { link_to_ = existing_dir; }
+	void linkImagesTo(const std::string& existing_dir);
 	/** Let commit() replace a NAME_Images folder that no rawlog writer of
 	 * ours made (the user's --force; the output rule, OutputRule.h). */
 	void replaceAnyImagesFolder() { replace_any_ = true; }
@@ -76,6 +76,7 @@ class RawlogWriter
 	void startImages();
 
 	std::string path_, owner_, tmp_path_, images_, tmp_images_, link_to_;
+	std::string link_run_;  ///< the run that made the linked images, when they were linked (imagesRecordOf())
 	std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
 	bool has_images_{false}, committed_{false}, replace_any_{false};
 	std::size_t count_{0};
