@@ -125,9 +125,12 @@ std::vector<StagedFile*> pointersTo(const std::vector<Owner>& owned)
  * it): the set may be half of one run's and half of another's. */
 void requireWholeSet(const std::string& path);
 
-/** When a run that is over left a journal beside `path` (commitAll()):
+/** When a run that is over left a journal beside `path` (FileSetCommit):
  * every file of its set goes back as it was (an old one from aside, a new
- * one that had no old one removed), and its journals go. */
+ * one that had no old one removed; only a file whose inode the journal
+ * recorded, not one put there since), and its journals go. Throws
+ * std::runtime_error when the journal's run is still going: another run is
+ * putting `path` in place now. */
 void recoverSetOf(const std::string& path);
 
 /** Calls `write(tmp_path)`, syncs it to disk and renames it to `path`.
