@@ -558,7 +558,9 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 		scan.commit();
 	}
 	EXPECT_NO_THROW(RawlogReader(d + "/scan.rawlog"));
-	write(d + "/log_Images/" + kOutputMarker, "omnirange-test\nrun 999984\nrawlog log.rawlog\n");  // as another run leaves it
+	// Another run with the same PID (another PID namespace, PIDs wrapped round) is another run all the same.
+	write(d + "/log_Images/" + kOutputMarker,
+		  "omnirange-test\nrun " + std::to_string(::getpid()) + "\nmade 0123456789abcdef\nrawlog log.rawlog\n");
 	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
 }
 

@@ -13,10 +13,12 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <climits>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <set>
 #include <stdexcept>
 
@@ -617,9 +619,13 @@ std::string pendingIn(const std::string& dir)
 std::string runThatMade(const std::string& dir)
 {
 	std::ifstream f(fs::path(dir) / kOutputMarker);
+	std::string pid;
 	for (std::string l; std::getline(f, l);)
-		if (l.rfind("run ", 0) == 0) return l.substr(4);
-	return "";
+	{
+		if (l.rfind("made ", 0) == 0) return l.substr(5);
+		if (l.rfind("run ", 0) == 0) pid = l.substr(4);  // a folder marked before runs had their own mark
+	}
+	return pid;
 }
 
 std::string imagesRecordOf(const std::string& rawlog)
@@ -635,8 +641,8 @@ void requireImagesItWasMadeFrom(const std::string& rawlog, const std::string& im
 	if (!f || !std::getline(f, line) || line.rfind(kImagesRecordBegins, 0) != 0) return;
 	const std::string then = line.substr(std::string(kImagesRecordBegins).size()), now = runThatMade(images);
 	if (now != then)
-		throw std::runtime_error("'" + images + "' are not the images '" + rawlog + "' was made from (run " + then +
-								 " made those; these are " + (now.empty() ? "another's" : "run " + now + "'s") +
+		throw std::runtime_error("'" + images + "' are not the images '" + rawlog + "' was made from (those were marked " +
+								 then + ", these " + (now.empty() ? "not at all" : now) +
 								 "): its input was written again since; make it again from its input");
 }
 
@@ -663,7 +669,12 @@ std::string firstUnlistedIn(const std::string& dir)
 void markOutputFolder(const std::string& dir, const std::string& program)
 {
 	std::ofstream f(fs::path(dir) / kOutputMarker);
-	f << program << "\nrun " << ::getpid() << "\n";  // the run: a leftover of it is told from a copy
+	// The run: a leftover of it is told from a copy. Its mark: what a scan records of the images it
+	// links to, unique where a PID is not (another PID namespace, PIDs wrapping round).
+	std::random_device random;
+	char mark[32];
+	std::snprintf(mark, sizeof mark, "%08x%08x", random(), random());
+	f << program << "\nrun " << ::getpid() << "\nmade " << mark << "\n";
 	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
 }
 

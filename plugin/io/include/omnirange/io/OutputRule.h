@@ -68,7 +68,9 @@ void unnoteInMarker(const std::string& dir, const std::string& line);
 /** The run noted in the marker of `dir` as "pending PID": a folder moved in
  * before the file it belongs with (RawlogWriter::commit()); "" if none. */
 std::string pendingIn(const std::string& dir);
-/** The run that made the folder `dir`, as its marker says ("PID"), or "". */
+/** The mark of the run that made the folder `dir`, as its marker says
+ * ("made NONCE", unique to that run; its PID for a folder marked before
+ * runs had one), or "". */
 std::string runThatMade(const std::string& dir);
 
 /** Beside a rawlog whose images are a link to another rawlog's (a scan's
@@ -80,7 +82,7 @@ std::string imagesRecordOf(const std::string& rawlog);
 /** Throws std::runtime_error naming `rawlog` when its images record says
  * another run made its images than the one that made them now. */
 void requireImagesItWasMadeFrom(const std::string& rawlog, const std::string& images);
-inline constexpr const char* kImagesRecordBegins = "omnirange: this rawlog's images were made by run ";
+inline constexpr const char* kImagesRecordBegins = "omnirange: this rawlog's images were marked ";
 
 /** Adds to the marker of `dir` the file `name` (relative to it), before the
  * program writes it: a run killed while it fills a folder leaves a list of
