@@ -608,24 +608,24 @@ void unnoteInMarker(const std::string& dir, const std::string& line)
 	writeFileAtomically(marker, kept);
 }
 
-std::string pendingIn(const std::string& dir)
+namespace
+{
+/** What the marker of `dir` says after "KEY " on the first line that begins so ("" if none). */
+std::string markerValue(const std::string& dir, const std::string& key)
 {
 	std::ifstream f(fs::path(dir) / kOutputMarker);
 	for (std::string l; std::getline(f, l);)
-		if (l.rfind("pending ", 0) == 0) return l.substr(8);
+		if (l.rfind(key + " ", 0) == 0) return l.substr(key.size() + 1);
 	return "";
 }
+}  // namespace
+
+std::string pendingIn(const std::string& dir) { return markerValue(dir, "pending"); }
 
 std::string runThatMade(const std::string& dir)
 {
-	std::ifstream f(fs::path(dir) / kOutputMarker);
-	std::string pid;
-	for (std::string l; std::getline(f, l);)
-	{
-		if (l.rfind("made ", 0) == 0) return l.substr(5);
-		if (l.rfind("run ", 0) == 0) pid = l.substr(4);  // a folder marked before runs had their own mark
-	}
-	return pid;
+	const std::string mark = markerValue(dir, "made");
+	return mark.empty() ? markerValue(dir, "run") : mark;  // a folder marked before runs had their own mark
 }
 
 std::string imagesRecordOf(const std::string& rawlog)
