@@ -488,6 +488,12 @@ run_case "summary: a report of maze put where factory's belongs (-o res/factory)
 "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o resim.rawlog && "$apps/omnirange-scan" -q -i resim.rawlog -c f.ini -H floor.hist -o resim_scan.rawlog
 "$apps/omnirange-sim" -q -w w.world -r w.route -n 3 -o resim.rawlog
 train "train: a scan whose input was simulated again since" "error:are not the images" rs.hist -i resim_scan.rawlog -c f.ini -o rs.hist
+# ... and the same scan copied without its hidden files (cp -a dir/*), or with its record garbled.
+mkdir -p copied && cp -a resim.rawlog resim_Images resim_scan.rawlog resim_scan_Images copied/
+"$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o copied/resim.rawlog
+train "train: a scan copied without its record, its input simulated again" "error:which were made again after it was written" rs.hist -i copied/resim_scan.rawlog -c f.ini -o rs.hist
+printf 'garbled\n' > .resim_scan.rawlog.images
+train "train: a scan whose images record is garbled" "error:is not the record of images" rs.hist -i resim_scan.rawlog -c f.ini -o rs.hist
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

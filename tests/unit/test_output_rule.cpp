@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -561,6 +562,46 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 	// Another run with the same PID (another PID namespace, PIDs wrapped round) is another run all the same.
 	write(d + "/log_Images/" + kOutputMarker,
 		  "omnirange-test\nrun " + std::to_string(::getpid()) + "\nmade 0123456789abcdef\nrawlog log.rawlog\n");
+	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
+}
+
+TEST(OutputRule, AScanWithoutItsImagesRecordIsStillRefusedOnceItsInputIsWrittenAgain)
+{
+	// A scan copied without its hidden files (cp -a dir/*), its record removed or garbled.
+	const std::string d = fresh("images_record");
+	const auto writeLog = [&](int value) {
+		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit();
+	};
+	const auto scan = [&] {
+		RawlogWriter w(d + "/scan.rawlog", kScanProgram);
+		w.write(mrpt::obs::CObservationOdometry());
+		w.linkImagesTo(d + "/log_Images");
+		w.commit();
+	};
+	writeLog(1);
+	scan();
+	const std::string record = imagesRecordOf(d + "/scan.rawlog");
+	ASSERT_TRUE(fs::exists(record));
+	// Without it, the images it was made from are still read (a link a user made to share images, too).
+	fs::remove(record);
+	EXPECT_NO_THROW(RawlogReader(d + "/scan.rawlog"));
+	// NAME.rawlog.gz beside NAME.rawlog reads NAME_Images by right, whenever it was written.
+	fs::copy_file(d + "/log.rawlog", d + "/log.rawlog.gz");
+	fs::last_write_time(d + "/log.rawlog.gz", fs::last_write_time(d + "/log.rawlog") - std::chrono::hours(1));
+	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog.gz"));
+	fs::remove(d + "/log.rawlog.gz");
+	// Images made again after the scan was written are not the ones it was made from.
+	writeLog(2);
+	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
+	// A record that is not one omnirange writes is refused, not ignored.
+	scan();
+	write(record, "omnirange: something else\n");
+	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
+	fs::remove(record);
+	fs::create_directory(record);
 	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
 }
 

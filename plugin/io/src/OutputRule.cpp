@@ -636,9 +636,31 @@ std::string imagesRecordOf(const std::string& rawlog)
 
 void requireImagesItWasMadeFrom(const std::string& rawlog, const std::string& images)
 {
-	std::ifstream f(imagesRecordOf(rawlog));
+	std::error_code ec;
+	const std::string record = imagesRecordOf(rawlog);
+	if (!fs::exists(fs::symlink_status(record, ec)))
+	{
+		// No record (copied without hidden files, removed, or a link a user made): these must then not be
+		// another rawlog's images made again after this one was written.
+		const std::string name = markerValue(images, "rawlog");
+		// Reached through a link (NAME.rawlog and NAME.rawlog.gz beside one NAME_Images both read it by right).
+		const fs::path at = fs::weakly_canonical(images, ec), owner = at.parent_path() / name;
+		const fs::path beside = fs::weakly_canonical(fs::path(rawlog).parent_path(), ec) /
+								fs::path(imagesDirFor(rawlog)).filename();
+		const bool anothers = !name.empty() && beside != at && imagesDirFor(owner.string()) == at.string() &&
+							  fs::exists(owner, ec) && !fs::equivalent(owner, rawlog, ec);
+		if (anothers && fs::last_write_time(at / kOutputMarker, ec) > fs::last_write_time(rawlog, ec))
+			throw std::runtime_error("'" + rawlog + "' reads the images of '" + owner.string() + "', which were made " +
+									 "again after it was written (and its record of which ones, '" + record +
+									 "', is missing): make it again from its input");
+		return;
+	}
 	std::string line;
-	if (!f || !std::getline(f, line) || line.rfind(kImagesRecordBegins, 0) != 0) return;
+	std::ifstream f;
+	if (fs::is_regular_file(record, ec)) f.open(record);
+	if (!f || !std::getline(f, line) || line.rfind(kImagesRecordBegins, 0) != 0)
+		throw std::runtime_error("'" + record + "' is not the record of images omnirange writes beside '" + rawlog +
+								 "': make it again from its input");
 	const std::string then = line.substr(std::string(kImagesRecordBegins).size()), now = runThatMade(images);
 	if (now != then)
 		throw std::runtime_error("'" + images + "' are not the images '" + rawlog + "' was made from (those were marked " +

@@ -202,7 +202,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along_given, const std
 	std::optional<StagedFile> record;
 	const std::string record_path = imagesRecordOf(path_);
 	requireOutputAllowed(record_path, OutputKind::Text, owner_, {}, false, kImagesRecordBegins);
-	if (!link_to_.empty() && !link_run_.empty())
+	if (!link_to_.empty())
 	{
 		if (runThatMade(link_to_) != link_run_)
 			throw std::runtime_error("the images of '" + link_to_ + "' were replaced while they were read (a run wrote them " +
@@ -230,7 +230,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along_given, const std
 		files.finish();
 		committed_ = true;
 		std::error_code ec;
-		fs::remove(record_path, ec);  // an earlier output's, which linked images
+		if (!record) fs::remove(record_path, ec);  // an earlier output's, which linked images
 		return;
 	}
 	// The rule the programs check before they start, checked again here for

@@ -80,7 +80,10 @@ std::string runThatMade(const std::string& dir);
  * (requireImagesItWasMadeFrom()) instead of reading it with other images. */
 std::string imagesRecordOf(const std::string& rawlog);
 /** Throws std::runtime_error naming `rawlog` when its images record says
- * another run made its images than the one that made them now. */
+ * another run made its images than the one that made them now, when the
+ * record is not one omnirange wrote, or when there is none (a scan copied
+ * without its hidden files) and `images` are another rawlog's, made after
+ * `rawlog` was written. */
 void requireImagesItWasMadeFrom(const std::string& rawlog, const std::string& images);
 inline constexpr const char* kImagesRecordBegins = "omnirange: this rawlog's images were marked ";
 
