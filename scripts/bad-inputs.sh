@@ -481,6 +481,7 @@ printf 'base = /proc/kmsg\n[rangefinder]\nN = 10\n' > kmsg.ini
 scan "ini: a base that is a kernel file (/proc/kmsg blocks)" "error:is a file of the kernel's" -i s.rawlog -c kmsg.ini -H floor.hist -o out.rawlog
 scan "ini: /proc/kmsg itself" "error:is a file of the kernel's" -i s.rawlog -c /proc/kmsg -H floor.hist -o out.rawlog
 scan "rawlog: /proc/kmsg" "error:is a file of the kernel's" -i /proc/kmsg -c f.ini -H floor.hist -o out.rawlog
+run_case "calibrate: --rim a kernel file (it reads as empty)" "error:is a file of the kernel's" cal.ini -- "$apps/omnirange-calibrate" -q --rim /proc/self/environ --save-to cal.ini
 mkdir -p res_named/factory && printf '[metrics]\nframes = 10\n\n[report]\nexperiment = maze\n' > res_named/factory/metrics.ini
 printf 'factory tuned the factory\n' > named_suite.txt
 run_case "summary: a report of maze put where factory's belongs (-o res/factory)" "error:is a report of 'maze'" sum_named.md -- "$apps/omnirange-summary" -q -s named_suite.txt -r res_named -o sum_named

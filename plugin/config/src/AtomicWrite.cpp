@@ -314,17 +314,27 @@ void recoverSetOf(const std::string& path)
 	if (!temporaries::runGone(pid, space == std::string::npos ? "" : run.substr(space + 1)))
 		throw std::runtime_error("'" + path + "' is being put in place by another run (" + pid + ") now");
 	std::error_code ec;
-	for (const auto& f : setIn(journal))
+	const auto set = setIn(journal);
+	for (const auto& f : set)
 	{
 		// Only what that run put in is taken out: a file put there since is someone's.
 		const std::string now = inodeOf(f.target);
 		const bool theirs = !now.empty() && now == f.inode;
+		std::error_code failed;
 		if (!f.aside.empty() && fs::exists(fs::symlink_status(f.aside, ec)) && (now.empty() || theirs))
-			fs::rename(f.aside, f.target, ec);
+			fs::rename(f.aside, f.target, failed);
 		else if (f.aside.empty() && theirs)
-			fs::remove(f.target, ec);  // new in that set: it had no old file
+			fs::remove(f.target, failed);  // new in that set: it had no old file
+		// The journals stay while an old file is still aside: they say where it is.
+		if (failed)
+			throw std::runtime_error("cannot put back '" + f.target + "', which a run (" + pid + ") was replacing when " +
+									 "it was killed: " + (f.aside.empty() ? "" : "the old one is in '" + f.aside + "'; ") +
+									 failed.message());
 	}
-	for (const auto& f : setIn(journal)) fs::remove(besideAs(f.target, "commit", pid), ec);
+	for (const auto& f : set) fs::remove(besideAs(f.target, "commit", pid), ec);
+	temporaries::warn("a run (" + pid + ") was killed while it put '" + path + "'" +
+					  (set.size() > 1 ? " and " + std::to_string(set.size() - 1) + " other file(s)" : "") +
+					  " in place: what was there before is back");
 }
 
 void writeAtomically(

@@ -2,6 +2,7 @@
 
 #include "JpegDecoder.h"
 #include "PngDecoder.h"
+#include "omnirange/config/OptionsTable.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -201,6 +202,7 @@ cv::Mat decodeImageFile(const std::string& file, const std::string& label, int f
 									 "' (a rawlog reads its images from NAME_Images beside it, named as the rawlog is)");
 		throw std::runtime_error(what + " is missing");
 	}
+	if (isKernelFile(file)) throw std::runtime_error(what + " is a file of the kernel's, not of data");
 	std::ifstream f(file, std::ios::binary | std::ios::ate);
 	std::vector<unsigned char> bytes(f ? static_cast<std::size_t>(f.tellg()) : 0);
 	f.seekg(0);

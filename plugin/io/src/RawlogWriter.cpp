@@ -248,7 +248,12 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along_given, const std
 	const std::string tmp_link = temporaryOf(images_);
 	if (link)
 	{
-		fs::create_directory_symlink(fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path()), tmp_link);
+		std::error_code ec;
+		const fs::path target = fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path(), ec);
+		if (!ec) fs::create_directory_symlink(target, tmp_link, ec);
+		if (ec)
+			throw std::runtime_error("cannot link '" + images_ + "' to '" + link_to_ + "' (" + ec.message() +
+									 "): nothing was put in place");
 		temporaries::add(tmp_link);
 	}
 	// The old images go aside, the new ones in, then the rawlog (a link, which
