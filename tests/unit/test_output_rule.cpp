@@ -19,6 +19,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -337,6 +338,29 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
 	EXPECT_TRUE(fs::exists(d + "/.x.rawlog.tmp-999991"));
 	EXPECT_THROW(requireRawlogOutputAllowed(d + "/backup.tar.gz", "omnirange-scan", {}, false), std::runtime_error);
+}
+
+TEST(OutputRule, AnInterruptDuringACommitEndsTheRunOnlyAfterItsRenames)
+{
+	// Ctrl-C while a commit moves files: the commit ends whole, then the run ends as the interrupt says.
+	const std::string d = fresh("interrupt_in_commit");
+	const pid_t run = ::fork();
+	if (run == 0)
+	{
+		temporaries::removeOnInterrupt();
+		{
+			const FolderLock commit(d + "/a.txt");
+			::kill(::getpid(), SIGINT);
+			::usleep(300000);  // the commit's renames
+			write(d + "/a.txt", "whole");
+		}
+		::sleep(5);  // the interrupt ends the run here
+		::_exit(0);
+	}
+	int status = 0;
+	::waitpid(run, &status, 0);
+	EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
+	EXPECT_EQ(read(d + "/a.txt"), "whole");
 }
 
 TEST(OutputRule, AFileIsWrittenThroughItsLinkKeepsItsModeAndAReadOnlyOneIsKept)
@@ -707,6 +731,15 @@ TEST(OutputRule, AnOutputOfSeveralFilesGoesInAllOrNoneAndAKilledRunsHalfIsUndone
 	EXPECT_THROW(recoverLeftoversOf(d + "/g.txt", OutputKind::Text), std::runtime_error);
 	EXPECT_EQ(read(d + "/.f.txt.old-999984"), "old f");
 	EXPECT_TRUE(fs::exists(d + "/.g.txt.commit-999984"));
+	// A killed run that had this run's PID (a container's PID 1, run after run) but started at another time is gone.
+	const std::string pid = std::to_string(::getpid());
+	// It was killed before putting in its i: its temporary goes with the undoing.
+	write(d + "/h.txt", "killed run's h"), write(d + "/.i.txt.tmp-" + pid, "killed run's i");
+	write(d + "/.h.txt.commit-" + pid, "run " + pid + " 1\n" + d + "/h.txt\t\t" + inode("h.txt") + "\n" + d +
+										   "/i.txt\t\t" + inode(".i.txt.tmp-" + pid) + "\n");
+	EXPECT_NO_THROW(recoverLeftoversOf(d + "/h.txt", OutputKind::Text));
+	EXPECT_FALSE(fs::exists(d + "/h.txt"));
+	EXPECT_FALSE(fs::exists(d + "/.i.txt.tmp-" + pid));
 }
 
 TEST(OutputRule, AWriteThatFailsNamesTheFileTheUserAskedForNotItsTemporary)

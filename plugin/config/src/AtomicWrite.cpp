@@ -145,6 +145,7 @@ FolderLock::FolderLock(const std::string& path)
 	fd_ = ::open(folder_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
 	// Without a lock (a folder that cannot be opened so) the run goes on as before: the renames say what fails.
 	if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+	deferred_ = std::make_unique<temporaries::InterruptsDeferred>();  // once it is this run's turn
 }
 
 FolderLock::~FolderLock()
@@ -320,6 +321,9 @@ void recoverSetOf(const std::string& path)
 		// Only what that run put in is taken out: a file put there since is someone's.
 		const std::string now = inodeOf(f.target);
 		const bool theirs = !now.empty() && now == f.inode;
+		// Its new file not yet put in: still its temporary.
+		if (const std::string tmp = besideAs(f.target, "tmp", pid); !f.inode.empty() && inodeOf(tmp) == f.inode)
+			fs::remove(tmp, ec);
 		std::error_code failed;
 		if (!f.aside.empty() && fs::exists(fs::symlink_status(f.aside, ec)) && (now.empty() || theirs))
 			fs::rename(f.aside, f.target, failed);

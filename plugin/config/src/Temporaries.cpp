@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -37,6 +38,11 @@ std::set<std::string>& paths()
 }
 std::atomic<pid_t> child{0};
 std::atomic<bool> interrupting{false};
+// InterruptsDeferred: how many live, and how deep this thread is in them.
+std::mutex deferred_mutex;
+std::condition_variable deferred_ended;
+int deferring = 0;
+thread_local int deferring_here = 0;
 std::string& program()
 {
 	static auto* p = new std::string;
@@ -136,7 +142,11 @@ void removeOnInterrupt()
 	std::thread([set] {
 		int sig = 0;
 		if (sigwait(&set, &sig) != 0) return;
-		interrupting.store(true);
+		{
+			std::unique_lock<std::mutex> g(deferred_mutex);
+			interrupting.store(true);
+			deferred_ended.wait_for(g, std::chrono::seconds(30), [] { return deferring == 0; });
+		}
 		// A program still writing into a temporary folder ends first.
 		if (const pid_t c = child.load(); c > 0)
 		{
@@ -152,6 +162,24 @@ void removeOnInterrupt()
 		pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
 		std::raise(sig);
 	}).detach();
+}
+
+InterruptsDeferred::InterruptsDeferred()
+{
+	std::unique_lock<std::mutex> g(deferred_mutex);
+	if (deferring_here == 0 && interrupting.load())
+	{
+		g.unlock();
+		waitForInterrupt();
+	}
+	++deferring, ++deferring_here;
+}
+
+InterruptsDeferred::~InterruptsDeferred()
+{
+	const std::lock_guard<std::mutex> g(deferred_mutex);
+	--deferring, --deferring_here;
+	deferred_ended.notify_all();
 }
 
 bool interrupted() { return interrupting.load(); }
@@ -189,7 +217,8 @@ bool runGone(const std::string& pid, const std::string& start)
 {
 	if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) return false;
 	const long id = std::stol(pid);
-	if (id == ::getpid()) return false;
+	// This PID is this run's: another run's in a PID namespace before (a container's PID 1), if it started otherwise.
+	if (id == ::getpid()) return !start.empty() && thisRun() != pid + " " + start;
 	if (::kill(static_cast<pid_t>(id), 0) != 0) return errno == ESRCH;
 	const auto stat = statOf(pid);
 	if (!stat.empty() && stat[0] == "Z") return true;  // killed, not yet reaped by its parent

@@ -2,6 +2,8 @@
 // Outputs are written to a temporary name beside the target and renamed when
 // complete, so a failed run never leaves a half-written file that looks whole.
 
+#include "omnirange/config/Temporaries.h"
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -64,7 +66,8 @@ class StagedFile
 
 /** Holds the folder `path` is in locked (flock) while it lives: two runs
  * putting outputs in place there take turns, so neither sees the other's
- * half-done renames. Every commit of ours takes it. */
+ * half-done renames. Every commit of ours takes it; an interrupt meanwhile
+ * waits for it to end (temporaries::InterruptsDeferred). */
 class FolderLock
 {
    public:
@@ -77,6 +80,7 @@ class FolderLock
 	std::string folder_;
 	int fd_{-1};
 	bool owner_{false};  ///< false: a commit this one is inside holds the folder
+	std::unique_ptr<temporaries::InterruptsDeferred> deferred_;
 };
 
 /** The files of one output put in place as one. put(): a journal beside

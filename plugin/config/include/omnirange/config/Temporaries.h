@@ -17,6 +17,17 @@ void setChild(int pid);
 void removeAll();
 /** On SIGINT or SIGTERM: removeAll(), then end by that signal as before. */
 void removeOnInterrupt();
+/** While one lives, an interrupt waits for it to end (30 s at most): a
+ * commit's renames are done whole or not begun, never cut half-way. Once an
+ * interrupt is waiting, a new one (not inside another) waits for it to end the run. */
+class InterruptsDeferred
+{
+   public:
+	InterruptsDeferred();
+	~InterruptsDeferred();
+	InterruptsDeferred(const InterruptsDeferred&) = delete;
+	InterruptsDeferred& operator=(const InterruptsDeferred&) = delete;
+};
 /** Whether an interrupt is being handled: what fails meanwhile (a program
  * ended for it, a folder removed under the run) is its consequence, not an
  * error to report; waitForInterrupt() lets it end the run. */
