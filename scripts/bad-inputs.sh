@@ -386,8 +386,8 @@ mkdir -p imp_dir && cp imp/100.0.jpg imp_dir/ && mkdir -p imp_dir/100.4.jpg
 run_case "import: a folder named like an image" "error:is not a regular file" imp.rawlog -- "$apps/omnirange-import" -q --images imp_dir --laser imp_laser.csv -o imp.rawlog
 run_case "calibrate: --square 1e-300" "error:within \[0.001, 10\] m" none.out -- "$apps/omnirange-calibrate" -q --checkerboard tiny.pgm --board 8x6 --square 1e-300
 "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o scanned_by_scan.rawlog
-run_case "sim: -o over a scan's output (its images link)" "error:" none.out -- "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o scanned_by_scan.rawlog
-[ -L scanned_by_scan_Images ] || { echo "| | PROBLEM: the scan's images link was replaced |"; problems=$((problems + 1)); }
+run_case "sim: -o over a scan's output (its images)" "error:" none.out -- "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o scanned_by_scan.rawlog
+[ "$(head -1 scanned_by_scan_Images/.omnirange-output)" = omnirange-scan ] || { echo "| | PROBLEM: the scan's images were replaced |"; problems=$((problems + 1)); }
 cat s.rawlog s.rawlog > joined.rawlog && ln -sfn s_Images joined_Images
 run_case "scan: two rawlogs joined (time runs back)" "error:before one read earlier" jn.rawlog -- "$apps/omnirange-scan" -q -i joined.rawlog -c f.ini -H floor.hist -o jn.rawlog
 # After an eighth: a gzip file that is not a rawlog is not a rawlog's to replace; a laser that never returns.
@@ -485,16 +485,17 @@ run_case "calibrate: --rim a kernel file (it reads as empty)" "error:is a file o
 mkdir -p res_named/factory && printf '[metrics]\nframes = 10\n\n[report]\nexperiment = maze\n' > res_named/factory/metrics.ini
 printf 'factory tuned the factory\n' > named_suite.txt
 run_case "summary: a report of maze put where factory's belongs (-o res/factory)" "error:is a report of 'maze'" sum_named.md -- "$apps/omnirange-summary" -q -s named_suite.txt -r res_named -o sum_named
-# After a sixteenth: a scan read after its input was simulated again (its link now leads to other images).
+# A scan whose input is simulated again keeps the images it was made from (hard links, not the input's names).
 "$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o resim.rawlog && "$apps/omnirange-scan" -q -i resim.rawlog -c f.ini -H floor.hist -o resim_scan.rawlog
+scan_images() { (cd resim_scan_Images && md5sum -- *); }
+scan_images_then=$(scan_images)
 "$apps/omnirange-sim" -q -w w.world -r w.route -n 3 -o resim.rawlog
-train "train: a scan whose input was simulated again since" "error:are not the images" rs.hist -i resim_scan.rawlog -c f.ini -o rs.hist
-# ... and the same scan copied without its hidden files (cp -a dir/*), or with its record garbled.
-mkdir -p copied && cp -a resim.rawlog resim_Images resim_scan.rawlog resim_scan_Images copied/
-"$apps/omnirange-sim" -q -w w.world -r w.route -n 2 -o copied/resim.rawlog
-train "train: a scan copied without its record, its input simulated again" "error:which were made again after it was written" rs.hist -i copied/resim_scan.rawlog -c f.ini -o rs.hist
-printf 'garbled\n' > .resim_scan.rawlog.images
-train "train: a scan whose images record is garbled" "error:is not the record of images" rs.hist -i resim_scan.rawlog -c f.ini -o rs.hist
+one=$(cd resim_scan_Images && ls | head -1)
+{ [ "$(scan_images)" = "$scan_images_then" ] && [ "$(stat -c %i "resim_Images/$one")" != "$(stat -c %i "resim_scan_Images/$one")" ] &&
+  "$apps/omnirange-train" -q -i resim_scan.rawlog -c f.ini -o rs.hist; } ||
+  { echo "| | PROBLEM: a scan whose input was simulated again lost the images it was made from |"; problems=$((problems + 1)); }
+cp resim_scan.rawlog resim_scan.bak && "$apps/omnirange-scan" -q -i resim.rawlog -c f.ini -H floor.hist -o resim_scan.rawlog && cp resim_scan.bak resim_scan.rawlog
+train "train: a scan's backup put back over a newer scan (whose images it would read)" "error:is not the rawlog" rs.hist -i resim_scan.rawlog -c f.ini -o rs.hist
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

@@ -17,8 +17,7 @@ namespace omnirange::eval
 int writeSensoryFrameFormat(const std::string& in, const std::string& out, const std::string& odometry_label)
 {
 	RawlogWriter w(out, "omnirange-experiment");
-	const auto in_images = std::filesystem::path(in).replace_extension("").string() + "_Images";
-	if (std::filesystem::exists(in_images)) w.linkImagesTo(in_images);
+	if (std::filesystem::exists(imagesDirToRead(in))) w.shareImagesOf(imagesDirToRead(in));
 	std::optional<mrpt::poses::CPose2D> last_odo;
 	mrpt::obs::CSensoryFrame frame;
 	mrpt::obs::CActionCollection action;

@@ -531,37 +531,21 @@ TEST(OutputRule, WhatBelongsWithARawlogGoesInAfterItsImagesAndBeforeIt)
 	}
 	EXPECT_EQ(read(d + "/log_truemap.txt"), "before");
 	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 4);
-	// A rawlog whose images are a link (a scan's): the link, which can hold no mark, goes in after the rawlog,
-	// so the old rawlog is never beside the new link.
-	fs::create_directory(d + "/other_Images");
-	for (const std::string input_images : {"/log_Images", "/other_Images"})
-	{
+	// A scan's images are its input's files, each a hard link; an earlier scan's link to its input's is replaced.
+	const auto scan = [&] {
 		RawlogWriter w(d + "/scan.rawlog", kScanProgram);
 		w.write(mrpt::obs::CObservationOdometry());
-		w.linkImagesTo(d + input_images);
-		w.commit({}, [&] { EXPECT_FALSE(fs::exists(fs::symlink_status(d + "/scan_Images"))) << input_images; });
-		EXPECT_TRUE(fs::is_symlink(d + "/scan_Images"));
-	}
-	// A link that cannot be made fails before anything is moved: the old scan and its link stay.
-	const std::string old_scan = read(d + "/scan.rawlog");
-	fs::create_directories(temporaryOf(d + "/scan_Images") + "/in_the_way");
-	{
-		RawlogWriter w(d + "/scan.rawlog", kScanProgram);
-		w.write(mrpt::obs::CObservationOdometry());
-		w.write(mrpt::obs::CObservationOdometry());
-		w.linkImagesTo(d + "/log_Images");
-		try
-		{
-			w.commit();
-			ADD_FAILURE() << "the link was made";
-		}
-		catch (const std::exception& e)  // one line of ours, not the library's "filesystem error: ..."
-		{
-			EXPECT_EQ(std::string(e.what()).rfind("cannot link '" + d + "/scan_Images'", 0), 0u) << e.what();
-		}
-	}
-	EXPECT_EQ(read(d + "/scan.rawlog"), old_scan);
-	EXPECT_EQ(fs::read_symlink(d + "/scan_Images").filename(), "other_Images");
+		EXPECT_EQ(w.shareImagesOf(d + "/log_Images"), 0u);  // none copied
+		w.commit();
+	};
+	scan();
+	fs::remove_all(d + "/scan_Images");
+	fs::create_directory_symlink("log_Images", d + "/scan_Images");
+	scan();
+	EXPECT_FALSE(fs::is_symlink(d + "/scan_Images"));
+	EXPECT_TRUE(fs::equivalent(d + "/scan_Images/0.png", d + "/log_Images/0.png"));
+	EXPECT_FALSE(fs::equivalent(d + "/scan_Images/" + kOutputMarker, d + "/log_Images/" + kOutputMarker));
+	EXPECT_NO_THROW(RawlogReader(d + "/scan.rawlog"));
 }
 
 TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
@@ -582,59 +566,43 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 	RawlogReader reader(d + "/log.rawlog");
 	writeLog(2);
 	EXPECT_THROW(while (reader.next()) {}, std::runtime_error);
-	// A scan's rawlog links to its input's images: once the input is written again, those are other
-	// images under the same name, and the scan's rawlog is refused rather than read with them.
+	// A scan's images stay those it was made from, whatever becomes of its input's.
 	{
 		RawlogWriter scan(d + "/scan.rawlog", kScanProgram);
 		scan.write(mrpt::obs::CObservationOdometry());
-		scan.linkImagesTo(d + "/log_Images");
+		scan.shareImagesOf(d + "/log_Images");
 		scan.commit();
 	}
+	writeLog(3);
 	EXPECT_NO_THROW(RawlogReader(d + "/scan.rawlog"));
-	// Another run with the same PID (another PID namespace, PIDs wrapped round) is another run all the same.
-	write(d + "/log_Images/" + kOutputMarker,
-		  "omnirange-test\nrun " + std::to_string(::getpid()) + "\nmade 0123456789abcdef\nrawlog log.rawlog\n");
+	EXPECT_EQ(cv::imread(d + "/scan_Images/0.png").at<cv::Vec3b>(0, 0)[0], 2);
+	// A backup put back by hand over a newer run's rawlog is not read with the newer run's images.
+	fs::copy_file(d + "/scan.rawlog", d + "/scan.bak");
+	{
+		RawlogWriter scan(d + "/scan.rawlog", kScanProgram);
+		scan.write(mrpt::obs::CObservationOdometry()), scan.write(mrpt::obs::CObservationOdometry());
+		scan.shareImagesOf(d + "/log_Images");
+		scan.commit();
+	}
+	fs::copy_file(d + "/scan.bak", d + "/scan.rawlog", fs::copy_options::overwrite_existing);
 	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
-}
-
-TEST(OutputRule, AScanWithoutItsImagesRecordIsStillRefusedOnceItsInputIsWrittenAgain)
-{
-	// A scan copied without its hidden files (cp -a dir/*), its record removed or garbled.
-	const std::string d = fresh("images_record");
-	const auto writeLog = [&](int value) {
-		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
-		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
-		w.write(mrpt::obs::CObservationOdometry());
-		w.commit();
-	};
-	const auto scan = [&] {
-		RawlogWriter w(d + "/scan.rawlog", kScanProgram);
-		w.write(mrpt::obs::CObservationOdometry());
-		w.linkImagesTo(d + "/log_Images");
-		w.commit();
-	};
-	writeLog(1);
-	scan();
-	const std::string record = imagesRecordOf(d + "/scan.rawlog");
-	ASSERT_TRUE(fs::exists(record));
-	// Without it, the images it was made from are still read (a link a user made to share images, too).
-	fs::remove(record);
-	EXPECT_NO_THROW(RawlogReader(d + "/scan.rawlog"));
-	// NAME.rawlog.gz beside NAME.rawlog reads NAME_Images by right, whenever it was written.
-	fs::copy_file(d + "/log.rawlog", d + "/log.rawlog.gz");
-	fs::last_write_time(d + "/log.rawlog.gz", fs::last_write_time(d + "/log.rawlog") - std::chrono::hours(1));
-	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog.gz"));
-	fs::remove(d + "/log.rawlog.gz");
-	// Images made again after the scan was written are not the ones it was made from.
-	writeLog(2);
-	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
-	// A record that is not one omnirange writes is refused, not ignored.
-	scan();
-	write(record, "omnirange: something else\n");
-	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
-	fs::remove(record);
-	fs::create_directory(record);
-	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
+	// NAME.rawlog.gz beside NAME.rawlog reads NAME_Images by right, whatever its size.
+	fs::rename(d + "/scan.bak", d + "/scan.rawlog.gz");
+	EXPECT_NO_THROW(RawlogReader(d + "/scan.rawlog.gz"));
+	// On another file system they are copies.
+	const std::string shm = "/dev/shm/omnirange_test_" + std::to_string(::getpid());
+	struct stat here{}, there{};
+	if (::stat("/dev/shm", &there) == 0 && ::stat(d.c_str(), &here) == 0 && here.st_dev != there.st_dev)
+	{
+		fs::remove_all(shm);
+		fs::create_directory(shm);
+		RawlogWriter scan(shm + "/scan.rawlog", kScanProgram);
+		scan.write(mrpt::obs::CObservationOdometry());
+		EXPECT_EQ(scan.shareImagesOf(d + "/log_Images"), 1u);
+		scan.commit();
+		EXPECT_EQ(cv::imread(shm + "/scan_Images/0.png").at<cv::Vec3b>(0, 0)[0], 3);
+		fs::remove_all(shm);
+	}
 }
 
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)

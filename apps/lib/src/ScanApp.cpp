@@ -67,6 +67,9 @@ RawlogScanSummary ScanApp::run()
 	for (const auto& why : s.skipped_reasons) MRPT_LOG_WARN_FMT("skipped: %s", why.c_str());
 	if (s.skipped > 0)
 		MRPT_LOG_WARN_FMT("%zu of %zu images skipped as bad", s.skipped, s.skipped + s.images);
+	if (s.images_copied > 0)
+		MRPT_LOG_INFO_FMT("%zu of the input's image files copied beside the output (another file system: no hard link)",
+						  s.images_copied);
 	const auto share = [&](std::size_t n) { return shareOf(n, s); };
 	MRPT_LOG_INFO_FMT("%zu images scanned: %.1f %% of rays hit, %.1f %% free to max range, %.1f %% too close, "
 					  "%.1f %% rejected as outliers; %zu objects -> %s",

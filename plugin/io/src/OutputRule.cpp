@@ -18,7 +18,6 @@
 #include <climits>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <set>
 #include <stdexcept>
 
@@ -608,9 +607,6 @@ void unnoteInMarker(const std::string& dir, const std::string& line)
 	writeFileAtomically(marker, kept);
 }
 
-namespace
-{
-/** What the marker of `dir` says after "KEY " on the first line that begins so ("" if none). */
 std::string markerValue(const std::string& dir, const std::string& key)
 {
 	std::ifstream f(fs::path(dir) / kOutputMarker);
@@ -618,54 +614,18 @@ std::string markerValue(const std::string& dir, const std::string& key)
 		if (l.rfind(key + " ", 0) == 0) return l.substr(key.size() + 1);
 	return "";
 }
-}  // namespace
 
-std::string pendingIn(const std::string& dir) { return markerValue(dir, "pending"); }
-
-std::string runThatMade(const std::string& dir)
+void requireRawlogOfImages(const std::string& rawlog, const std::string& images)
 {
-	const std::string mark = markerValue(dir, "made");
-	return mark.empty() ? markerValue(dir, "run") : mark;  // a folder marked before runs had their own mark
-}
-
-std::string imagesRecordOf(const std::string& rawlog)
-{
-	const fs::path r(rawlog);
-	return (r.parent_path() / ("." + r.filename().string() + ".images")).string();
-}
-
-void requireImagesItWasMadeFrom(const std::string& rawlog, const std::string& images)
-{
+	// Only the rawlog the marker names: NAME.rawlog.gz beside NAME.rawlog reads NAME_Images by right.
 	std::error_code ec;
-	const std::string record = imagesRecordOf(rawlog);
-	if (!fs::exists(fs::symlink_status(record, ec)))
-	{
-		// No record (copied without hidden files, removed, or a link a user made): these must then not be
-		// another rawlog's images made again after this one was written.
-		const std::string name = markerValue(images, "rawlog");
-		// Reached through a link (NAME.rawlog and NAME.rawlog.gz beside one NAME_Images both read it by right).
-		const fs::path at = fs::weakly_canonical(images, ec), owner = at.parent_path() / name;
-		const fs::path beside = fs::weakly_canonical(fs::path(rawlog).parent_path(), ec) /
-								fs::path(imagesDirFor(rawlog)).filename();
-		const bool anothers = !name.empty() && beside != at && imagesDirFor(owner.string()) == at.string() &&
-							  fs::exists(owner, ec) && !fs::equivalent(owner, rawlog, ec);
-		if (anothers && fs::last_write_time(at / kOutputMarker, ec) > fs::last_write_time(rawlog, ec))
-			throw std::runtime_error("'" + rawlog + "' reads the images of '" + owner.string() + "', which were made " +
-									 "again after it was written (and its record of which ones, '" + record +
-									 "', is missing): make it again from its input");
-		return;
-	}
-	std::string line;
-	std::ifstream f;
-	if (fs::is_regular_file(record, ec)) f.open(record);
-	if (!f || !std::getline(f, line) || line.rfind(kImagesRecordBegins, 0) != 0)
-		throw std::runtime_error("'" + record + "' is not the record of images omnirange writes beside '" + rawlog +
-								 "': make it again from its input");
-	const std::string then = line.substr(std::string(kImagesRecordBegins).size()), now = runThatMade(images);
-	if (now != then)
-		throw std::runtime_error("'" + images + "' are not the images '" + rawlog + "' was made from (those were marked " +
-								 then + ", these " + (now.empty() ? "not at all" : now) +
-								 "): its input was written again since; make it again from its input");
+	const std::string name = markerValue(images, "rawlog"), size = markerValue(images, "size");
+	const fs::path named = fs::weakly_canonical(images, ec).parent_path() / name;
+	if (name.empty() || size.empty() || !fs::equivalent(named, rawlog, ec)) return;
+	if (const auto now = fs::file_size(rawlog, ec); !ec && std::to_string(now) != size)
+		throw std::runtime_error("'" + rawlog + "' is not the rawlog '" + images + "' were written with (that one had " +
+								 size + " bytes, this one " + std::to_string(now) +
+								 "): a rawlog put there by hand is not read with another's images");
 }
 
 void listOutputFile(const std::string& dir, const std::string& name) { noteInMarker(dir, "file " + name); }
@@ -691,12 +651,7 @@ std::string firstUnlistedIn(const std::string& dir)
 void markOutputFolder(const std::string& dir, const std::string& program)
 {
 	std::ofstream f(fs::path(dir) / kOutputMarker);
-	// The run: a leftover of it is told from a copy. Its mark: what a scan records of the images it
-	// links to, unique where a PID is not (another PID namespace, PIDs wrapping round).
-	std::random_device random;
-	char mark[32];
-	std::snprintf(mark, sizeof mark, "%08x%08x", random(), random());
-	f << program << "\nrun " << ::getpid() << "\nmade " << mark << "\n";
+	f << program << "\nrun " << ::getpid() << "\n";  // the run: a leftover of it is told from a copy
 	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
 }
 

@@ -52,12 +52,11 @@ RawlogReader::RawlogReader(const std::string& path)
 								 "': a run that was replacing them was killed, leaving the old ones in '" + old +
 								 "' (run that program again: which folder is this rawlog's cannot be told)");
 	// Images moved in before their rawlog, by a run still putting them in place or killed before its rawlog was.
-	if (const std::string run = pendingIn(imagesDirToRead(path)); !run.empty())
+	if (const std::string run = markerValue(imagesDirToRead(path), "pending"); !run.empty())
 		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path + "': run " +
 								 run + " put them in place and had not yet put in their rawlog (if it was killed, run " +
 								 "that program again)");
-	// A scan's link to its input's images: still the images it was made from?
-	requireImagesItWasMadeFrom(path, imagesDirToRead(path));
+	requireRawlogOfImages(path, imagesDirToRead(path));
 	mrpt::img::CImage::setImagesPathBase(imagesDirToRead(path));
 	images_when_opened_ = folderIdentity(imagesDirToRead(path));
 	temporaries::setActivity("reading rawlog '" + path + "'");

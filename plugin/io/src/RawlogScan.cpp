@@ -141,17 +141,17 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 
 	RawlogProcessor loop(o.input);
 	std::optional<RawlogWriter> writer;
+	RawlogScanSummary sum;
 	if (!o.decode_only)
 	{
 		writer.emplace(o.output, kScanProgram);
-		// Images stored inside the input need no folder: a link to none would point at nothing.
-		if (std::filesystem::exists(imagesDirToRead(o.input))) writer->linkImagesTo(imagesDirToRead(o.input));
+		// Taken now, while the reader holds the input open: if they are replaced before it ends, it fails.
+		if (std::filesystem::exists(imagesDirToRead(o.input))) sum.images_copied = writer->shareImagesOf(imagesDirToRead(o.input));
 		if (o.force) writer->replaceAnyImagesFolder();
 	}
 	const std::size_t batch_images = 8 * static_cast<std::size_t>(o.threads);
 	std::optional<FloorAdaptation> adaptation;
 	if (rf.params().floor_adaptation) adaptation.emplace(rf, rf.params().adaptation_memory);
-	RawlogScanSummary sum;
 	Batch b;
 	const auto flush = [&] {
 		processBatch(b, rf, o.decode_only, adaptation ? &*adaptation : nullptr);

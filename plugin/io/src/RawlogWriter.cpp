@@ -8,6 +8,7 @@
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <opencv2/imgcodecs.hpp>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -189,30 +190,45 @@ mrpt::img::CImage RawlogWriter::externalImage(
 	return img;
 }
 
-void RawlogWriter::linkImagesTo(const std::string& existing_dir)
+std::size_t RawlogWriter::shareImagesOf(const std::string& existing_dir)
 {
-	link_to_ = existing_dir;
-	link_run_ = runThatMade(existing_dir);  // now, as they are read: checked again at commit
+	startImages();
+	std::size_t copied = 0;
+	// Folders walked through links too (16 deep at most: a link may lead back up).
+	const std::function<void(const fs::path&, int)> share = [&](const fs::path& rel, int depth) {
+		std::error_code ec;
+		for (fs::directory_iterator it(fs::path(existing_dir) / rel, ec), end; !ec && it != end; it.increment(ec))
+		{
+			const fs::path name = rel / it->path().filename(), to = fs::path(tmp_images_) / name;
+			if (name == kOutputMarker) continue;  // that folder's, not this one's
+			// A link that leads nowhere (or to itself) is no image: a reader of the output finds it missing, as of the input.
+			std::error_code broken;
+			const auto status = fs::status(it->path(), broken);
+			if (broken) continue;
+			if (fs::is_directory(status))
+			{
+				if (depth < 16 && fs::create_directories(to, broken)) share(name, depth + 1);
+				continue;
+			}
+			listOutputFile(tmp_images_, name.string());  // before it is there: a killed run's list holds it
+			// A link to the same bytes; across file systems (or where links are not allowed), a copy.
+			if (::linkat(AT_FDCWD, it->path().c_str(), AT_FDCWD, to.c_str(), AT_SYMLINK_FOLLOW) == 0) continue;
+			if (fs::copy_file(it->path(), to, broken); broken)
+				throw std::runtime_error("cannot put '" + it->path().string() + "' into '" + images_ + "' (" +
+										 broken.message() +
+										 (broken.value() == ENOSPC || broken.value() == EDQUOT ? "; is the disk full?" : "") + ")");
+			++copied;
+		}
+		if (ec)
+			throw std::runtime_error("cannot read the images folder '" + (fs::path(existing_dir) / rel).string() + "' (" +
+									 ec.message() + ")");
+	};
+	share("", 0);
+	return copied;
 }
 
-void RawlogWriter::commit(const std::vector<StagedFile*>& along_given, const std::function<void()>& with_images)
+void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::function<void()>& with_images)
 {
-	// A link's images record goes in with the rawlog; the linked images must still be those read.
-	std::vector<StagedFile*> along = along_given;
-	std::optional<StagedFile> record;
-	const std::string record_path = imagesRecordOf(path_);
-	requireOutputAllowed(record_path, OutputKind::Text, owner_, {}, false, kImagesRecordBegins);
-	if (!link_to_.empty())
-	{
-		if (runThatMade(link_to_) != link_run_)
-			throw std::runtime_error("the images of '" + link_to_ + "' were replaced while they were read (a run wrote them " +
-									 "again meanwhile): read them again");
-		record.emplace(record_path, [&](const std::string& tmp) {
-			writeFileAtomically(tmp, std::string(kImagesRecordBegins) + link_run_ + "\n");
-		});
-		along.push_back(&*record);
-	}
-
 	out_->close();
 	// CFileGZOutputStream::close() reports nothing: read the file back, so a
 	// flush that failed (a full disk) is found before the file is renamed.
@@ -221,16 +237,13 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along_given, const std
 	syncToDisk(tmp_path_, path_);
 	const FolderLock lock(path_);  // another run's renames wait for these
 	FileSetCommit files(along);
-	const bool link = !has_images_ && !link_to_.empty() && fs::weakly_canonical(link_to_) != fs::weakly_canonical(images_);
-	if (!has_images_ && !link)
+	if (!has_images_)
 	{
 		files.put();
 		if (with_images) with_images();
 		fs::rename(tmp_path_, path_);
 		files.finish();
 		committed_ = true;
-		std::error_code ec;
-		if (!record) fs::remove(record_path, ec);  // an earlier output's, which linked images
 		return;
 	}
 	// The rule the programs check before they start, checked again here for
@@ -241,54 +254,32 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along_given, const std
 	// New images go in marked "pending" until their rawlog is in: a run killed
 	// between the two leaves images that every reader refuses, old rawlog or not.
 	const std::string pending = "pending " + std::to_string(::getpid());
-	if (has_images_) listOutputFolder(tmp_images_), noteInMarker(tmp_images_, pending);
-	// A link is made first under a temporary name: one that cannot be made
-	// (a target too long) fails here, before anything is moved. Relative, so
-	// that a folder holding both can be moved (a report's staging renamed into place).
-	const std::string tmp_link = temporaryOf(images_);
-	if (link)
-	{
-		std::error_code ec;
-		const fs::path target = fs::relative(fs::absolute(link_to_), fs::absolute(images_).parent_path(), ec);
-		if (!ec) fs::create_directory_symlink(target, tmp_link, ec);
-		if (ec)
-			throw std::runtime_error("cannot link '" + images_ + "' to '" + link_to_ + "' (" + ec.message() +
-									 "): nothing was put in place");
-		temporaries::add(tmp_link);
-	}
-	// The old images go aside, the new ones in, then the rawlog (a link, which
-	// can hold no mark, after the rawlog); only when all moves succeeded is
-	// the old folder removed.
+	listOutputFolder(tmp_images_), noteInMarker(tmp_images_, pending);
+	noteInMarker(tmp_images_, "size " + std::to_string(fs::file_size(tmp_path_)));  // which rawlog is theirs
+	// The old images go aside, the new ones in, then the rawlog; only when
+	// all moves succeeded is the old folder removed.
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
 	const std::string old = had_old ? moveAside(images_) : "";
-	bool moved_in = false, rawlog_in = false;
+	bool moved_in = false;
 	try
 	{
-		if (has_images_) fs::rename(tmp_images_, images_), moved_in = true;
+		fs::rename(tmp_images_, images_), moved_in = true;
 		files.put();
 		if (with_images) with_images();
-		fs::rename(tmp_path_, path_), rawlog_in = true;
-		if (link) fs::rename(tmp_link, images_);
+		fs::rename(tmp_path_, path_);
 	}
 	catch (const std::exception& e)
 	{
 		std::error_code ec;
-		if (link) fs::remove(tmp_link, ec), temporaries::forget(tmp_link);
-		if (rawlog_in)  // only the link failed: the rawlog is in, and no images beside it (never the old ones)
-			throw std::runtime_error("cannot link '" + images_ + "' to '" + link_to_ + "' (" + e.what() + "): '" + path_ +
-									 "' is in place without its images; run it again");
 		const std::string left = files.undo();
 		if (moved_in) fs::remove_all(images_, ec);  // ours, just moved in
 		if (had_old) fs::rename(old, images_, ec);
 		throw std::runtime_error("cannot move '" + path_ + "' and its images into place (" + e.what() + "); " +
 								 (left.empty() ? "the old ones are as they were" : left));
 	}
-	if (link) temporaries::forget(tmp_link);
 	files.finish();
 	committed_ = true;
-	std::error_code ec;
-	if (!record) fs::remove(record_path, ec);  // an earlier output's, which linked images
-	if (has_images_) unnoteInMarker(images_, pending);
+	unnoteInMarker(images_, pending);
 	if (had_old) removeReplaced(old);
 }
 

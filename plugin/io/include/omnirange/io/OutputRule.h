@@ -65,27 +65,14 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 void noteInMarker(const std::string& dir, const std::string& line);
 /** Takes `line` out of the marker of `dir` (the marker rewritten whole). */
 void unnoteInMarker(const std::string& dir, const std::string& line);
-/** The run noted in the marker of `dir` as "pending PID": a folder moved in
- * before the file it belongs with (RawlogWriter::commit()); "" if none. */
-std::string pendingIn(const std::string& dir);
-/** The mark of the run that made the folder `dir`, as its marker says
- * ("made NONCE", unique to that run; its PID for a folder marked before
- * runs had one), or "". */
-std::string runThatMade(const std::string& dir);
-
-/** Beside a rawlog whose images are a link to another rawlog's (a scan's
- * output): ".NAME.images", naming the run that made those images when the
- * scan read them. A simulation written again onto the input since makes
- * new images under the same name; readers then refuse the scan's rawlog
- * (requireImagesItWasMadeFrom()) instead of reading it with other images. */
-std::string imagesRecordOf(const std::string& rawlog);
-/** Throws std::runtime_error naming `rawlog` when its images record says
- * another run made its images than the one that made them now, when the
- * record is not one omnirange wrote, or when there is none (a scan copied
- * without its hidden files) and `images` are another rawlog's, made after
- * `rawlog` was written. */
-void requireImagesItWasMadeFrom(const std::string& rawlog, const std::string& images);
-inline constexpr const char* kImagesRecordBegins = "omnirange: this rawlog's images were marked ";
+/** What the marker of `dir` says after "KEY " on its first line so begun
+ * ("" if none): "pending PID" (a folder moved in before the file it belongs
+ * with, RawlogWriter::commit()), "rawlog NAME", "size BYTES" (its rawlog's). */
+std::string markerValue(const std::string& dir, const std::string& key);
+/** Throws std::runtime_error when `rawlog` is the one the marker of its
+ * images folder names but not of the size noted there: another rawlog
+ * moved or copied onto its name (a backup put back over a newer run's). */
+void requireRawlogOfImages(const std::string& rawlog, const std::string& images);
 
 /** Adds to the marker of `dir` the file `name` (relative to it), before the
  * program writes it: a run killed while it fills a folder leaves a list of

@@ -42,6 +42,7 @@ struct RawlogScanSummary
 	 * at once or inside min range (too_close), rejected by the outlier filter. */
 	std::size_t no_hit{0}, too_close{0}, outliers{0};
 	std::size_t skipped{0};  ///< bad images skipped (skip_bad_images only)
+	std::size_t images_copied{0};  ///< the input's image files copied, not hard-linked (another file system)
 	std::vector<std::string> skipped_reasons;  ///< why, one line per skipped image
 };
 

@@ -54,9 +54,11 @@ class RawlogWriter
 	 * the camera's) as `file_name` into the images folder and returns a
 	 * CImage stored externally under that name. */
 	mrpt::img::CImage externalImageCopy(const std::string& source, const std::string& file_name);
-	/** At commit(), make NAME_Images a symbolic link to an existing images
-	 * folder (a rawlog that adds observations to another keeps its images). */
-	void linkImagesTo(const std::string& existing_dir);
+	/** Puts every file of an existing images folder into this rawlog's, each
+	 * a hard link (a copy across file systems): a rawlog that adds
+	 * observations to another (a scan) keeps the images it was made from,
+	 * whatever becomes of the other's. Returns how many were copied. */
+	std::size_t shareImagesOf(const std::string& existing_dir);
 	/** Let commit() replace a NAME_Images folder that no rawlog writer of
 	 * ours made (the user's --force; the output rule, OutputRule.h). */
 	void replaceAnyImagesFolder() { replace_any_ = true; }
@@ -75,8 +77,7 @@ class RawlogWriter
    private:
 	void startImages();
 
-	std::string path_, owner_, tmp_path_, images_, tmp_images_, link_to_;
-	std::string link_run_;  ///< the run that made the linked images, when they were linked (imagesRecordOf())
+	std::string path_, owner_, tmp_path_, images_, tmp_images_;
 	std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
 	bool has_images_{false}, committed_{false}, replace_any_{false};
 	std::size_t count_{0};
