@@ -363,6 +363,22 @@ TEST(OutputRule, AnInterruptDuringACommitEndsTheRunOnlyAfterItsRenames)
 	EXPECT_EQ(read(d + "/a.txt"), "whole");
 }
 
+TEST(OutputRule, AWorkingFolderPastPathMaxIsNoReasonToRefuse)
+{
+	// There no path resolves (realpath fails): compared as written, an output elsewhere is not "inside" an input.
+	const std::string d = fresh("path_max");
+	const fs::path back = fs::current_path();
+	fs::current_path(d);
+	const std::string level(200, 'l');
+	for (int i = 0; i < 22; ++i) fs::create_directory(level), fs::current_path(level);
+	writeRawlog("in.rawlog");
+	EXPECT_EQ(refusal(d + "/out.rawlog", OutputKind::Rawlog, {"in.rawlog"}), "");
+	EXPECT_NE(refusal("in.rawlog", OutputKind::Rawlog, {"in.rawlog"}), "");
+	fs::remove("in.rawlog");
+	for (int i = 0; i < 22; ++i) fs::current_path(".."), fs::remove(level);  // no path reaches them whole
+	fs::current_path(back);
+}
+
 TEST(OutputRule, AFileIsWrittenThroughItsLinkKeepsItsModeAndAReadOnlyOneIsKept)
 {
 	const std::string d = fresh("links");

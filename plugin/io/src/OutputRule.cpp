@@ -158,8 +158,13 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 	// linked file is written through, so the file it names is the output.
 	const fs::path abs = asWritten(output);
 	const bool link_itself = kind == OutputKind::Folder && fs::is_symlink(abs, ec);
-	const fs::path out = link_itself ? fs::weakly_canonical(abs.parent_path(), ec) / abs.filename()
-									 : fs::weakly_canonical(abs, ec);
+	// Resolved as the system goes; as written where it cannot be (a path past PATH_MAX gives none, inside every folder).
+	const auto resolved = [](const fs::path& p) {
+		std::error_code failed;
+		const fs::path r = fs::weakly_canonical(p, failed);
+		return failed || r.empty() ? p : r;
+	};
+	const fs::path out = link_itself ? resolved(abs.parent_path()) / abs.filename() : resolved(abs);
 	for (const auto& in : inputs)
 	{
 		if (in.empty()) continue;
@@ -167,8 +172,8 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 		(void)fs::canonical(fs::absolute(outputPath(in)), ec);
 		if (ec == std::errc::too_many_symbolic_link_levels)
 			throw std::runtime_error("the input '" + in + "' is a link that leads back to itself");
-		const fs::path input = fs::weakly_canonical(fs::absolute(outputPath(in)), ec);
 		const fs::path input_as_written = asWritten(outputPath(in));
+		const fs::path input = resolved(fs::absolute(outputPath(in)));
 		// A link replaced as a link is its own path, not the folder it names.
 		if ((link_itself ? out == input : same(out, input)) || input_as_written == abs)
 			throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
