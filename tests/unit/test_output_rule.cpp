@@ -10,6 +10,7 @@
 
 #include "../common/FactorySample.h"
 
+#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
@@ -328,6 +329,10 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
 	EXPECT_FALSE(fs::exists(d + "/.x.rawlog.tmp-" + std::to_string(zombie)));
 	::waitpid(zombie, nullptr, 0);
+	// One with this run's PID is an earlier run's that had it (a container's PID 1): this run has made nothing yet.
+	write(d + "/.x.rawlog.tmp-" + std::to_string(::getpid()), "");
+	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
+	EXPECT_FALSE(fs::exists(d + "/.x.rawlog.tmp-" + std::to_string(::getpid())));
 	// A user's gzip file (a .tar.gz backup) is gzip but no rawlog: a leftover's
 	// name does not make it one, and a rawlog output does not replace it.
 	const auto gzipOf = [](const std::string& path) {
@@ -471,11 +476,9 @@ TEST(OutputRule, ARawlogWhoseImagesARunWasKilledReplacingIsNotRead)
 	// A user's backup of the images beside them: no run moved it aside, the rawlog is read.
 	fs::copy(d + "/log_Images", d + "/log_Images.old-2024", fs::copy_options::recursive);
 	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog"));
-	// Run 999988 moved the images aside and its new ones in, and was killed before its rawlog.
+	// Run 999988 moved the images aside and was killed before its new ones were in.
 	write(d + "/log_Images/" + kOutputMarker, "omnirange-test\nrawlog log.rawlog\naside 999988\n");
 	fs::rename(d + "/log_Images", d + "/log_Images.old-999988");
-	fs::create_directory(d + "/log_Images");
-	markOutputFolder(d + "/log_Images", "omnirange-test");
 	try
 	{
 		RawlogReader reader(d + "/log.rawlog");
@@ -485,6 +488,14 @@ TEST(OutputRule, ARawlogWhoseImagesARunWasKilledReplacingIsNotRead)
 	{
 		EXPECT_NE(std::string(e.what()).find("log_Images.old-999988"), std::string::npos) << e.what();
 	}
+	// ... or once its new ones were in, marked pending until its rawlog was in.
+	fs::create_directory(d + "/log_Images");
+	markOutputFolder(d + "/log_Images", "omnirange-test");
+	noteInMarker(d + "/log_Images", "pending 999988");
+	EXPECT_THROW(RawlogReader(d + "/log.rawlog"), std::runtime_error);
+	// ... or after its rawlog was in and the mark taken off, before the old ones went: whole, and read.
+	unnoteInMarker(d + "/log_Images", "pending 999988");
+	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog"));
 	// A report that run 999987 moved aside, killed before its new one was in: a rawlog in it is named there.
 	fs::create_directory(d + "/report.old-999987");
 	write(d + "/report.old-999987/" + kOutputMarker, "omnirange-test\naside 999987\n");
@@ -554,7 +565,10 @@ TEST(OutputRule, WhatBelongsWithARawlogGoesInAfterItsImagesAndBeforeIt)
 		EXPECT_EQ(w.shareImagesOf(d + "/log_Images"), 0u);  // none copied
 		w.commit();
 	};
+	fs::create_directory_symlink("..", d + "/log_Images/up");  // a link that leads back up is not walked
 	scan();
+	EXPECT_FALSE(fs::exists(d + "/scan_Images/up"));
+	fs::remove(d + "/log_Images/up");
 	fs::remove_all(d + "/scan_Images");
 	fs::create_directory_symlink("log_Images", d + "/scan_Images");
 	scan();
@@ -582,6 +596,13 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 	RawlogReader reader(d + "/log.rawlog");
 	writeLog(2);
 	EXPECT_THROW(while (reader.next()) {}, std::runtime_error);
+	// Images decoded after the end of the file (a scan's last batch) are checked again then.
+	{
+		RawlogReader late(d + "/log.rawlog");
+		while (late.next()) {}
+		writeLog(3);
+		EXPECT_THROW(late.requireImagesUnchanged(), std::runtime_error);
+	}
 	// A scan's images stay those it was made from, whatever becomes of its input's.
 	{
 		RawlogWriter scan(d + "/scan.rawlog", kScanProgram);
@@ -589,10 +610,11 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 		scan.shareImagesOf(d + "/log_Images");
 		scan.commit();
 	}
-	writeLog(3);
+	writeLog(4);
 	EXPECT_NO_THROW(RawlogReader(d + "/scan.rawlog"));
-	EXPECT_EQ(cv::imread(d + "/scan_Images/0.png").at<cv::Vec3b>(0, 0)[0], 2);
-	// A backup put back by hand over a newer run's rawlog is not read with the newer run's images.
+	EXPECT_EQ(cv::imread(d + "/scan_Images/0.png").at<cv::Vec3b>(0, 0)[0], 3);
+	// A backup put back by hand over a newer run's rawlog, under any of its names, is not read with the
+	// newer run's images; the newer rawlog itself, compressed otherwise or not at all, is.
 	fs::copy_file(d + "/scan.rawlog", d + "/scan.bak");
 	{
 		RawlogWriter scan(d + "/scan.rawlog", kScanProgram);
@@ -600,11 +622,20 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 		scan.shareImagesOf(d + "/log_Images");
 		scan.commit();
 	}
+	fs::copy_file(d + "/scan.rawlog", d + "/scan.new");
 	fs::copy_file(d + "/scan.bak", d + "/scan.rawlog", fs::copy_options::overwrite_existing);
 	EXPECT_THROW(RawlogReader(d + "/scan.rawlog"), std::runtime_error);
-	// NAME.rawlog.gz beside NAME.rawlog reads NAME_Images by right, whatever its size.
 	fs::rename(d + "/scan.bak", d + "/scan.rawlog.gz");
+	EXPECT_THROW(RawlogReader(d + "/scan.rawlog.gz"), std::runtime_error);
+	fs::rename(d + "/scan.new", d + "/scan.rawlog.gz");
 	EXPECT_NO_THROW(RawlogReader(d + "/scan.rawlog.gz"));
+	{
+		mrpt::io::CFileGZInputStream gz(d + "/scan.rawlog.gz");
+		std::ofstream plain(d + "/scan", std::ios::binary);
+		char buf[4096];
+		for (std::size_t n; (n = gz.Read(buf, sizeof buf)) > 0;) plain.write(buf, static_cast<std::streamsize>(n));
+	}
+	EXPECT_NO_THROW(RawlogReader(d + "/scan"));
 	// On another file system they are copies.
 	const std::string shm = "/dev/shm/omnirange_test_" + std::to_string(::getpid());
 	struct stat here{}, there{};
@@ -616,7 +647,7 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 		scan.write(mrpt::obs::CObservationOdometry());
 		EXPECT_EQ(scan.shareImagesOf(d + "/log_Images"), 1u);
 		scan.commit();
-		EXPECT_EQ(cv::imread(shm + "/scan_Images/0.png").at<cv::Vec3b>(0, 0)[0], 3);
+		EXPECT_EQ(cv::imread(shm + "/scan_Images/0.png").at<cv::Vec3b>(0, 0)[0], 4);
 		fs::remove_all(shm);
 	}
 }
@@ -798,4 +829,8 @@ TEST(OutputRule, AFileAUserAddedToAnOutputFolderIsNotReplacedWithIt)
 	fs::create_directory_symlink("../elsewhere", d + "/report/mine");
 	EXPECT_NE(refusal(d + "/report", OutputKind::Folder).find("report/mine' is not something"), std::string::npos)
 		<< refusal(d + "/report", OutputKind::Folder);
+	// The temporary of its marker that a run killed as it rewrote it left is the program's, not the user's.
+	fs::remove(d + "/report/mine");
+	write(d + "/report/." + std::string(kOutputMarker) + ".tmp-999983", "omnirange-test\n");
+	EXPECT_EQ(refusal(d + "/report", OutputKind::Folder), "");
 }

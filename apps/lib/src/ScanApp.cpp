@@ -68,7 +68,8 @@ RawlogScanSummary ScanApp::run()
 	if (s.skipped > 0)
 		MRPT_LOG_WARN_FMT("%zu of %zu images skipped as bad", s.skipped, s.skipped + s.images);
 	if (s.images_copied > 0)
-		MRPT_LOG_INFO_FMT("%zu of the input's image files copied beside the output (another file system: no hard link)",
+		MRPT_LOG_INFO_FMT("%zu of the input's image files copied beside the output (no hard link could be made: another "
+						  "file system, or links not allowed there)",
 						  s.images_copied);
 	const auto share = [&](std::size_t n) { return shareOf(n, s); };
 	MRPT_LOG_INFO_FMT("%zu images scanned: %.1f %% of rays hit, %.1f %% free to max range, %.1f %% too close, "

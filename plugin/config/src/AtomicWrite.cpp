@@ -361,20 +361,27 @@ std::string cannotWrite(const std::string& path, const std::string& otherwise)
 	return "cannot write '" + path + "'" + (reason.empty() ? "" : " (" + reason + ")");
 }
 
-void requireWholeGzipFile(const std::string& path, const std::string& what)
+std::optional<std::uint32_t> contentCrcOf(const std::string& path)
 {
 	gzFile f = ::gzopen(path.c_str(), "rb");
-	if (!f) throw std::runtime_error("cannot read back '" + what + "'");
-	std::vector<char> buf(1 << 16);
+	if (!f) return std::nullopt;
+	std::vector<unsigned char> buf(1 << 16);
+	uLong crc = ::crc32(0L, Z_NULL, 0);
 	int n = 0;
 	while ((n = ::gzread(f, buf.data(), static_cast<unsigned>(buf.size()))) > 0)
-	{
-	}
+		crc = ::crc32(crc, buf.data(), static_cast<uInt>(n));
 	int err = Z_OK;
 	::gzerror(f, &err);
 	const bool closed = ::gzclose_r(f) == Z_OK;
-	const bool whole = n == 0 && (err == Z_OK || err == Z_STREAM_END) && closed;
-	if (!whole) throw std::runtime_error("'" + what + "' did not reach the disk whole (is the disk full?)");
+	if (n != 0 || (err != Z_OK && err != Z_STREAM_END) || !closed) return std::nullopt;
+	return static_cast<std::uint32_t>(crc);
+}
+
+std::uint32_t requireWholeGzipFile(const std::string& path, const std::string& what)
+{
+	const auto crc = contentCrcOf(path);
+	if (!crc) throw std::runtime_error("'" + what + "' did not reach the disk whole (is the disk full?)");
+	return *crc;
 }
 
 namespace

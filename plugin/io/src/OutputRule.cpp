@@ -186,7 +186,8 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 	}
 }
 
-/** Every file and link under `dir` but its marker, relative to it. */
+/** Every file and link under `dir` but its marker (and a killed run's
+ * temporary of it: ..omnirange-output.tmp-PID), relative to it. */
 std::vector<std::string> filesIn(const std::string& dir)
 {
 	std::vector<std::string> files;
@@ -196,7 +197,9 @@ std::vector<std::string> filesIn(const std::string& dir)
 		// Files, links, and empty folders (a user's new folder is as much theirs as a file).
 		if (it->is_symlink(ec) || !it->is_directory(ec) || fs::is_empty(it->path(), ec))
 			// Lexically: fs::relative would follow a link to where it points ("../userdata").
-			if (std::string rel = it->path().lexically_relative(dir).string(); rel != kOutputMarker) files.push_back(rel);
+			if (std::string rel = it->path().lexically_relative(dir).string();
+				rel != kOutputMarker && rel.rfind(std::string(".") + kOutputMarker + ".tmp-", 0) != 0)
+				files.push_back(rel);
 	return files;
 }
 
@@ -503,7 +506,8 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 		{
 			if (other.rfind(prefix, 0) != 0) continue;
 			const std::string pid = other.substr(prefix.size());
-			if (!deadRun(pid)) continue;  // not a PID, or a run still going
+			// This run's PID: an earlier run's that had it (a container's PID 1), as this one has made nothing here yet.
+			if (pid != std::to_string(::getpid()) && !deadRun(pid)) continue;  // not a PID, or a run still going
 			// A folder is that run's only if its marker says so: "NAME.old-2024" or
 			// "NAME.staging-2024" may be a user's copy of a report, marker and all.
 			const bool old = prefix == name + ".old-";
@@ -622,15 +626,16 @@ std::string markerValue(const std::string& dir, const std::string& key)
 
 void requireRawlogOfImages(const std::string& rawlog, const std::string& images)
 {
-	// Only the rawlog the marker names: NAME.rawlog.gz beside NAME.rawlog reads NAME_Images by right.
+	// A link is a user's (to share another rawlog's images): theirs to pair.
 	std::error_code ec;
-	const std::string name = markerValue(images, "rawlog"), size = markerValue(images, "size");
-	const fs::path named = fs::weakly_canonical(images, ec).parent_path() / name;
-	if (name.empty() || size.empty() || !fs::equivalent(named, rawlog, ec)) return;
-	if (const auto now = fs::file_size(rawlog, ec); !ec && std::to_string(now) != size)
-		throw std::runtime_error("'" + rawlog + "' is not the rawlog '" + images + "' were written with (that one had " +
-								 size + " bytes, this one " + std::to_string(now) +
-								 "): a rawlog put there by hand is not read with another's images");
+	if (fs::is_symlink(images, ec)) return;
+	const std::string content = markerValue(images, "content");
+	if (content.empty()) return;
+	// A rawlog that does not read whole is refused by its reading, with the reason.
+	if (const auto now = contentCrcOf(rawlog); now && std::to_string(*now) != content)
+		throw std::runtime_error("'" + rawlog + "' is not the rawlog '" + images + "' were written with (its content " +
+								 "differs): a rawlog put there by hand is not read with another's images (if they are " +
+								 "its images, remove the folder's " + kOutputMarker + ")");
 }
 
 void listOutputFile(const std::string& dir, const std::string& name) { noteInMarker(dir, "file " + name); }

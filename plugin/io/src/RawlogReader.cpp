@@ -46,8 +46,10 @@ RawlogReader::RawlogReader(const std::string& path)
 									 "' (run that program again)");
 		throw std::runtime_error("cannot open rawlog '" + path + "'");
 	}
-	// A writer killed between moving its images in and its rawlog: the images may be the next run's.
-	if (const std::string old = halfReplaced(imagesDirToRead(path)); !old.empty())
+	// A writer killed between moving the old images aside and the new ones in (once in, they are
+	// marked pending until their rawlog is: an old folder left beside whole ones is only not removed yet).
+	std::error_code ec;
+	if (const std::string old = std::filesystem::exists(imagesDirToRead(path), ec) ? "" : halfReplaced(imagesDirToRead(path)); !old.empty())
 		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path +
 								 "': a run that was replacing them was killed, leaving the old ones in '" + old +
 								 "' (run that program again: which folder is this rawlog's cannot be told)");
@@ -63,6 +65,13 @@ RawlogReader::RawlogReader(const std::string& path)
 }
 
 RawlogReader::~RawlogReader() = default;
+
+void RawlogReader::requireImagesUnchanged() const
+{
+	if (folderIdentity(imagesDirToRead(path_)) != images_when_opened_)
+		throw std::runtime_error("the images of rawlog '" + path_ + "' were replaced while it was read (a run " +
+								 "wrote it again meanwhile): read it again");
+}
 
 
 
@@ -102,9 +111,7 @@ mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 		// Nothing at all read: the file ended between two objects.
 		if (in_->getPosition() == before)
 		{
-			if (folderIdentity(imagesDirToRead(path_)) != images_when_opened_)
-				throw std::runtime_error("the images of rawlog '" + path_ + "' were replaced while it was read (a run " +
-										 "wrote it again meanwhile): read it again");
+			requireImagesUnchanged();
 			return nullptr;
 		}
 		throw fail("it ends inside an object");

@@ -174,6 +174,7 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	});
 	loop.run(progress);
 	flush();
+	loop.requireImagesUnchanged();  // the last batch was decoded after the end of the file
 	if (sum.images == 0 && sum.skipped > 0)
 		throw std::runtime_error("every " + o.omni_label + " image in '" + o.input + "' was bad; the first: " +
 								 sum.skipped_reasons.front());

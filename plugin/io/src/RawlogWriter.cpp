@@ -14,6 +14,7 @@
 #include <cerrno>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <fstream>
 #include <stdexcept>
 
@@ -194,8 +195,11 @@ std::size_t RawlogWriter::shareImagesOf(const std::string& existing_dir)
 {
 	startImages();
 	std::size_t copied = 0;
-	// Folders walked through links too (16 deep at most: a link may lead back up).
-	const std::function<void(const fs::path&, int)> share = [&](const fs::path& rel, int depth) {
+	// Folders walked through links too, each once, and none that holds this one (a link may lead back up).
+	std::error_code ec;
+	const std::string root = fs::weakly_canonical(existing_dir, ec).string();
+	std::set<std::string> walked;
+	const std::function<void(const fs::path&)> share = [&](const fs::path& rel) {
 		std::error_code ec;
 		for (fs::directory_iterator it(fs::path(existing_dir) / rel, ec), end; !ec && it != end; it.increment(ec))
 		{
@@ -207,7 +211,10 @@ std::size_t RawlogWriter::shareImagesOf(const std::string& existing_dir)
 			if (broken) continue;
 			if (fs::is_directory(status))
 			{
-				if (depth < 16 && fs::create_directories(to, broken)) share(name, depth + 1);
+				const std::string at = fs::weakly_canonical(it->path(), broken).string();
+				if (!broken && (root + "/").rfind(at + "/", 0) != 0 && walked.insert(at).second &&
+					fs::create_directories(to, broken))
+					share(name);
 				continue;
 			}
 			listOutputFile(tmp_images_, name.string());  // before it is there: a killed run's list holds it
@@ -216,14 +223,18 @@ std::size_t RawlogWriter::shareImagesOf(const std::string& existing_dir)
 			if (fs::copy_file(it->path(), to, broken); broken)
 				throw std::runtime_error("cannot put '" + it->path().string() + "' into '" + images_ + "' (" +
 										 broken.message() +
-										 (broken.value() == ENOSPC || broken.value() == EDQUOT ? "; is the disk full?" : "") + ")");
+										 (broken.value() == ENOSPC || broken.value() == EDQUOT || broken.value() == EIO ||
+												  broken.value() == EFBIG
+											  ? "; is the disk full?"
+											  : "") +
+										 ")");
 			++copied;
 		}
 		if (ec)
 			throw std::runtime_error("cannot read the images folder '" + (fs::path(existing_dir) / rel).string() + "' (" +
 									 ec.message() + ")");
 	};
-	share("", 0);
+	share("");
 	return copied;
 }
 
@@ -232,7 +243,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	out_->close();
 	// CFileGZOutputStream::close() reports nothing: read the file back, so a
 	// flush that failed (a full disk) is found before the file is renamed.
-	requireWholeGzipFile(tmp_path_, path_);
+	const std::uint32_t content = requireWholeGzipFile(tmp_path_, path_);
 	keepModeOf(path_, tmp_path_);
 	syncToDisk(tmp_path_, path_);
 	const FolderLock lock(path_);  // another run's renames wait for these
@@ -255,7 +266,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	// between the two leaves images that every reader refuses, old rawlog or not.
 	const std::string pending = "pending " + std::to_string(::getpid());
 	listOutputFolder(tmp_images_), noteInMarker(tmp_images_, pending);
-	noteInMarker(tmp_images_, "size " + std::to_string(fs::file_size(tmp_path_)));  // which rawlog is theirs
+	noteInMarker(tmp_images_, "content " + std::to_string(content));  // which rawlog is theirs
 	// The old images go aside, the new ones in, then the rawlog; only when
 	// all moves succeeded is the old folder removed.
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);

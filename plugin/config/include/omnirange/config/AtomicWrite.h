@@ -4,8 +4,10 @@
 
 #include "omnirange/config/Temporaries.h"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -150,9 +152,13 @@ void syncToDisk(const std::string& path, const std::string& what);
  * no permission), or `otherwise` when it left none. */
 std::string cannotWrite(const std::string& path, const std::string& otherwise = "");
 
+/** The CRC-32 of what the file `path` holds, uncompressed (gzip or not: the
+ * same rawlog compressed or not has one), or nullopt unless it reads whole. */
+std::optional<std::uint32_t> contentCrcOf(const std::string& path);
 /** Reads the gzip file `path` to its end; throws std::runtime_error naming
- * `what` unless it is whole (a write that failed leaves it cut short). */
-void requireWholeGzipFile(const std::string& path, const std::string& what);
+ * `what` unless it is whole (a write that failed leaves it cut short).
+ * Returns contentCrcOf() it. */
+std::uint32_t requireWholeGzipFile(const std::string& path, const std::string& what);
 
 /** Writes `bytes` to `path` atomically; throws std::runtime_error naming the
  * file on any I/O failure. */

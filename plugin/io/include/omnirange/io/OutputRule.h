@@ -67,11 +67,13 @@ void noteInMarker(const std::string& dir, const std::string& line);
 void unnoteInMarker(const std::string& dir, const std::string& line);
 /** What the marker of `dir` says after "KEY " on its first line so begun
  * ("" if none): "pending PID" (a folder moved in before the file it belongs
- * with, RawlogWriter::commit()), "rawlog NAME", "size BYTES" (its rawlog's). */
+ * with, RawlogWriter::commit()), "rawlog NAME", "content CRC" (its rawlog's,
+ * contentCrcOf()). */
 std::string markerValue(const std::string& dir, const std::string& key);
-/** Throws std::runtime_error when `rawlog` is the one the marker of its
- * images folder names but not of the size noted there: another rawlog
- * moved or copied onto its name (a backup put back over a newer run's). */
+/** Throws std::runtime_error when the images folder `images` of `rawlog`
+ * was written with a rawlog of other content: another rawlog moved or
+ * copied onto its name (a backup put back over a newer run's). The same
+ * rawlog compressed or not is the same; a folder that is a link is not checked. */
 void requireRawlogOfImages(const std::string& rawlog, const std::string& images);
 
 /** Adds to the marker of `dir` the file `name` (relative to it), before the
@@ -149,7 +151,8 @@ std::string halfReplaced(const std::string& target);
  * renames), else removed. Only what is ours: a folder holding the marker
  * (naming `program`, when given), or a file of `kind` (or empty); an old
  * copy only if its marker says that run moved it aside (moveAside()); a
- * user's file or backup with such a name stays. */
+ * user's file or backup with such a name stays. Called before a run makes
+ * anything for `target`: names with its own PID are an earlier run's. */
 void recoverLeftoversOf(const std::string& target, OutputKind kind = OutputKind::Folder,
 						const std::string& program = "");
 

@@ -74,6 +74,8 @@ class RawlogProcessor
 
 	std::size_t objectsRead() const { return reader_.objectsRead(); }
 	const std::string& path() const { return reader_.path(); }
+	/** RawlogReader::requireImagesUnchanged(): for images decoded after run(). */
+	void requireImagesUnchanged() const { reader_.requireImagesUnchanged(); }
 	/** "the labels found: A, B" or "no observation at all", for errors. */
 	std::string describeLabels() const;
 	/** Why a registered onPair() found nothing, naming the file and its labels. */

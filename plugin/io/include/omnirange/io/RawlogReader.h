@@ -32,6 +32,11 @@ class RawlogReader
 	 * rawlogs joined, or a clock set back: every pairing by time would be wrong). */
 	mrpt::serialization::CSerializable::Ptr next();
 
+	/** Throws std::runtime_error when the images folder is no longer the
+	 * one opened with (another run wrote the rawlog again): next() checks it
+	 * at the end of the file, a reader that decodes images after that again. */
+	void requireImagesUnchanged() const;
+
 	std::size_t objectsRead() const { return count_; }
 	const std::string& path() const { return path_; }
 
