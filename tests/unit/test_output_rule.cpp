@@ -4,6 +4,7 @@
 // nothing, and what a killed run left is cleared by the next.
 #include <omnirange/config/AtomicWrite.h>
 #include <omnirange/io/OutputRule.h>
+#include <omnirange/io/RawlogProcessor.h>
 #include <omnirange/io/RawlogReader.h>
 #include <omnirange/io/RawlogScan.h>
 #include <omnirange/io/RawlogWriter.h>
@@ -495,6 +496,7 @@ TEST(OutputRule, ARawlogWhoseImagesARunWasKilledReplacingIsNotRead)
 	EXPECT_THROW(RawlogReader(d + "/log.rawlog"), std::runtime_error);
 	// ... or after its rawlog was in and the mark taken off, before the old ones went: whole, and read.
 	unnoteInMarker(d + "/log_Images", "pending 999988");
+	forgetReadingsOf(d + "/log.rawlog");  // read as a new run would: this one read the folder before
 	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog"));
 	// A report that run 999987 moved aside, killed before its new one was in: a rawlog in it is named there.
 	fs::create_directory(d + "/report.old-999987");
@@ -636,6 +638,12 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 		for (std::size_t n; (n = gz.Read(buf, sizeof buf)) > 0;) plain.write(buf, static_cast<std::streamsize>(n));
 	}
 	EXPECT_NO_THROW(RawlogReader(d + "/scan"));
+	// Paired through a link by hand: the same rawlog is read, another is not.
+	fs::create_directory_symlink("scan_Images", d + "/paired_Images");
+	fs::copy_file(d + "/scan", d + "/paired.rawlog");
+	EXPECT_NO_THROW(RawlogReader(d + "/paired.rawlog"));
+	fs::copy_file(d + "/log.rawlog", d + "/paired.rawlog", fs::copy_options::overwrite_existing);
+	EXPECT_THROW(RawlogReader(d + "/paired.rawlog"), std::runtime_error);
 	// On another file system they are copies.
 	const std::string shm = "/dev/shm/omnirange_test_" + std::to_string(::getpid());
 	struct stat here{}, there{};
@@ -650,6 +658,23 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 		EXPECT_EQ(cv::imread(shm + "/scan_Images/0.png").at<cv::Vec3b>(0, 0)[0], 4);
 		fs::remove_all(shm);
 	}
+	// A rawlog read again by the same run (calibrate's passes) is the one it read first, or an error.
+	{
+		RawlogReader first(d + "/log.rawlog");
+	}
+	const std::string again = d + "/log_again.rawlog";
+	fs::copy_file(d + "/log.rawlog", again);
+	fs::create_directory_symlink("log_Images", d + "/log_again_Images");
+	EXPECT_NO_THROW(RawlogReader{again});
+	fs::remove(again), fs::copy_file(d + "/log.rawlog", again);  // another file in its place, as a run writes one
+	EXPECT_THROW(RawlogReader{again}, std::runtime_error);
+	// A reading stopped before the end of the file (train -n) is checked as it stops.
+	RawlogProcessor stopped(d + "/log.rawlog");
+	stopped.onObject([&](const mrpt::serialization::CSerializable::Ptr&) {
+		writeLog(5);
+		stopped.stop();
+	});
+	EXPECT_THROW(stopped.run(), std::runtime_error);
 }
 
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)

@@ -109,13 +109,12 @@ void StagedFile::commit()
 {
 	if (committed_) return;
 	committed_ = true;
+	// Forgotten once renamed: an interrupt before that removes it (after, its name is gone: nothing to remove).
+	const bool renamed = std::rename(tmp_.c_str(), path_.c_str()) == 0;
+	const std::string reason = renamed ? "" : std::strerror(errno);
+	if (!renamed) std::remove(tmp_.c_str());
 	temporaries::forget(tmp_);
-	if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
-	{
-		const std::string reason = std::strerror(errno);
-		std::remove(tmp_.c_str());
-		throw std::runtime_error("cannot put the new '" + path_ + "' in place (" + reason + ")");
-	}
+	if (!renamed) throw std::runtime_error("cannot put the new '" + path_ + "' in place (" + reason + ")");
 }
 
 namespace

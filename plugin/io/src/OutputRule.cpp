@@ -626,16 +626,18 @@ std::string markerValue(const std::string& dir, const std::string& key)
 
 void requireRawlogOfImages(const std::string& rawlog, const std::string& images)
 {
-	// A link is a user's (to share another rawlog's images): theirs to pair.
+	// Through a link too (a user's, or a scan's of before 2026-11-27): those are another rawlog's.
 	std::error_code ec;
-	if (fs::is_symlink(images, ec)) return;
 	const std::string content = markerValue(images, "content");
 	if (content.empty()) return;
 	// A rawlog that does not read whole is refused by its reading, with the reason.
 	if (const auto now = contentCrcOf(rawlog); now && std::to_string(*now) != content)
 		throw std::runtime_error("'" + rawlog + "' is not the rawlog '" + images + "' were written with (its content " +
-								 "differs): a rawlog put there by hand is not read with another's images (if they are " +
-								 "its images, remove the folder's " + kOutputMarker + ")");
+								 "differs): a rawlog put there by hand is not read with another's images (" +
+								 (fs::is_symlink(images, ec)
+									  ? "they are reached through a link: make it again from its input, or give it a copy of its own"
+									  : "if they are its images, remove '" + (fs::path(images) / kOutputMarker).string() + "'") +
+								 ")");
 }
 
 void listOutputFile(const std::string& dir, const std::string& name) { noteInMarker(dir, "file " + name); }

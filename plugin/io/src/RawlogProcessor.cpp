@@ -28,6 +28,7 @@ void RawlogProcessor::run(Progress* progress)
 		// Action collections (the other format's odometry) reach only onObject().
 		if (progress) progress->update(reader_.objectsRead());
 	}
+	reader_.requireImagesUnchanged();  // also when a hook stopped it before the end
 	if (progress) progress->finish();
 }
 

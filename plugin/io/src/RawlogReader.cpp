@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <mutex>
 #include <sstream>
 #include <vector>
 #include <stdexcept>
@@ -25,11 +27,30 @@ namespace omnirange
 {
 namespace
 {
-/** "DEVICE:INODE" of the folder `dir` leads to ("" if none): a folder renamed in its place has another. */
-std::string folderIdentity(const std::string& dir)
+/** "DEVICE:INODE:CTIME" of what `path` leads to ("" if nothing): a file or folder renamed in its place
+ * has another (its inode number may be one freed before, but not with that time). */
+std::string identityOf(const std::string& path)
 {
 	struct stat st{};
-	return ::stat(dir.c_str(), &st) == 0 ? std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) : "";
+	if (::stat(path.c_str(), &st) != 0) return "";
+	return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_ctim.tv_sec) + "." +
+		   std::to_string(st.st_ctim.tv_nsec);
+}
+
+/** The rawlogs this process has read, by resolved path: the rawlog's and its images' identities when
+ * first read. A program that reads one again (calibrate's passes) reads the same or fails. */
+std::map<std::string, std::string>& readings()
+{
+	static std::map<std::string, std::string> read;
+	return read;
+}
+std::mutex readings_mutex;
+
+std::string resolved(const std::string& path)
+{
+	std::error_code ec;
+	const std::string r = std::filesystem::weakly_canonical(path, ec).string();
+	return ec ? path : r;
 }
 }  // namespace
 
@@ -37,6 +58,9 @@ RawlogReader::RawlogReader(const std::string& path)
 	: path_(path), in_(std::make_unique<mrpt::io::CFileGZInputStream>())
 {
 	requireRegularFile(path, "rawlog");
+	// The checks below read the rawlog and its images by name: what they read must be what is opened.
+	const std::string rawlog_opened = identityOf(path);
+	images_when_opened_ = identityOf(imagesDirToRead(path));
 	if (!std::filesystem::is_regular_file(path) || !in_->open(path))
 	{
 		// A report killed between moving its old folder aside and putting the new one in.
@@ -56,19 +80,46 @@ RawlogReader::RawlogReader(const std::string& path)
 	// Images moved in before their rawlog, by a run still putting them in place or killed before its rawlog was.
 	if (const std::string run = markerValue(imagesDirToRead(path), "pending"); !run.empty())
 		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path + "': run " +
-								 run + " put them in place and had not yet put in their rawlog (if it was killed, run " +
-								 "that program again)");
-	requireRawlogOfImages(path, imagesDirToRead(path));
+								 run + " was putting them in place with their rawlog and had not finished (if it was killed, " +
+								 "run that program again)");
+	const auto replaced = [&] { return identityOf(path) != rawlog_opened; };
+	const std::runtime_error replaced_error("rawlog '" + path + "' was replaced as it was opened (a run wrote it again " +
+											"meanwhile): read it again");
+	try
+	{
+		requireRawlogOfImages(path, imagesDirToRead(path));
+	}
+	catch (const std::runtime_error&)
+	{
+		if (replaced()) throw replaced_error;  // not another rawlog put there by hand: a run's, as it was read
+		throw;
+	}
+	if (replaced()) throw replaced_error;
+	requireImagesUnchanged();
+	// Without an images folder, the reading says so itself.
+	if (!images_when_opened_.empty())
+	{
+		const std::lock_guard<std::mutex> g(readings_mutex);
+		const auto [at, first] = readings().emplace(resolved(path), rawlog_opened + " " + images_when_opened_);
+		if (!first && at->second != rawlog_opened + " " + images_when_opened_)
+			throw std::runtime_error("rawlog '" + path + "' or its images were written again since this program read " +
+									 "them first (a run wrote them meanwhile): run it again");
+	}
 	mrpt::img::CImage::setImagesPathBase(imagesDirToRead(path));
-	images_when_opened_ = folderIdentity(imagesDirToRead(path));
 	temporaries::setActivity("reading rawlog '" + path + "'");
 }
 
 RawlogReader::~RawlogReader() = default;
 
+void forgetReadingsOf(const std::string& path)
+{
+	const std::lock_guard<std::mutex> g(readings_mutex);
+	readings().erase(resolved(path));
+}
+
 void RawlogReader::requireImagesUnchanged() const
 {
-	if (folderIdentity(imagesDirToRead(path_)) != images_when_opened_)
+	if (identityOf(imagesDirToRead(path_)) != images_when_opened_)
 		throw std::runtime_error("the images of rawlog '" + path_ + "' were replaced while it was read (a run " +
 								 "wrote it again meanwhile): read it again");
 }

@@ -2,6 +2,7 @@
 
 #include "omnirange/config/AtomicWrite.h"
 #include "omnirange/io/OutputRule.h"
+#include "omnirange/io/RawlogReader.h"
 #include "omnirange/io/RawlogScan.h"
 #include "omnirange/config/Temporaries.h"
 
@@ -255,6 +256,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 		fs::rename(tmp_path_, path_);
 		files.finish();
 		committed_ = true;
+		forgetReadingsOf(path_);
 		return;
 	}
 	// The rule the programs check before they start, checked again here for
@@ -290,6 +292,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	}
 	files.finish();
 	committed_ = true;
+	forgetReadingsOf(path_);
 	unnoteInMarker(images_, pending);
 	if (had_old) removeReplaced(old);
 }

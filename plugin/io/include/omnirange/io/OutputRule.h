@@ -73,7 +73,8 @@ std::string markerValue(const std::string& dir, const std::string& key);
 /** Throws std::runtime_error when the images folder `images` of `rawlog`
  * was written with a rawlog of other content: another rawlog moved or
  * copied onto its name (a backup put back over a newer run's). The same
- * rawlog compressed or not is the same; a folder that is a link is not checked. */
+ * rawlog compressed or not is the same; a folder reached through a link
+ * is checked too (another rawlog's, whose content it notes). */
 void requireRawlogOfImages(const std::string& rawlog, const std::string& images);
 
 /** Adds to the marker of `dir` the file `name` (relative to it), before the

@@ -17,11 +17,17 @@ class CFileGZInputStream;
 
 namespace omnirange
 {
+/** This run wrote the rawlog `path` anew (RawlogWriter::commit()): a reader
+ * of it may find other identities than a reader before (RawlogReader). */
+void forgetReadingsOf(const std::string& path);
+
 class RawlogReader
 {
    public:
 	/** Opens `path` and points CImage's external-image folder at
-	 * NAME_Images beside it. Throws std::runtime_error if it cannot. */
+	 * NAME_Images beside it. Throws std::runtime_error if it cannot, and
+	 * when this run read it before and it or its images were written again
+	 * since (a program that reads a rawlog in several passes reads one). */
 	explicit RawlogReader(const std::string& path);
 	~RawlogReader();
 
