@@ -496,7 +496,7 @@ TEST(OutputRule, ARawlogWhoseImagesARunWasKilledReplacingIsNotRead)
 	EXPECT_THROW(RawlogReader(d + "/log.rawlog"), std::runtime_error);
 	// ... or after its rawlog was in and the mark taken off, before the old ones went: whole, and read.
 	unnoteInMarker(d + "/log_Images", "pending 999988");
-	forgetReadingsOf(d + "/log.rawlog");  // read as a new run would: this one read the folder before
+	forgetReadings();  // read as a new run would: this one read the folder before
 	EXPECT_NO_THROW(RawlogReader(d + "/log.rawlog"));
 	// A report that run 999987 moved aside, killed before its new one was in: a rawlog in it is named there.
 	fs::create_directory(d + "/report.old-999987");
@@ -666,8 +666,18 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 	fs::copy_file(d + "/log.rawlog", again);
 	fs::create_directory_symlink("log_Images", d + "/log_again_Images");
 	EXPECT_NO_THROW(RawlogReader{again});
-	fs::remove(again), fs::copy_file(d + "/log.rawlog", again);  // another file in its place, as a run writes one
+	fs::copy_file(d + "/log.rawlog", again + ".new"), fs::rename(again + ".new", again);  // as a run puts one in
 	EXPECT_THROW(RawlogReader{again}, std::runtime_error);
+	// So is one that holds its images (no folder), and one reached through a link switched meanwhile.
+	const std::string inside = d + "/inside.rawlog";
+	writeRawlog(inside);
+	EXPECT_NO_THROW(RawlogReader{inside});
+	writeRawlog(inside + ".new"), fs::rename(inside + ".new", inside);
+	EXPECT_THROW(RawlogReader{inside}, std::runtime_error);
+	fs::create_symlink("log.rawlog", d + "/current.rawlog");
+	EXPECT_NO_THROW(RawlogReader(d + "/current.rawlog"));
+	fs::remove(d + "/current.rawlog"), fs::create_symlink("log_again.rawlog", d + "/current.rawlog");
+	EXPECT_THROW(RawlogReader(d + "/current.rawlog"), std::runtime_error);
 	// A reading stopped before the end of the file (train -n) is checked as it stops.
 	RawlogProcessor stopped(d + "/log.rawlog");
 	stopped.onObject([&](const mrpt::serialization::CSerializable::Ptr&) {

@@ -27,30 +27,31 @@ namespace omnirange
 {
 namespace
 {
-/** "DEVICE:INODE:CTIME" of what `path` leads to ("" if nothing): a file or folder renamed in its place
- * has another (its inode number may be one freed before, but not with that time). */
+/** "DEVICE:INODE:MTIME" of what `path` leads to ("" if nothing): a file or folder renamed in its place
+ * has another (its inode number may be one freed before, but not with that time; a link or a chmod
+ * changes no part of it). */
 std::string identityOf(const std::string& path)
 {
 	struct stat st{};
 	if (::stat(path.c_str(), &st) != 0) return "";
-	return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_ctim.tv_sec) + "." +
-		   std::to_string(st.st_ctim.tv_nsec);
+	return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_mtim.tv_sec) + "." +
+		   std::to_string(st.st_mtim.tv_nsec);
 }
 
-/** The rawlogs this process has read, by resolved path: the rawlog's and its images' identities when
- * first read. A program that reads one again (calibrate's passes) reads the same or fails. */
-std::map<std::string, std::string>& readings()
+/** The rawlogs this process has read, by path as given (a link switched between two readings is
+ * another rawlog under the same name): the rawlog's and its images' identities when first read.
+ * A program that reads one again (calibrate's passes) reads the same or fails. */
+std::map<std::string, std::pair<std::string, std::string>>& readings()
 {
-	static std::map<std::string, std::string> read;
+	static std::map<std::string, std::pair<std::string, std::string>> read;
 	return read;
 }
 std::mutex readings_mutex;
 
-std::string resolved(const std::string& path)
+std::string asGiven(const std::string& path)
 {
 	std::error_code ec;
-	const std::string r = std::filesystem::weakly_canonical(path, ec).string();
-	return ec ? path : r;
+	return std::filesystem::absolute(path, ec).lexically_normal().string();
 }
 }  // namespace
 
@@ -96,12 +97,12 @@ RawlogReader::RawlogReader(const std::string& path)
 	}
 	if (replaced()) throw replaced_error;
 	requireImagesUnchanged();
-	// Without an images folder, the reading says so itself.
-	if (!images_when_opened_.empty())
 	{
 		const std::lock_guard<std::mutex> g(readings_mutex);
-		const auto [at, first] = readings().emplace(resolved(path), rawlog_opened + " " + images_when_opened_);
-		if (!first && at->second != rawlog_opened + " " + images_when_opened_)
+		const auto [at, first] = readings().emplace(asGiven(path), std::make_pair(rawlog_opened, images_when_opened_));
+		// Images gone since: the reading says so itself.
+		if (!first && (at->second.first != rawlog_opened ||
+					   (!images_when_opened_.empty() && at->second.second != images_when_opened_)))
 			throw std::runtime_error("rawlog '" + path + "' or its images were written again since this program read " +
 									 "them first (a run wrote them meanwhile): run it again");
 	}
@@ -111,10 +112,10 @@ RawlogReader::RawlogReader(const std::string& path)
 
 RawlogReader::~RawlogReader() = default;
 
-void forgetReadingsOf(const std::string& path)
+void forgetReadings()
 {
 	const std::lock_guard<std::mutex> g(readings_mutex);
-	readings().erase(resolved(path));
+	readings().clear();
 }
 
 void RawlogReader::requireImagesUnchanged() const

@@ -256,7 +256,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 		fs::rename(tmp_path_, path_);
 		files.finish();
 		committed_ = true;
-		forgetReadingsOf(path_);
+		forgetReadings();
 		return;
 	}
 	// The rule the programs check before they start, checked again here for
@@ -292,7 +292,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	}
 	files.finish();
 	committed_ = true;
-	forgetReadingsOf(path_);
+	forgetReadings();
 	unnoteInMarker(images_, pending);
 	if (had_old) removeReplaced(old);
 }

@@ -17,9 +17,10 @@ class CFileGZInputStream;
 
 namespace omnirange
 {
-/** This run wrote the rawlog `path` anew (RawlogWriter::commit()): a reader
- * of it may find other identities than a reader before (RawlogReader). */
-void forgetReadingsOf(const std::string& path);
+/** This run wrote a rawlog (RawlogWriter::commit(), under any of the names
+ * that lead to it): a reader after it may find another rawlog than a reader
+ * before it did under the same name (RawlogReader). */
+void forgetReadings();
 
 class RawlogReader
 {
