@@ -9,7 +9,6 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose2D.h>
 
-#include <filesystem>
 #include <optional>
 
 namespace omnirange::eval
@@ -17,7 +16,7 @@ namespace omnirange::eval
 int writeSensoryFrameFormat(const std::string& in, const std::string& out, const std::string& odometry_label)
 {
 	RawlogWriter w(out, "omnirange-experiment");
-	if (std::filesystem::exists(imagesDirToRead(in))) w.shareImagesOf(imagesDirToRead(in));
+	w.shareImagesOf(imagesDirToRead(in));
 	std::optional<mrpt::poses::CPose2D> last_odo;
 	mrpt::obs::CSensoryFrame frame;
 	mrpt::obs::CActionCollection action;

@@ -86,9 +86,16 @@ RawlogReader::RawlogReader(const std::string& path)
 	const auto replaced = [&] { return identityOf(path) != rawlog_opened; };
 	const std::runtime_error replaced_error("rawlog '" + path + "' was replaced as it was opened (a run wrote it again " +
 											"meanwhile): read it again");
+	// Its content checked once a run: a later pass over the same files need not read it all again.
+	const auto reading = std::make_pair(rawlog_opened, images_when_opened_);
+	const bool read_before = [&] {
+		const std::lock_guard<std::mutex> g(readings_mutex);
+		const auto at = readings().find(asGiven(path));
+		return at != readings().end() && at->second == reading;
+	}();
 	try
 	{
-		requireRawlogOfImages(path, imagesDirToRead(path));
+		if (!read_before) requireRawlogOfImages(path, imagesDirToRead(path));
 	}
 	catch (const std::runtime_error&)
 	{
@@ -99,7 +106,7 @@ RawlogReader::RawlogReader(const std::string& path)
 	requireImagesUnchanged();
 	{
 		const std::lock_guard<std::mutex> g(readings_mutex);
-		const auto [at, first] = readings().emplace(asGiven(path), std::make_pair(rawlog_opened, images_when_opened_));
+		const auto [at, first] = readings().emplace(asGiven(path), reading);
 		// Images gone since: the reading says so itself.
 		if (!first && (at->second.first != rawlog_opened ||
 					   (!images_when_opened_.empty() && at->second.second != images_when_opened_)))

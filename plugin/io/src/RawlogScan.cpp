@@ -146,7 +146,7 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	{
 		writer.emplace(o.output, kScanProgram);
 		// Taken now, while the reader holds the input open: if they are replaced before it ends, it fails.
-		if (std::filesystem::exists(imagesDirToRead(o.input))) sum.images_copied = writer->shareImagesOf(imagesDirToRead(o.input));
+		sum.images_copied = writer->shareImagesOf(imagesDirToRead(o.input));
 		if (o.force) writer->replaceAnyImagesFolder();
 	}
 	const std::size_t batch_images = 8 * static_cast<std::size_t>(o.threads);

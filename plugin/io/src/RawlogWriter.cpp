@@ -194,6 +194,8 @@ mrpt::img::CImage RawlogWriter::externalImage(
 
 std::size_t RawlogWriter::shareImagesOf(const std::string& existing_dir)
 {
+	// Images stored inside the rawlog: no folder to share.
+	if (std::error_code none; !fs::exists(existing_dir, none)) return 0;
 	startImages();
 	std::size_t copied = 0;
 	// Folders walked through links too, each once, and none that holds this one (a link may lead back up).

@@ -57,7 +57,8 @@ class RawlogWriter
 	/** Puts every file of an existing images folder into this rawlog's, each
 	 * a hard link (a copy across file systems): a rawlog that adds
 	 * observations to another (a scan) keeps the images it was made from,
-	 * whatever becomes of the other's. Returns how many were copied. */
+	 * whatever becomes of the other's (none, when there is no such folder).
+	 * Returns how many were copied. */
 	std::size_t shareImagesOf(const std::string& existing_dir);
 	/** Let commit() replace a NAME_Images folder that no rawlog writer of
 	 * ours made (the user's --force; the output rule, OutputRule.h). */
