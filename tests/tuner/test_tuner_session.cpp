@@ -213,6 +213,36 @@ TEST(TunerSession, ImagesThatCannotWorkAreRefusedAtStartAndOneBadFrameIsLeftOut)
 	refused(o, "the images folder '");
 }
 
+TEST(TunerSession, FramesOfImagesWrittenAgainWhileTheWindowIsOpenAreRefused)
+{
+	// A simulation run again onto the log the tuner has open: its new pictures under the old laser would score wrong.
+	const std::string dir = workDir("written_again");
+	const std::string log = dir + "/factory-sample.rawlog", images = dir + "/factory-sample_Images";
+	fs::copy_file(kSample, log);
+	fs::copy(test::kSource + "/rawlogs/factory-sample_Images", images);
+	SessionOptions o;
+	o.rawlog = log;
+	o.ini = kIni;
+	TunerSession s(o);
+	s.train(dir + "/f.hist", {}, {});
+	EXPECT_NO_THROW(s.image(1));
+	fs::copy(images, dir + "/new_Images");
+	fs::rename(images, dir + "/old_Images");
+	fs::rename(dir + "/new_Images", images);  // a writer's last step: the same pictures, another folder
+	EXPECT_NO_THROW(s.image(1));  // the picture already shown is the one read with its laser
+	try
+	{
+		s.image(2);
+		ADD_FAILURE() << "a frame of the images written again was decoded";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("were replaced after it was opened"), std::string::npos) << e.what();
+	}
+	EXPECT_THROW(s.scoreAll(), std::runtime_error);  // not a score with every frame "unreadable"
+	EXPECT_THROW(s.train(dir + "/g.hist", {}, {}), std::runtime_error);  // the frames shown are the old log's
+}
+
 TEST(TunerSession, SavingKeepsTheUsersCommentsAndOtherSections)
 {
 	const std::string dir = workDir("save");

@@ -55,6 +55,7 @@ TunerSession::TunerSession(SessionOptions options) : o_(std::move(options))
 								 frames_[index.at(image.get())].truth = truth;
 							 });
 	loop.run();
+	images_ = loop.imagesAsOpened();
 	if (frames_.empty())
 		throw std::runtime_error("no " + o_.omni_label + " image in '" + o_.rawlog + "' (" + loop.describeLabels() + ")");
 	saved_ = loaded_ = params_;
@@ -92,6 +93,7 @@ void TunerSession::checkImages()
 		}
 		// A wrong size is the camera's or the ini's, not one frame's: every frame would fail.
 		requireCameraSize(img, *frames_[k].image, params_.camera);
+		images_.require();
 		cached_bgr_ = img, cached_ = k;
 		return;
 	}
@@ -167,7 +169,9 @@ const cv::Mat& TunerSession::image(int k)
 {
 	if (cached_ != k)
 	{
-		cached_bgr_ = decodeImage(*frames_.at(k).image, params_.camera);
+		cv::Mat bgr = decodeImage(*frames_.at(k).image, params_.camera);
+		images_.require();  // after decoding: replaced before or while, it is not this frame's picture
+		cached_bgr_ = bgr;
 		cached_ = k;
 	}
 	return cached_bgr_;
@@ -219,6 +223,7 @@ LogScore TunerSession::scoreAll(const std::function<void(int, int)>& progress)
 		all.compared += a.compared;
 		++all.frames;
 	}
+	images_.require();  // frames left out as unreadable because they were replaced are not the log's
 	if (progress) progress(frames(), frames());
 	all.mean_abs = all.compared ? sum / static_cast<double>(all.compared) : 0.0;
 	return all;

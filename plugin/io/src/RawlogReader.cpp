@@ -61,7 +61,7 @@ RawlogReader::RawlogReader(const std::string& path)
 	requireRegularFile(path, "rawlog");
 	// The checks below read the rawlog and its images by name: what they read must be what is opened.
 	const std::string rawlog_opened = identityOf(path);
-	images_when_opened_ = identityOf(imagesDirToRead(path));
+	images_ = ImagesAsOpened(path);
 	if (!std::filesystem::is_regular_file(path) || !in_->open(path))
 	{
 		// A report killed between moving its old folder aside and putting the new one in.
@@ -87,7 +87,7 @@ RawlogReader::RawlogReader(const std::string& path)
 	const std::runtime_error replaced_error("rawlog '" + path + "' was replaced as it was opened (a run wrote it again " +
 											"meanwhile): read it again");
 	// Its content checked once a run: a later pass over the same files need not read it all again.
-	const auto reading = std::make_pair(rawlog_opened, images_when_opened_);
+	const auto reading = std::make_pair(rawlog_opened, images_.identity());
 	const bool read_before = [&] {
 		const std::lock_guard<std::mutex> g(readings_mutex);
 		const auto at = readings().find(asGiven(path));
@@ -109,7 +109,7 @@ RawlogReader::RawlogReader(const std::string& path)
 		const auto [at, first] = readings().emplace(asGiven(path), reading);
 		// Images gone since: the reading says so itself.
 		if (!first && (at->second.first != rawlog_opened ||
-					   (!images_when_opened_.empty() && at->second.second != images_when_opened_)))
+					   (!images_.identity().empty() && at->second.second != images_.identity())))
 			throw std::runtime_error("rawlog '" + path + "' or its images were written again since this program read " +
 									 "them first (a run wrote them meanwhile): run it again");
 	}
@@ -125,11 +125,16 @@ void forgetReadings()
 	readings().clear();
 }
 
-void RawlogReader::requireImagesUnchanged() const
+ImagesAsOpened::ImagesAsOpened(std::string rawlog)
+	: rawlog_(std::move(rawlog)), identity_(identityOf(imagesDirToRead(rawlog_)))
 {
-	if (identityOf(imagesDirToRead(path_)) != images_when_opened_)
-		throw std::runtime_error("the images of rawlog '" + path_ + "' were replaced while it was read (a run " +
-								 "wrote it again meanwhile): read it again");
+}
+
+void ImagesAsOpened::require() const
+{
+	if (identityOf(imagesDirToRead(rawlog_)) != identity_)
+		throw std::runtime_error("the images of rawlog '" + rawlog_ + "' were replaced after it was opened (a run " +
+								 "wrote it again meanwhile): open it again");
 }
 
 

@@ -7,6 +7,7 @@
 // view over this class; the tests drive it directly.
 
 #include <omnirange/core/Rangefinder.h>
+#include <omnirange/io/RawlogReader.h>
 #include <omnirange/train/LaserComparison.h>
 #include <omnirange/train/RawlogTraining.h>
 
@@ -94,13 +95,15 @@ class TunerSession
 	const ColourModel& colours() const { return colours_; }
 	const Rangefinder& rangefinder() const;
 
-	/** Frame k's image, decoded (the last one is kept). */
+	/** Frame k's image, decoded (the last one is kept). Throws
+	 * std::runtime_error when it cannot be read, and when the images folder
+	 * was replaced since the rawlog was read (ImagesAsOpened). */
 	const cv::Mat& image(int k);
 	/** Scans frame k (0-based) with the current parameters. */
 	FrameScan scan(int k);
 	/** Every frame scanned and compared with its laser (and truth, where the
 	 * rawlog has it); `progress(done, total)`. A frame whose image cannot be
-	 * read is counted and left out. */
+	 * read is counted and left out; an images folder replaced meanwhile throws. */
 	LogScore scoreAll(const std::function<void(int, int)>& progress = {});
 	/** scoreAll() with the parameters `with` (an A/B against those in force,
 	 * which are back in force after it). */
@@ -131,6 +134,9 @@ class TunerSession
 	std::vector<RangefinderParams> undo_;  ///< the parameters before each change, latest last
 	ColourModel colours_;
 	std::unique_ptr<Rangefinder> rf_;
+	/** Frames are decoded lazily: one decoded after a run wrote the log again
+	 * would be shown and scored under the laser and truth read before. */
+	ImagesAsOpened images_;
 	int cached_{-1};
 	cv::Mat cached_bgr_;
 };

@@ -76,6 +76,7 @@ class RawlogProcessor
 	const std::string& path() const { return reader_.path(); }
 	/** RawlogReader::requireImagesUnchanged(): for images decoded after run(). */
 	void requireImagesUnchanged() const { reader_.requireImagesUnchanged(); }
+	const ImagesAsOpened& imagesAsOpened() const { return reader_.imagesAsOpened(); }
 	/** "the labels found: A, B" or "no observation at all", for errors. */
 	std::string describeLabels() const;
 	/** Why a registered onPair() found nothing, naming the file and its labels. */

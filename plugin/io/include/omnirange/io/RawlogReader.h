@@ -22,6 +22,25 @@ namespace omnirange
  * before it did under the same name (RawlogReader). */
 void forgetReadings();
 
+/** A rawlog's images folder as a reader opened it (device, inode and
+ * modification time, through links; none if it had none). */
+class ImagesAsOpened
+{
+   public:
+	ImagesAsOpened() = default;
+	explicit ImagesAsOpened(std::string rawlog);
+
+	/** Throws std::runtime_error when the folder is no longer the one opened
+	 * with: another run wrote the rawlog again, and an image decoded now would
+	 * be of other scenes than the observations read with it. */
+	void require() const;
+	const std::string& identity() const { return identity_; }
+
+   private:
+	std::string rawlog_;
+	std::string identity_;
+};
+
 class RawlogReader
 {
    public:
@@ -39,10 +58,11 @@ class RawlogReader
 	 * rawlogs joined, or a clock set back: every pairing by time would be wrong). */
 	mrpt::serialization::CSerializable::Ptr next();
 
-	/** Throws std::runtime_error when the images folder is no longer the
-	 * one opened with (another run wrote the rawlog again): next() checks it
-	 * at the end of the file, a reader that decodes images after that again. */
-	void requireImagesUnchanged() const;
+	/** ImagesAsOpened::require(): next() checks it at the end of the file, a
+	 * reader that decodes images after that again. */
+	void requireImagesUnchanged() const { images_.require(); }
+	/** For images decoded long after the reader is gone (the tuner's). */
+	const ImagesAsOpened& imagesAsOpened() const { return images_; }
 
 	std::size_t objectsRead() const { return count_; }
 	const std::string& path() const { return path_; }
@@ -54,10 +74,9 @@ class RawlogReader
 	std::unique_ptr<mrpt::io::CFileGZInputStream> in_;
 	std::size_t count_{0};
 	double latest_{0};  ///< [s] the latest observation's time so far (0: none yet)
-	/** The images folder as it was opened (device and inode, through links):
-	 * at the end it must be the same, or another run wrote the rawlog again
+	/** At the end it must be the same, or another run wrote the rawlog again
 	 * meanwhile and part of what was read is of other images. */
-	std::string images_when_opened_;
+	ImagesAsOpened images_;
 };
 
 /** [s] How far an observation may come before the latest one: sensors'
