@@ -72,17 +72,16 @@ std::string Experiment::slamFolder(const std::string& engine, const std::string&
 void Experiment::stage(const std::string& name, const std::function<void()>& body)
 {
 	MRPT_LOG_INFO_STREAM("[" << ++stage_ << "/" << stages_ << "] " << name);
+	// What the stage writes (MRPT's programs name their own files) is the run's own, listed once written: a
+	// run killed in it leaves a folder the next run removes; killed later, one it can tell a user's additions in.
 	try
 	{
-		body();
+		fillListed(out_, body);
 	}
 	catch (const std::exception& e)
 	{
 		throw std::runtime_error("stage '" + name + "' failed: " + std::string(e.what()));
 	}
-	// What the stage wrote is listed as the run's own: a run killed later leaves a
-	// staging folder the next run can tell a user's additions in.
-	listOutputFolder(out_);
 }
 
 void Experiment::setFolder(const std::string& dir)
@@ -106,12 +105,12 @@ Metrics Experiment::run()
 	// Every stage writes into a fresh staging folder; the report folder is
 	// replaced only when all of them succeeded, so a failed run never leaves
 	// new data beside an old report.
-	const std::string report = outputPath(fs::absolute(c_.output).string());
 	std::vector<std::string> inputs{c_.ini_file,      c_.world,         c_.route,          c_.robot,
 									c_.icp_laser_ini, c_.icp_omni_ini,  c_.map_laser_ini,  c_.map_omni_ini,
 									c_.rbpf_laser_ini, c_.rbpf_omni_ini};
 	inputs.insert(inputs.end(), c_.world_maps.begin(), c_.world_maps.end());
-	StagedFolder staged(report, kProgram, inputs, force_);
+	StagedFolder staged(fs::absolute(c_.output).string(), kProgram, inputs, force_);
+	const std::string report = staged.target();
 	c_.requireEnoughFrames();  // the output first: its refusal is the one a user must see
 	const std::string staging = staged.path();
 	setFolder(staging);

@@ -25,6 +25,8 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -321,6 +323,14 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	EXPECT_TRUE(fs::exists(d + "/.x.rawlog.tmp-999992"));
 	EXPECT_TRUE(fs::exists(d + "/x.rawlog.tmp-2023"));
 	EXPECT_EQ(temporaryOf(d + "/x.rawlog").rfind(d + "/.x.rawlog.tmp-", 0), 0u);
+	// A temporary's own temporary (a journal or a staged file written whole itself): the same run's PID twice.
+	write(d + "/..x.rawlog.tmp-999994.tmp-999994", "");
+	write(d + "/..x.rawlog.commit-999994.tmp-999994", "run 999994 1\n");
+	write(d + "/..x.rawlog.commit-999994.tmp-2023", "a user's text");
+	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
+	EXPECT_FALSE(fs::exists(d + "/..x.rawlog.tmp-999994.tmp-999994"));
+	EXPECT_FALSE(fs::exists(d + "/..x.rawlog.commit-999994.tmp-999994"));
+	EXPECT_TRUE(fs::exists(d + "/..x.rawlog.commit-999994.tmp-2023"));
 	// A run killed a moment ago, not yet reaped by its parent (a zombie), is gone too.
 	const pid_t zombie = ::fork();
 	if (zombie == 0) ::_exit(0);
@@ -346,6 +356,68 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	EXPECT_THROW(requireRawlogOutputAllowed(d + "/backup.tar.gz", "omnirange-scan", {}, false), std::runtime_error);
 }
 
+TEST(OutputRule, AFolderItsRunWasKilledFillingIsRemovedWholeAndOneItFinishedIsListed)
+{
+	// An experiment killed while icp-slam writes into its staging folder: files no list names, all the run's.
+	const std::string d = fresh("killed_filling");
+	const pid_t run = ::fork();
+	if (run == 0)
+	{
+		StagedFolder staged(d + "/report", "omnirange-test", {}, false);
+		fillListed(staged.path(), [&] {
+			fs::create_directory(staged.path() + "/icp_slam");
+			write(staged.path() + "/icp_slam/_finalmap.png", "MRPT's");
+			::raise(SIGKILL);
+		});
+		::_exit(0);
+	}
+	int status = 0;
+	::waitpid(run, &status, 0);
+	ASSERT_TRUE(WIFSIGNALED(status)) << status;
+	const std::string staging = d + "/report.staging-" + std::to_string(run);
+	ASSERT_TRUE(fs::exists(staging + "/icp_slam/_finalmap.png"));
+	testing::internal::CaptureStderr();
+	recoverLeftoversOf(d + "/report", OutputKind::Folder, "omnirange-test");
+	EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+	EXPECT_FALSE(fs::exists(staging));
+	// A fill that ends, also in an error, lists what it wrote: a file added later is told apart.
+	const std::string kept = fresh("filled") + "/out";
+	fs::create_directory(kept);
+	markOutputFolder(kept, "omnirange-test");
+	EXPECT_THROW(fillListed(kept, [&] {
+		write(kept + "/stage.log", "ours");
+		throw std::runtime_error("a stage failed");
+	}),
+				 std::runtime_error);
+	EXPECT_EQ(firstUnlistedIn(kept), "");
+	write(kept + "/notes.txt", "a user's");
+	EXPECT_EQ(firstUnlistedIn(kept), "notes.txt");
+}
+
+TEST(OutputRule, AFolderOutputNamedDotIsTheFolderItself)
+{
+	// `-o .` in a folder made for the report: staged beside it and put in its place, not moved aside as '.'.
+	const std::string d = fresh("dot_output");
+	fs::create_directory(d + "/report");
+	const fs::path back = fs::current_path();
+	for (const std::string& given : {std::string("."), std::string("./")})
+	{
+		fs::current_path(d + "/report");  // the one put in place by the last pass
+		StagedFolder staged(given, "omnirange-test", {}, false);
+		EXPECT_EQ(staged.target(), fs::canonical(d + "/report").string());
+		EXPECT_EQ(staged.path(), staged.target() + ".staging-" + std::to_string(::getpid()));
+		write(staged.path() + "/summary.md", "new");
+		staged.commit();
+	}
+	fs::current_path(back);
+	EXPECT_EQ(read(d + "/report/summary.md"), "new");
+	fs::create_directory(d + "/report/sub");
+	fs::current_path(d + "/report/sub");
+	StagedFolder up("..", "omnirange-test", {}, true);
+	EXPECT_EQ(up.target(), fs::canonical(d + "/report").string());
+	fs::current_path(back);
+}
+
 TEST(OutputRule, AnInterruptDuringACommitEndsTheRunOnlyAfterItsRenames)
 {
 	// Ctrl-C while a commit moves files: the commit ends whole, then the run ends as the interrupt says.
@@ -367,6 +439,35 @@ TEST(OutputRule, AnInterruptDuringACommitEndsTheRunOnlyAfterItsRenames)
 	::waitpid(run, &status, 0);
 	EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
 	EXPECT_EQ(read(d + "/a.txt"), "whole");
+}
+
+TEST(OutputRule, ACommitWaitingLongForAnotherRunsSaysSo)
+{
+	// A run stopped (Ctrl+Z) while it puts its output in place holds the folder: another run waits, visibly.
+	const std::string d = fresh("long_wait");
+	{
+		testing::internal::CaptureStderr();
+		const FolderLock free_folder(d + "/a.txt");
+		EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+	}
+	const pid_t other = ::fork();
+	if (other == 0)
+	{
+		const int fd = ::open(d.c_str(), O_RDONLY | O_DIRECTORY);
+		::flock(fd, LOCK_EX);
+		write(d + "/held", "");
+		::sleep(3);
+		::_exit(0);
+	}
+	while (!fs::exists(d + "/held")) ::usleep(10000);
+	testing::internal::CaptureStderr();
+	{
+		const FolderLock commit(d + "/b.txt");  // its turn comes when the other ends
+	}
+	const std::string said = testing::internal::GetCapturedStderr();
+	EXPECT_NE(said.find("waiting for another run, which is putting its output into '"), std::string::npos) << said;
+	int status = 0;
+	::waitpid(other, &status, 0);
 }
 
 TEST(OutputRule, AWorkingFolderPastPathMaxIsNoReasonToRefuse)

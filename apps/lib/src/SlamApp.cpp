@@ -48,8 +48,7 @@ slam::GuardedIcpResult SlamApp::run()
 								 ": icp-slam follows this, omnirange-slam does not (it matches each scan against a "
 								 "points map of its keyframes, from the rawlog's first entry)");
 	// icp-slam's kind of outputs, in a folder of this program's that is swapped in whole.
-	const std::string folder = outputPath(o_.output);
-	StagedFolder staged(folder, "omnirange-slam", {o_.input, o_.ini}, false);
+	StagedFolder staged(o_.output, "omnirange-slam", {o_.input, o_.ini}, false);
 	const std::string map = staged.path() + "/_finalmap_.simplemap", path = staged.path() + "/log_estimated_path.txt";
 	const slam::GuardedIcpResult r = slam::runGuardedIcp(o_.input, o_.scan_label, o_.odometry_label, options);
 	std::string text = "% time [s], x [m], y [m], phi [rad]: the estimated pose at every scan\n";

@@ -10,6 +10,7 @@
 #include <zlib.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace omnirange
@@ -128,6 +130,23 @@ std::set<std::string>& heldFolders()
 	return held;
 }
 std::mutex held_mutex;
+
+/** [s] How long another run's commit may hold a folder before the wait for it is said. */
+constexpr double kQuietWait = 2.0;
+
+/** Tries to lock the folder `fd` for kQuietWait: true if another run still
+ * holds it then (false: locked, or no lock to be had). */
+bool heldElsewhere(int fd)
+{
+	const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(kQuietWait);
+	while (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+	{
+		if (errno != EWOULDBLOCK) return false;
+		if (std::chrono::steady_clock::now() > until) return true;
+		std::this_thread::sleep_for(std::chrono::milliseconds(20));
+	}
+	return false;
+}
 }  // namespace
 
 FolderLock::FolderLock(const std::string& path)
@@ -143,7 +162,13 @@ FolderLock::FolderLock(const std::string& path)
 	if (!owner_) return;
 	fd_ = ::open(folder_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
 	// Without a lock (a folder that cannot be opened so) the run goes on as before: the renames say what fails.
-	if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+	if (fd_ >= 0 && heldElsewhere(fd_))
+	{
+		// Another run's commit takes a moment; one that does not end was stopped (Ctrl+Z, a debugger).
+		temporaries::warn("waiting for another run, which is putting its output into '" + folder_ +
+						  "' (if it was stopped, this one waits for it; Ctrl+C leaves nothing of this one there)");
+		::flock(fd_, LOCK_EX);
+	}
 	deferred_ = std::make_unique<temporaries::InterruptsDeferred>();  // once it is this run's turn
 }
 

@@ -42,6 +42,9 @@ std::string outputPath(const std::string& path)
 
 namespace
 {
+/** A marker's line while its run writes files it has not listed (fillListed()). */
+constexpr const char* kFilling = "filling";
+
 std::string firstBytes(const std::string& path, std::size_t n)
 {
 	std::ifstream f(path, std::ios::binary);
@@ -410,13 +413,14 @@ std::string removedMarkerLast(const fs::path& p)
 bool movedAsideBy(const fs::path& p, const std::string& pid) { return markerSays(p, "aside " + pid); }
 
 /** The first thing under `dir` that the run `pid` did not write, relative to
- * `dir` ("" if none). A folder with a list of its files (listOutputFile())
- * is compared with it; one without (a run killed before it listed them)
+ * `dir` ("" if none). A folder its run was killed filling (fillListed()) is
+ * all its own; one with a list of its files (listOutputFile()) is compared with it; one without (a run killed before it listed them)
  * holds only what runs write before they list: a hidden temporary of run
  * `pid` (temporaryOf()), a folder made by run `pid`, a plain folder holding
  * only these. */
 std::string firstNotMadeBy(const fs::path& dir, const std::string& pid)
 {
+	if (markerSays(dir, kFilling)) return "";  // killed in fillListed(): what it had not listed yet is its own too
 	bool has_list = false;
 	listedIn(dir.string(), has_list);
 	if (has_list) return firstUnlistedIn(dir.string());
@@ -501,6 +505,17 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	for (const auto& e : fs::directory_iterator(dir, ec))
 	{
 		const std::string other = e.path().filename().string();
+		// A temporary of one of its temporaries (written whole itself: a journal, a staged ini): "..NAME.commit-PID.tmp-PID".
+		for (const auto& prefix : {".." + name + ".tmp-", ".." + name + ".commit-"})
+		{
+			if (other.rfind(prefix, 0) != 0) continue;
+			const std::string rest = other.substr(prefix.size());
+			const auto at = rest.find(".tmp-");
+			const std::string pid = rest.substr(0, at);
+			if (at != std::string::npos && rest.substr(at + 5) == pid &&
+				(pid == std::to_string(::getpid()) || deadRun(pid)) && fs::is_regular_file(fs::symlink_status(e.path(), ec)))
+				fs::remove(e.path(), ec);
+		}
 		// What a run names its leftovers (temporaryOf(), StagedFolder, moveAside()).
 		for (const auto& prefix : {name + ".staging-", "." + name + ".tmp-", name + ".old-", "." + name + ".old-"})
 		{
@@ -532,9 +547,23 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	}
 }
 
+namespace
+{
+/** `path` as a folder output: "." or ".." (`-o .` in a folder made for it) by
+ * the folder's own name, so that its staging folder and the old one go beside it. */
+std::string folderOutputOf(const std::string& path)
+{
+	const std::string p = outputPath(path);
+	const std::string name = fs::path(p).filename().string();
+	std::error_code ec;
+	const fs::path real = fs::canonical(p, ec);
+	return (name == "." || name == "..") && !ec ? real.string() : p;
+}
+}  // namespace
+
 StagedFolder::StagedFolder(const std::string& target, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force)
-	: target_(target), staging_(target + ".staging-" + std::to_string(::getpid()))
+	: target_(folderOutputOf(target)), staging_(target_ + ".staging-" + std::to_string(::getpid()))
 {
 	recoverLeftoversOf(target_, OutputKind::Folder, program);
 	requireOutputAllowed(target_, OutputKind::Folder, program, inputs, force);
@@ -641,6 +670,31 @@ void requireRawlogOfImages(const std::string& rawlog, const std::string& images)
 }
 
 void listOutputFile(const std::string& dir, const std::string& name) { noteInMarker(dir, "file " + name); }
+
+void fillListed(const std::string& dir, const std::function<void()>& write)
+{
+	noteInMarker(dir, kFilling);
+	const auto listed = [&] {
+		listOutputFolder(dir);
+		unnoteInMarker(dir, kFilling);
+	};
+	try
+	{
+		write();
+	}
+	catch (...)
+	{
+		try
+		{
+			listed();
+		}
+		catch (const std::exception&)  // not listed: still all the run's, which the next run removes
+		{
+		}
+		throw;
+	}
+	listed();
+}
 
 void listOutputFolder(const std::string& dir)
 {

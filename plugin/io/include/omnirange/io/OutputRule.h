@@ -82,6 +82,13 @@ void requireRawlogOfImages(const std::string& rawlog, const std::string& images)
  * what was its own, so what a user adds there later is told apart. */
 void listOutputFile(const std::string& dir, const std::string& name);
 
+/** Runs `write`, which fills the marked folder `dir` with files it cannot
+ * list before it writes them (programs it starts name their own), then
+ * lists them (listOutputFolder()), also when `write` throws. Meanwhile the
+ * marker says so: a run killed in it leaves a folder all its own, which the
+ * next run of the output removes whole. */
+void fillListed(const std::string& dir, const std::function<void()>& write);
+
 /** Adds to the marker of the finished folder `dir` every file in it: what
  * the program wrote, so that a file a user adds later is not replaced with it. */
 void listOutputFolder(const std::string& dir);
@@ -110,6 +117,8 @@ class StagedFolder
 	StagedFolder& operator=(const StagedFolder&) = delete;
 
 	const std::string& path() const { return staging_; }
+	/** The output folder ("." or ".." by the folder's own name). */
+	const std::string& target() const { return target_; }
 	/** Runs `write`, which fills the staging folder; an error it throws names
 	 * the output the user asked for, not the staging folder (which is removed). */
 	void fill(const std::function<void()>& write) const;
