@@ -414,10 +414,11 @@ bool movedAsideBy(const fs::path& p, const std::string& pid) { return markerSays
 
 /** The first thing under `dir` that the run `pid` did not write, relative to
  * `dir` ("" if none). A folder its run was killed filling (fillListed()) is
- * all its own; one with a list of its files (listOutputFile()) is compared with it; one without (a run killed before it listed them)
- * holds only what runs write before they list: a hidden temporary of run
- * `pid` (temporaryOf()), a folder made by run `pid`, a plain folder holding
- * only these. */
+ * all its own; one with a list of its files (listOutputFile()) is compared
+ * with it; one without (a run killed before it listed them) holds only what
+ * runs write before they list: a hidden temporary of run `pid`
+ * (temporaryOf()), a folder made by run `pid`, a plain folder holding only
+ * these. */
 std::string firstNotMadeBy(const fs::path& dir, const std::string& pid)
 {
 	if (markerSays(dir, kFilling)) return "";  // killed in fillListed(): what it had not listed yet is its own too
