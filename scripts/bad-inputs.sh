@@ -318,6 +318,7 @@ mkfifo fill.fifo
 run_case "summary: --fill a FIFO" "error:not a regular file" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill fill.fifo
 long_name=$(printf 'c%.0s' $(seq 240)).rawlog
 run_case "scan: an output name of 247 characters (no room for its temporaries)" "error:leave room for the names of its temporaries" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o "$long_name"
+run_case "scan: a line break in the output's name (a marker would list another file)" "error:has a control character" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o $'nl\nfile f.ini.rawlog'
 run_case "accuracy: a prefix of 250 characters (names each output it would make)" "error:_pairs.csv' is 260 characters" none.out -- "$apps/omnirange-accuracy" -q -i scanned.rawlog -o "$(printf 'c%.0s' $(seq 250))"
 # Sparse files: large to a reader, nothing on the disk.
 cp floor.hist big.hist && truncate -s 1G big.hist

@@ -1,6 +1,7 @@
 // Writing one section into a person's ini: values replaced in place, new
 // keys at the section's end, every comment and other section kept.
 #include <omnirange/core/Rangefinder.h>
+#include <omnirange/config/AtomicWrite.h>
 #include <omnirange/config/IniSectionWriter.h>
 #include <omnirange/config/OptionsTable.h>
 
@@ -9,6 +10,10 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace omnirange;
 
@@ -110,4 +115,49 @@ TEST(IniSectionWriter, ASectionNameNoReaderWouldTakeBackIsRefusedBeforeTheFileCh
 	}
 	writeIniSection(path, "robot-2.mirror_v1", {{"cx", "512"}});
 	EXPECT_EQ(read(path), text + "\n[robot-2.mirror_v1]\ncx = 512\n");
+}
+
+TEST(IniSectionWriter, AnUpdateNeverReplacesAChangeMadeSinceItWasRead)
+{
+	// A user's editor saving between the read and the rename: the update is refused, the edit stays.
+	const std::string path = tmp("edited.ini");
+	std::ofstream(path) << "[rangefinder]\nN = 20\n";
+	const std::string state = fileStateOf(path);
+	std::ofstream(path, std::ios::app) << "K = 3\n";
+	EXPECT_THROW(updateFileAtomically(path, "[rangefinder]\nN = 10\n", state), ChangedMeanwhile);
+	EXPECT_EQ(read(path), "[rangefinder]\nN = 20\nK = 3\n");
+	EXPECT_FALSE(std::filesystem::exists(temporaryOf(path)));
+	// Read as it is now, the update goes in.
+	updateFileAtomically(path, "[rangefinder]\nN = 10\n", fileStateOf(path));
+	EXPECT_EQ(read(path), "[rangefinder]\nN = 10\n");
+}
+
+TEST(IniSectionWriter, TwoRunsSavingIntoOneIniAtOnceKeepBothSections)
+{
+	// Two calibrations with --save-to the same ini: the later one reads the earlier one's keys and keeps them.
+	const std::string path = tmp("shared.ini");
+	for (int round = 0; round < 20; ++round)
+	{
+		std::ofstream(path, std::ios::trunc) << "; the robot\n";
+		std::vector<pid_t> runs;
+		for (const std::string section : {"rangefinder", "other"})
+		{
+			const pid_t run = ::fork();
+			if (run == 0)
+			{
+				writeIniSection(path, section, {{"N", "10"}});
+				::_exit(0);
+			}
+			runs.push_back(run);
+		}
+		for (const pid_t run : runs)
+		{
+			int status = 0;
+			::waitpid(run, &status, 0);
+			EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+		}
+		const std::string text = read(path);
+		ASSERT_NE(text.find("[rangefinder]"), std::string::npos) << "round " << round << ":\n" << text;
+		ASSERT_NE(text.find("[other]"), std::string::npos) << "round " << round << ":\n" << text;
+	}
 }

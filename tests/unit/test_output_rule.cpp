@@ -418,6 +418,24 @@ TEST(OutputRule, AFolderOutputNamedDotIsTheFolderItself)
 	fs::current_path(back);
 }
 
+TEST(OutputRule, ANameWithALineBreakIsRefusedBeforeAMarkerOrJournalCouldListIt)
+{
+	// A marker lists a file a line: "x\nfile notes.txt" would make the user's notes.txt the run's own.
+	const std::string d = fresh("line_break");
+	const std::string said = refusal(d + "/x\nfile notes.txt", OutputKind::Rawlog);
+	EXPECT_NE(said.find("has a control character"), std::string::npos) << said;
+	EXPECT_EQ(said.find('\n'), std::string::npos) << "one line";
+	EXPECT_NE(refusal(d + "/tab\there.hist", OutputKind::Histogram).find("control character"), std::string::npos);
+	fs::create_directory(d + "/out");
+	markOutputFolder(d + "/out", "omnirange-test");
+	listOutputFile(d + "/out", "img0.jpg");
+	EXPECT_THROW(listOutputFile(d + "/out", "img.jpg\nfile notes.txt"), std::runtime_error);  // an input's image so named
+	write(d + "/out/img0.jpg", "ours");
+	EXPECT_EQ(firstUnlistedIn(d + "/out"), "");
+	write(d + "/out/notes.txt", "a user's");
+	EXPECT_EQ(firstUnlistedIn(d + "/out"), "notes.txt");
+}
+
 TEST(OutputRule, AnInterruptDuringACommitEndsTheRunOnlyAfterItsRenames)
 {
 	// Ctrl-C while a commit moves files: the commit ends whole, then the run ends as the interrupt says.
@@ -468,6 +486,34 @@ TEST(OutputRule, ACommitWaitingLongForAnotherRunsSaysSo)
 	EXPECT_NE(said.find("waiting for another run, which is putting its output into '"), std::string::npos) << said;
 	int status = 0;
 	::waitpid(other, &status, 0);
+}
+
+TEST(OutputRule, SetsOverTheSameFoldersLockThemInOneOrderHoweverTheyAreNamed)
+{
+	// Folder A named through a link Z: a set over Z and B takes A first, as a set over A and B does.
+	const std::string d = fresh("lock_order");
+	fs::create_directory(d + "/A"), fs::create_directory(d + "/B");
+	fs::create_directory_symlink("A", d + "/Z");
+	const int a = ::open((d + "/A").c_str(), O_RDONLY | O_DIRECTORY);
+	ASSERT_EQ(::flock(a, LOCK_EX), 0);  // another run's set, holding A and about to take B
+	const pid_t run = ::fork();
+	if (run == 0)
+	{
+		::close(a);  // the parent's lock, which a copy of its descriptor would hold on for this run too
+		StagedFile y(d + "/Z/y.txt", [](const std::string& tmp) { std::ofstream(tmp) << "y"; });
+		StagedFile m(d + "/B/m.txt", [](const std::string& tmp) { std::ofstream(tmp) << "m"; });
+		commitAll({&y, &m});
+		::_exit(0);
+	}
+	::sleep(1);
+	const int b = ::open((d + "/B").c_str(), O_RDONLY | O_DIRECTORY);
+	EXPECT_EQ(::flock(b, LOCK_EX | LOCK_NB), 0) << "B taken before A: each run would wait for the other";
+	::close(b), ::close(a);
+	int status = 0;
+	::waitpid(run, &status, 0);
+	EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+	EXPECT_EQ(read(d + "/A/y.txt"), "y");
+	EXPECT_EQ(read(d + "/B/m.txt"), "m");
 }
 
 TEST(OutputRule, AWorkingFolderPastPathMaxIsNoReasonToRefuse)

@@ -65,7 +65,7 @@ SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summa
 	setMinLoggingLevel(o_.verbosity);
 }
 
-std::string SummaryApp::filledOrChecked(const std::string& file, const std::string& csv)
+std::string SummaryApp::filledOrChecked(const std::string& file, const std::string& csv, std::string& state)
 {
 	recoverSetOf(file);  // a page a killed --fill was replacing: the old set back before it is read
 	requireRegularFile(file, "file to fill");
@@ -74,6 +74,7 @@ std::string SummaryApp::filledOrChecked(const std::string& file, const std::stri
 	if (const std::uintmax_t size = std::filesystem::file_size(file); size > kLargestPage)
 		throw std::runtime_error("'" + file + "' is " + std::to_string(size >> 20) +
 								 " MB: more than a page of tables (64 MB at most)");
+	state = fileStateOf(file);  // before it is read: a change after that is not overwritten
 	std::ifstream in(file);
 	if (!in) throw std::runtime_error("cannot read '" + file + "'");
 	std::ostringstream text;
@@ -108,8 +109,14 @@ void SummaryApp::run()
 		// Every page filled, or none: pages that quote one another stay in step.
 		std::vector<std::unique_ptr<StagedFile>> pages;
 		for (const auto& f : o_.fill)
-			if (const std::string filled = filledOrChecked(f, o_.csv); !filled.empty())
-				pages.push_back(std::make_unique<StagedFile>(f, [&](const std::string& tmp) { writeFileAtomically(tmp, filled); }));
+		{
+			std::string state;
+			if (const std::string filled = filledOrChecked(f, o_.csv, state); !filled.empty())
+			{
+				pages.push_back(std::make_unique<StagedFile>(f, writerOf(f, filled)));
+				pages.back()->replacing(state);  // a user's edit meanwhile is not lost: the run fails
+			}
+		}
 		commitAll(pointersTo(pages));
 		for (const auto& f : o_.fill) MRPT_LOG_INFO_STREAM(f << ": its tables are " << o_.csv << "'s now");
 		return;

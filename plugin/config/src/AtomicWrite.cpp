@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <set>
 #include <sstream>
@@ -107,9 +108,30 @@ StagedFile::~StagedFile()
 	temporaries::forget(tmp_);
 }
 
+std::string fileStateOf(const std::string& path)
+{
+	struct stat st{};
+	if (::stat(path.c_str(), &st) != 0) return "";
+	return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
+		   std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec);
+}
+
+void StagedFile::requireAsRead()
+{
+	if (!read_state_ || fileStateOf(path_) == *read_state_) return;
+	committed_ = true;
+	std::remove(tmp_.c_str());
+	temporaries::forget(tmp_);
+	throw ChangedMeanwhile("'" + path_ + "' changed while this run updated it (another run, or an editor): " +
+						   "nothing of this run went in; run it again");
+}
+
 void StagedFile::commit()
 {
 	if (committed_) return;
+	// An update: no other run's goes in between the check and the rename.
+	const std::unique_ptr<FolderLock> lock = read_state_ ? std::make_unique<FolderLock>(path_) : nullptr;
+	requireAsRead();
 	committed_ = true;
 	// Forgotten once renamed: an interrupt before that removes it (after, its name is gone: nothing to remove).
 	const bool renamed = std::rename(tmp_.c_str(), path_.c_str()) == 0;
@@ -149,12 +171,16 @@ bool heldElsewhere(int fd)
 }
 }  // namespace
 
-FolderLock::FolderLock(const std::string& path)
+std::string FolderLock::folderOf(const std::string& path)
 {
 	namespace fs = std::filesystem;
 	std::error_code ec;
 	const fs::path given = fs::path(path).parent_path().empty() ? "." : fs::path(path).parent_path();
-	folder_ = fs::weakly_canonical(fs::absolute(given, ec), ec).string();
+	return fs::weakly_canonical(fs::absolute(given, ec), ec).string();
+}
+
+FolderLock::FolderLock(const std::string& path) : folder_(folderOf(path))
+{
 	{
 		const std::lock_guard<std::mutex> guard(held_mutex);
 		owner_ = heldFolders().insert(folder_).second;  // else held already, by a commit this one is inside
@@ -242,12 +268,11 @@ std::string inodeOf(const std::string& path)
 
 FileSetCommit::FileSetCommit(std::vector<StagedFile*> files) : files_(std::move(files))
 {
-	// Every folder of the set, in one order, so that two runs with sets over the same folders cannot each wait for the other.
-	std::set<std::string> folders;
-	for (const auto* f : files_) folders.insert(fs::absolute(f->path_).string());
-	std::set<std::string> seen;
-	for (const auto& path : folders)
-		if (seen.insert(fs::path(path).parent_path().string()).second) locks_.push_back(std::make_unique<FolderLock>(path));
+	// Every folder of the set, in one order (of the folders locked, links resolved), so that two runs with sets
+	// over the same folders, however named, cannot each wait for the other.
+	std::map<std::string, std::string> folders;  // the folder locked, a file of the set in it
+	for (const auto* f : files_) folders.emplace(FolderLock::folderOf(f->path_), f->path_);
+	for (const auto& [folder, path] : folders) locks_.push_back(std::make_unique<FolderLock>(path));
 }
 
 FileSetCommit::~FileSetCommit()
@@ -262,10 +287,15 @@ void FileSetCommit::put()
 	std::string journal = "run " + run + "\n";
 	for (const auto* f : files_)
 	{
+		// The journal holds a file a line, its fields split by tabs.
+		if (f->path_.find_first_of("\t\n\r") != std::string::npos)
+			throw std::runtime_error("cannot put a file whose path holds a tab or a line break in place with others (the " +
+									 std::string("journal naming them would read back wrong)"));
 		std::error_code ec;
 		asides_.push_back(fs::exists(fs::symlink_status(f->path_, ec)) ? besideAs(f->path_, "old", pid) : "");
 		journal += f->path_ + "\t" + asides_.back() + "\t" + inodeOf(f->tmp_) + "\n";
 	}
+	for (auto* f : files_) f->requireAsRead();  // under the locks: nothing moved yet
 	// Not temporaries: an interrupt mid-way leaves them, for readers to refuse and the next run to undo.
 	for (const auto* f : files_)
 	{
@@ -408,8 +438,6 @@ std::uint32_t requireWholeGzipFile(const std::string& path, const std::string& w
 	return *crc;
 }
 
-namespace
-{
 std::function<void(const std::string&)> writerOf(const std::string& path, const std::string& bytes)
 {
 	return [&path, &bytes](const std::string& tmp) {
@@ -422,6 +450,8 @@ std::function<void(const std::string&)> writerOf(const std::string& path, const 
 	};
 }
 
+namespace
+{
 std::string encoded(const std::string& path, const cv::Mat& image)
 {
 	const auto dot = path.rfind('.');
@@ -435,6 +465,13 @@ std::string encoded(const std::string& path, const cv::Mat& image)
 void writeFileAtomically(const std::string& path, const std::string& bytes)
 {
 	writeAtomically(path, writerOf(path, bytes));
+}
+
+void updateFileAtomically(const std::string& path, const std::string& bytes, const std::string& read_state)
+{
+	StagedFile staged(path, writerOf(path, bytes));
+	staged.replacing(read_state);
+	staged.commit();
 }
 
 void writeImageAtomically(const std::string& path, const cv::Mat& image)

@@ -31,11 +31,14 @@ void requireSectionName(const std::string& section)
 									"every reader takes back");
 }
 
-void writeIniSection(const std::string& path, const std::string& section,
-					 const std::vector<std::pair<std::string, std::string>>& values,
-					 const std::map<std::string, std::string>& comments)
+namespace
 {
-	requireSectionName(section);
+/** The ini `path` with the keys in, as read now; its state (fileStateOf()) when read. */
+std::pair<std::string, std::string> withSection(const std::string& path, const std::string& section,
+												 const std::vector<std::pair<std::string, std::string>>& values,
+												 const std::map<std::string, std::string>& comments)
+{
+	const std::string state = fileStateOf(path);
 	std::vector<std::string> lines;
 	if (std::filesystem::exists(path))
 	{
@@ -96,7 +99,31 @@ void writeIniSection(const std::string& path, const std::string& section,
 	lines.insert(lines.begin() + insert_at + 1, added.begin(), added.end());
 	std::ostringstream out;
 	for (const auto& l : lines) out << l << (crlf ? "\r\n" : "\n");
-	writeFileAtomically(path, out.str());
+	return {out.str(), state};
+}
+}  // namespace
+
+void writeIniSection(const std::string& path, const std::string& section,
+					 const std::vector<std::pair<std::string, std::string>>& values,
+					 const std::map<std::string, std::string>& comments)
+{
+	requireSectionName(section);
+	// Another run's keys (two calibrations saving into one ini) or a user's edit that went in
+	// meanwhile are read again and kept; a file that keeps changing is left as it is.
+	constexpr int kTries = 5;
+	for (int attempt = 1;; ++attempt)
+	{
+		const auto [text, state] = withSection(path, section, values, comments);
+		try
+		{
+			updateFileAtomically(path, text, state);
+			return;
+		}
+		catch (const ChangedMeanwhile&)
+		{
+			if (attempt == kTries) throw;
+		}
+	}
 }
 
 }  // namespace omnirange

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <climits>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -221,6 +222,14 @@ void requireReachable(const std::string& output)
  * which tells a name the program derives (PREFIX_histogram.png) from another. */
 void requireNameFits(const std::string& output)
 {
+	// Markers and journals hold one name a line, fields split by tabs: such a name would read back as others.
+	if (std::any_of(output.begin(), output.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
+	{
+		std::string shown = output;
+		std::replace_if(shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }, '?');
+		throw std::runtime_error("the output '" + shown + "' has a control character (a line break, a tab) in its path, " +
+								 "shown as '?': name it without");
+	}
 	constexpr std::size_t kLongestName = NAME_MAX - 32;
 	const std::string name = fs::path(output).filename().string();
 	if (name.size() <= kLongestName) return;
@@ -625,6 +634,10 @@ void StagedFolder::keep()
 
 void noteInMarker(const std::string& dir, const std::string& line)
 {
+	// One note a line: a file named with a line break (an input's image) would read back as two.
+	if (line.find_first_of("\n\r") != std::string::npos)
+		throw std::runtime_error("cannot note '" + line.substr(0, line.find_first_of("\n\r")) + "...' in the marker of '" +
+								 dir + "': a name with a line break");
 	std::error_code ec;
 	// Written through, a link would carry the line into a file that is not this folder's.
 	if (fs::is_symlink(fs::path(dir) / kOutputMarker, ec))

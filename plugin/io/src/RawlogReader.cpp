@@ -2,11 +2,11 @@
 
 #include "omnirange/io/OutputRule.h"
 #include "omnirange/io/RawlogWriter.h"
+#include "omnirange/config/AtomicWrite.h"
 #include "omnirange/config/ErrorText.h"
 #include "omnirange/config/OptionsTable.h"
 #include "omnirange/config/Temporaries.h"
 
-#include <sys/stat.h>
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -27,17 +27,6 @@ namespace omnirange
 {
 namespace
 {
-/** "DEVICE:INODE:MTIME" of what `path` leads to ("" if nothing): a file or folder renamed in its place
- * has another (its inode number may be one freed before, but not with that time; a link or a chmod
- * changes no part of it). */
-std::string identityOf(const std::string& path)
-{
-	struct stat st{};
-	if (::stat(path.c_str(), &st) != 0) return "";
-	return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_mtim.tv_sec) + "." +
-		   std::to_string(st.st_mtim.tv_nsec);
-}
-
 /** The rawlogs this process has read, by path as given (a link switched between two readings is
  * another rawlog under the same name): the rawlog's and its images' identities when first read.
  * A program that reads one again (calibrate's passes) reads the same or fails. */
@@ -60,7 +49,7 @@ RawlogReader::RawlogReader(const std::string& path)
 {
 	requireRegularFile(path, "rawlog");
 	// The checks below read the rawlog and its images by name: what they read must be what is opened.
-	const std::string rawlog_opened = identityOf(path);
+	const std::string rawlog_opened = fileStateOf(path);
 	images_ = ImagesAsOpened(path);
 	if (!std::filesystem::is_regular_file(path) || !in_->open(path))
 	{
@@ -83,7 +72,7 @@ RawlogReader::RawlogReader(const std::string& path)
 		throw std::runtime_error("'" + imagesDirToRead(path) + "' may not be the images of rawlog '" + path + "': run " +
 								 run + " was putting them in place with their rawlog and had not finished (if it was killed, " +
 								 "run that program again)");
-	const auto replaced = [&] { return identityOf(path) != rawlog_opened; };
+	const auto replaced = [&] { return fileStateOf(path) != rawlog_opened; };
 	const std::runtime_error replaced_error("rawlog '" + path + "' was replaced as it was opened (a run wrote it again " +
 											"meanwhile): read it again");
 	// Its content checked once a run: a later pass over the same files need not read it all again.
@@ -126,13 +115,13 @@ void forgetReadings()
 }
 
 ImagesAsOpened::ImagesAsOpened(std::string rawlog)
-	: rawlog_(std::move(rawlog)), identity_(identityOf(imagesDirToRead(rawlog_)))
+	: rawlog_(std::move(rawlog)), identity_(fileStateOf(imagesDirToRead(rawlog_)))
 {
 }
 
 void ImagesAsOpened::require() const
 {
-	if (identityOf(imagesDirToRead(rawlog_)) != identity_)
+	if (fileStateOf(imagesDirToRead(rawlog_)) != identity_)
 		throw std::runtime_error("the images of rawlog '" + rawlog_ + "' were replaced after it was opened (a run " +
 								 "wrote it again meanwhile): open it again");
 }

@@ -35,8 +35,9 @@ class SummaryApp : public mrpt::system::COutputLogger
 
    private:
 	/** `file` with its tables filled from `csv`, or "" when they are already
-	 * (--check: throws when they are not). */
-	std::string filledOrChecked(const std::string& file, const std::string& csv);
+	 * (--check: throws when they are not); `state`: the file's as it was read
+	 * (fileStateOf()). */
+	std::string filledOrChecked(const std::string& file, const std::string& csv, std::string& state);
 	Options o_;
 };
 

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,20 @@ void keepModeOf(const std::string& target, const std::string& tmp);
  * user's "NAME.tmp-2024". */
 std::string temporaryOf(const std::string& target);
 
+/** What `path` leads to now, as "DEVICE:INODE:SIZE:MTIME" ("" if nothing):
+ * a file written again or renamed in its place has another (a link or a
+ * chmod changes no part of it). */
+std::string fileStateOf(const std::string& path);
+
+/** A file that was read to be updated (an ini given keys, a page filled)
+ * and changed before the update went in: another run's update, a user's
+ * editor. Nothing was replaced; reading it again and updating that works. */
+class ChangedMeanwhile : public std::runtime_error
+{
+   public:
+	using std::runtime_error::runtime_error;
+};
+
 /** One file of a multi-file output, written in full to a temporary beside
  * `path` and synced, but renamed into place only by commit(): an output of
  * several files stages each, then commits them together (commitAll()), so
@@ -57,12 +72,20 @@ class StagedFile
 	StagedFile(const StagedFile&) = delete;
 	StagedFile& operator=(const StagedFile&) = delete;
 	~StagedFile();
-	/** Renames the temporary to the path. */
+	/** Renames the temporary to the path (under its folder's lock when
+	 * replacing() was said). */
 	void commit();
+	/** It is an update of the file as it was in `state` (fileStateOf(),
+	 * taken before it was read): commit() throws ChangedMeanwhile instead of
+	 * replacing a file that has changed since, and removes the temporary. */
+	void replacing(std::string state) { read_state_ = std::move(state); }
 
    private:
 	friend class FileSetCommit;
+	/** Throws ChangedMeanwhile (the temporary removed) if the file is no longer as read. */
+	void requireAsRead();
 	std::string path_, tmp_;
+	std::optional<std::string> read_state_;
 	bool committed_{false};
 };
 
@@ -75,6 +98,8 @@ class FolderLock
    public:
 	explicit FolderLock(const std::string& path);
 	~FolderLock();
+	/** The folder locked for `path`: its parent, links resolved. */
+	static std::string folderOf(const std::string& path);
 	FolderLock(const FolderLock&) = delete;
 	FolderLock& operator=(const FolderLock&) = delete;
 
@@ -163,6 +188,12 @@ std::uint32_t requireWholeGzipFile(const std::string& path, const std::string& w
 /** Writes `bytes` to `path` atomically; throws std::runtime_error naming the
  * file on any I/O failure. */
 void writeFileAtomically(const std::string& path, const std::string& bytes);
+/** writeFileAtomically() as an update of the file read in `read_state`
+ * (StagedFile::replacing()): throws ChangedMeanwhile if it changed since. */
+void updateFileAtomically(const std::string& path, const std::string& bytes, const std::string& read_state);
+/** A StagedFile's writer of `bytes` (both must outlive the StagedFile's
+ * constructor), its errors naming `path`. */
+std::function<void(const std::string&)> writerOf(const std::string& path, const std::string& bytes);
 
 /** Encodes `image` in the format its path's extension names (.png, .jpg)
  * and writes it atomically. */

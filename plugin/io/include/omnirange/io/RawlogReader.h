@@ -22,8 +22,8 @@ namespace omnirange
  * before it did under the same name (RawlogReader). */
 void forgetReadings();
 
-/** A rawlog's images folder as a reader opened it (device, inode and
- * modification time, through links; none if it had none). */
+/** A rawlog's images folder as a reader opened it (fileStateOf(), through
+ * links; none if it had none). */
 class ImagesAsOpened
 {
    public:
