@@ -26,7 +26,9 @@
 #include <fstream>
 #include <memory>
 #include <fcntl.h>
+#include <linux/fs.h>
 #include <sys/file.h>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -832,6 +834,48 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 		stopped.stop();
 	});
 	EXPECT_THROW(stopped.run(), std::runtime_error);
+}
+
+TEST(OutputRule, ACommitTheFolderRefusesHalfWaySaysWhereTheOldImagesAre)
+{
+	// The folder made immutable as the new images go in: neither the commit nor its undo can move them.
+	const std::string d = fresh("immutable_mid_commit");
+	const auto writeLog = [&](int value, const std::function<void()>& with_images) {
+		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit({}, with_images);
+	};
+	writeLog(1, {});
+	const int fd = ::open(d.c_str(), O_RDONLY | O_DIRECTORY);
+	int flags = 0;
+	ASSERT_EQ(::ioctl(fd, FS_IOC_GETFLAGS, &flags), 0);
+	const auto immutable = [&](bool on) {
+		int f = on ? (flags | FS_IMMUTABLE_FL) : flags;
+		return ::ioctl(fd, FS_IOC_SETFLAGS, &f) == 0;
+	};
+	if (!immutable(true)) GTEST_SKIP() << "cannot make a folder immutable here (needs CAP_LINUX_IMMUTABLE)";
+	immutable(false);
+	std::string said;
+	try
+	{
+		writeLog(2, [&] {
+			immutable(true);
+			throw std::runtime_error("the disk went away");
+		});
+	}
+	catch (const std::runtime_error& e)
+	{
+		said = e.what();
+	}
+	immutable(false);
+	::close(fd);
+	const std::string old = d + "/log_Images.old-" + std::to_string(::getpid());
+	EXPECT_NE(said.find("the old images could not be put back"), std::string::npos) << said;
+	EXPECT_NE(said.find("'" + old + "'"), std::string::npos) << said;
+	EXPECT_EQ(said.find("as they were"), std::string::npos) << said;
+	EXPECT_EQ(cv::imread(old + "/0.png").at<cv::Vec3b>(0, 0)[0], 1);  // where it says
+	fs::remove_all(old);
 }
 
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)

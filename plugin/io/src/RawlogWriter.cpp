@@ -285,12 +285,20 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	}
 	catch (const std::exception& e)
 	{
-		std::error_code ec;
+		std::error_code back;
 		const std::string left = files.undo();
-		if (moved_in) fs::remove_all(images_, ec);  // ours, just moved in
-		if (had_old) fs::rename(old, images_, ec);
+		if (moved_in) fs::remove_all(images_, back);  // ours, just moved in
+		if (had_old && !back) fs::rename(old, images_, back);
+		// What the folder refuses to the commit (made read-only or immutable meanwhile) it may refuse to the undo.
+		std::string images_left;
+		if (back && had_old)
+			images_left = "the old images could not be put back (" + back.message() + "): they are in '" + old + "'";
+		else if (back)
+			images_left = "the new images could not be taken out (" + back.message() + "): remove '" + images_ + "'";
+		std::string said = left;
+		if (!images_left.empty()) said += (said.empty() ? "" : "; ") + images_left;
 		throw std::runtime_error("cannot move '" + path_ + "' and its images into place (" + e.what() + "); " +
-								 (left.empty() ? "the old ones are as they were" : left));
+								 (said.empty() ? "the old ones are as they were" : said));
 	}
 	files.finish();
 	committed_ = true;
