@@ -6,8 +6,6 @@
 
 #include <omnirange_apps/CommandLine.h>
 
-#include <omnirange/config/LayeredIni.h>
-#include <omnirange/io/OutputRule.h>
 
 #include <wx/app.h>
 
@@ -90,11 +88,7 @@ int main(int argc, char** argv)
 		if (g_options.frame < 0) throw std::invalid_argument("frame must be >= 0");
 		g_session = std::make_unique<omnirange::tuner::TunerSession>(g_options.session);  // reads and checks them
 		// Save writes into the ini (the -c one by default), never into what is read, nor the bases under it.
-		const auto& in = g_options.session;
-		std::vector<std::string> inputs{in.rawlog, in.histogram};
-		for (const auto& base : omnirange::iniBasesOf(in.ini)) inputs.push_back(base);
-		omnirange::requireOutputAllowed(g_options.save_to, omnirange::OutputKind::Ini, "omnirange-tuner", inputs);
-		omnirange::RangefinderParams::requireWritable(g_options.save_to, in.section);
+		g_session->requireSaveAllowed(g_options.save_to);
 		if (g_options.frame >= g_session->frames())
 			throw std::invalid_argument("frame " + std::to_string(g_options.frame) + " is past the rawlog's " +
 										std::to_string(g_session->frames()) + " frames");

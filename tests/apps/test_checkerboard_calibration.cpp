@@ -228,6 +228,26 @@ TEST(MirrorRim, ADiscFarFromTheCalibratedCentreIsDoubted)
 	EXPECT_NE(why.find("may be wrong"), std::string::npos) << why;
 }
 
+TEST(CheckerboardCalibration, RimImagesOfACameraThatMovedBetweenThemAreDoubted)
+{
+	// The real images' own discs agree; one of them shifted 80 px (the camera moved) gives a centre of neither.
+	const auto real = realImages({1, 4, 8});
+	if (!std::filesystem::exists(real[0])) GTEST_SKIP() << "no " << real[0];
+	const MirrorRim still = detectMirrorRim(real);
+	EXPECT_LT(still.centre_spread, 3.0);
+	const std::string dir = std::filesystem::temp_directory_path() / "omnirange_rim_moved";
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	const cv::Mat first = cv::imread(real[0], cv::IMREAD_UNCHANGED);
+	cv::Mat moved = cv::Mat::zeros(first.size(), first.type());
+	first.colRange(0, first.cols - 80).copyTo(moved.colRange(80, first.cols));
+	cv::imwrite(dir + "/moved.pgm", moved);
+	const MirrorRim both = detectMirrorRim({real[0], dir + "/moved.pgm"});
+	EXPECT_GT(both.centre_spread, 30.0);
+	const std::string why = calibrateFails({"--rim", real[0], "--rim", dir + "/moved.pgm"});
+	EXPECT_NE(why.find("moved between the images"), std::string::npos) << why;
+}
+
 TEST(CheckerboardCalibration, TooFewBoardsOrAnUnreadableImageIsAnError)
 {
 	EXPECT_THROW(calibrateFromCheckerboards({"/nonexistent.pgm"}), std::runtime_error);

@@ -310,6 +310,44 @@ TEST(TunerSession, SavingKeepsAnEditMadeInTheFileWhileTheWindowWasOpen)
 	EXPECT_EQ(back.scanner.filter.N, 11) << "an edit made in the file was undone";
 }
 
+TEST(TunerSession, SaveChecksTheIniAgainWhenItIsSavedNotOnlyWhenTheWindowOpens)
+{
+	const std::string dir = workDir("save_moved");
+	fs::copy_file(kIni, dir + "/user.ini");
+	fs::copy_file(test::kSource + "/ini/experiment-base.ini", dir + "/experiment-base.ini");
+	const std::string base_text = read(dir + "/experiment-base.ini");
+	SessionOptions o;
+	o.rawlog = kSample;
+	o.ini = dir + "/user.ini";
+	TunerSession s(o);
+	RangefinderParams p = s.params();
+	p.threshold = 0.0123;
+	s.setParams(p);
+	const auto refusal = [&] {
+		try
+		{
+			s.saveIni();
+			return std::string();
+		}
+		catch (const std::runtime_error& e)
+		{
+			return std::string(e.what());
+		}
+	};
+	// The ini moved away meanwhile: a new file would hold the threshold and none of its other keys or its base.
+	fs::rename(o.ini, dir + "/moved.ini");
+	EXPECT_NE(refusal().find("was moved or removed since it was read"), std::string::npos);
+	EXPECT_FALSE(fs::exists(o.ini));
+	// Put back as a link to its base: the base, which other inis read, is not written through it.
+	fs::create_symlink("experiment-base.ini", o.ini);
+	EXPECT_NE(refusal().find("is the input"), std::string::npos) << refusal();
+	EXPECT_EQ(read(dir + "/experiment-base.ini"), base_text);
+	fs::remove(o.ini);
+	fs::rename(dir + "/moved.ini", o.ini);
+	EXPECT_EQ(refusal(), "");
+	EXPECT_DOUBLE_EQ(RangefinderParams::loadFromFile(o.ini, "rangefinder").threshold, 0.0123);
+}
+
 TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOff)
 {
 	const std::string dir = workDir("overlays");

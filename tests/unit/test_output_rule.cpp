@@ -878,6 +878,52 @@ TEST(OutputRule, ACommitTheFolderRefusesHalfWaySaysWhereTheOldImagesAre)
 	fs::remove_all(old);
 }
 
+TEST(OutputRule, AnotherProgramsFolderAKilledRunMovedAsideIsStillNotOursToReplace)
+{
+	// A simulation killed between moving its images aside and putting the new ones in: an import onto its name would
+	// replace the simulation's rawlog and leave its images aside.
+	const std::string d = fresh("aside_by_other");
+	writeRawlog(d + "/d.rawlog");
+	fs::create_directory(d + "/d_Images.old-999987");
+	write(d + "/d_Images.old-999987/" + kOutputMarker, "omnirange-sim\nrun 999986\naside 999987\n");
+	const auto refused = [&](const std::string& program) {
+		try
+		{
+			requireRawlogOutputAllowed(d + "/d.rawlog", program, {}, false);
+			return std::string();
+		}
+		catch (const std::runtime_error& e)
+		{
+			return std::string(e.what());
+		}
+	};
+	EXPECT_NE(refused("omnirange-import").find("leaving the old one in '" + d + "/d_Images.old-999987'"), std::string::npos)
+		<< refused("omnirange-import");
+	EXPECT_EQ(refused("omnirange-sim"), "");  // its own: the next simulation puts it back or replaces it
+	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/d.rawlog", "omnirange-import", {}, true));
+}
+
+TEST(OutputRule, AnImageWrittenAgainAfterItWasCheckedIsNotCopiedIntoAnImport)
+{
+	// An import checks every image, then copies each: a simulation writing the source folder meanwhile would mix two datasets.
+	const std::string d = fresh("import_changed_image");
+	cv::imwrite(d + "/a.png", cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 1, 1)));
+	const std::string checked = fileStateOf(d + "/a.png");
+	RawlogWriter w(d + "/out.rawlog", "omnirange-test");
+	EXPECT_NO_THROW(w.externalImageCopy(d + "/a.png", "0.png", checked));
+	cv::imwrite(d + "/b.png", cv::Mat(4, 4, CV_8UC3, cv::Scalar(2, 2, 2)));
+	fs::rename(d + "/b.png", d + "/a.png");  // another run's image in its place
+	try
+	{
+		w.externalImageCopy(d + "/a.png", "1.png", checked);
+		ADD_FAILURE() << "an image other than the one checked was copied";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("changed after it was checked"), std::string::npos) << e.what();
+	}
+}
+
 TEST(OutputRule, StagedFilesAreReplacedOnlyWhenEveryPartOfTheOutputIsWritten)
 {
 	// omnirange-sim's order: the true map and its picture staged, the rawlog

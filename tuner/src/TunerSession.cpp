@@ -3,9 +3,11 @@
 #include <mrpt/config/CConfigFile.h>
 
 #include <omnirange/config/IniSectionWriter.h>
+#include <omnirange/config/LayeredIni.h>
 #include <omnirange/io/ObservationImage.h>
 #include <omnirange/config/OptionsTable.h>
 #include <omnirange/io/Progress.h>
+#include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogProcessor.h>
 
 
@@ -36,6 +38,7 @@ Agreement agreementOf(const std::vector<RangePair>& pairs)
 TunerSession::TunerSession(SessionOptions options) : o_(std::move(options))
 {
 	params_ = RangefinderParams::loadFromFile(o_.ini, o_.section);
+	for (const auto& base : iniBasesOf(o_.ini)) bases_.push_back(std::filesystem::absolute(base).string());
 
 	// The frames: every omnicam image, with the laser and true scans paired to it.
 	std::map<const mrpt::obs::CObservationImage*, std::size_t> index;
@@ -249,10 +252,24 @@ RawlogTrainingResult TunerSession::train(const std::string& histogram, TrainingP
 	return r;
 }
 
+void TunerSession::requireSaveAllowed(const std::string& ini) const
+{
+	namespace fs = std::filesystem;
+	std::error_code ec;
+	if (fs::absolute(ini, ec).lexically_normal() == fs::absolute(o_.ini, ec).lexically_normal() &&
+		!fs::exists(ini, ec))
+		throw std::runtime_error("'" + ini + "' was moved or removed since it was read: put it back, or save into " +
+								 "another ini (--save-to)");
+	std::vector<std::string> inputs{o_.rawlog, o_.histogram};
+	inputs.insert(inputs.end(), bases_.begin(), bases_.end());
+	requireOutputAllowed(ini, OutputKind::Ini, "omnirange-tuner", inputs);
+	RangefinderParams::requireWritable(ini, o_.section);
+}
+
 void TunerSession::saveIni(const std::string& ini)
 {
 	const std::string target = ini.empty() ? o_.ini : ini;
-	RangefinderParams::requireWritable(target, o_.section);  // the file may have changed since the start
+	requireSaveAllowed(target);  // the files may have changed since the start
 	// Only the keys changed here since the ini was read or last saved: every
 	// other line stays as the user wrote it, an edit made in the file meanwhile
 	// too. Into another ini: the keys whose value differs from what it gives now

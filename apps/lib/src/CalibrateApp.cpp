@@ -26,8 +26,9 @@ constexpr double kMaxRms = 1.0;  // [px] reprojection error over the boards
 constexpr double kMaxCentreSpread = 3.0;  // [px] the principal point's move without a group of boards
 constexpr double kMaxEllipticity = 0.1;  // of --rim's disc
 constexpr char kOpenCvYamlBegins[] = "%YAML:1.0";  // how cv::FileStorage begins -o's intrinsics
-// [px] --rim's centre from a calibrated one (mei, ocamcalib) in the ini: the real paraboloid's
-// disc and its checkerboard centre agree within 3 px; the rest is room for a rim partly hidden.
+// [px] --rim's centre from a calibrated one (mei, ocamcalib) in the ini, and one image's own disc
+// from all images': the real paraboloid's disc and its checkerboard centre agree within 3 px, its
+// ten images' own discs within 2.5 px of theirs together; the rest is room for a rim partly hidden.
 constexpr double kMaxRimOffset = 10.0;
 
 /** A calibrated camera's keys, each printed by the ini's own table, into
@@ -288,14 +289,19 @@ std::optional<CameraParams> CalibrateApp::calibratedCamera()
 MirrorRim CalibrateApp::runRim()
 {
 	const MirrorRim rim = detectMirrorRim(o_.rim_images);
-	std::printf("mirror disc: centre cx = %.1f px, cy = %.1f px; rim radius %.1f px; ellipticity %.3f (from %zu images)\n",
-				rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size());
+	std::printf("mirror disc: centre cx = %.1f px, cy = %.1f px; rim radius %.1f px; ellipticity %.3f (from %zu images; "
+				"one image's own centre at most %.1f px from it)\n",
+				rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size(), rim.centre_spread);
 	// A disc the whole image could not hold, or far from round, is not a mirror's rim.
 	std::vector<std::string> doubts;
 	if (rim.cx - rim.radius < 0 || rim.cy - rim.radius < 0 || rim.cx + rim.radius > rim.image_width ||
 		rim.cy + rim.radius > rim.image_height)
 		doubts.push_back("the disc found (radius " + formatDouble(std::round(rim.radius)) +
 						 " px) reaches past the image: the rim is not all in view, or what was found is not the mirror");
+	if (rim.centre_spread > kMaxRimOffset)
+		doubts.push_back("one image's disc is " + formatDouble(std::round(rim.centre_spread * 10) / 10) +
+						 " px from the centre of all (over " + formatDouble(kMaxRimOffset) +
+						 " px): the camera or the mirror moved between the images, so the centre is of none of them");
 	if (rim.ellipticity > kMaxEllipticity)
 		doubts.push_back("the disc found is not round (ellipticity " + formatDouble(std::round(rim.ellipticity * 100) / 100) +
 						 " > " + formatDouble(kMaxEllipticity) + "): its centre is not the mirror's");

@@ -253,8 +253,9 @@ UserLogs readUserLogs(const LogImportOptions& o)
 									 formatDouble(std::round(kMaxOdometryTurnRate * 100) / 100) +
 									 " rad/s): x and y in millimetres, the heading in degrees, or a jump (a reset)?");
 	}
-	for (const TimedImage& im : u.images)
+	for (TimedImage& im : u.images)
 	{
+		im.checked_state = fileStateOf(im.file);  // before it is read: a change after is found when it is copied
 		const cv::Mat m = decodeImageFile(im.file, o.omni_label);
 		if (u.image_width == 0) u.image_width = m.cols, u.image_height = m.rows;
 		if (m.cols != u.image_width || m.rows != u.image_height)
@@ -284,7 +285,8 @@ void writeImage(RawlogWriter& out, const LogImportOptions& o, const UserLogs& u,
 	obs->cameraParams.nrows = static_cast<uint32_t>(u.image_height);
 	char name[64];
 	std::snprintf(name, sizeof name, "%s_%06zu", o.omni_label.c_str(), i);
-	obs->image = out.externalImageCopy(u.images[i].file, name + fs::path(u.images[i].file).extension().string());
+	obs->image = out.externalImageCopy(u.images[i].file, name + fs::path(u.images[i].file).extension().string(),
+									   u.images[i].checked_state);
 	out.write(*obs);
 }
 

@@ -285,7 +285,16 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	if (!fs::exists(status) && fs::is_symlink(p, ec))
 		throw std::runtime_error("the output '" + output + "' is a symbolic link to '" + fs::read_symlink(p, ec).string() +
 								 "', which does not exist (remove the link, or give another output)");
-	if (!fs::exists(status)) return;
+	if (!fs::exists(status))
+	{
+		// Moved aside by a killed run of another program, it stands for that program's output still.
+		if (const std::string old = kind == OutputKind::Folder && !force ? halfReplaced(output) : "";
+			!old.empty() && !isOutputFolderOf(old, program))
+			throw std::runtime_error("'" + output + "' is missing: a run that was replacing it was killed, leaving the " +
+									 "old one in '" + old + "', which " + program + " did not write (run the program " +
+									 "that wrote it again, or give another output)");
+		return;
+	}
 	const std::string hint = force ? "" : " (remove it, or give another output)";
 	if (kind == OutputKind::Folder)
 	{

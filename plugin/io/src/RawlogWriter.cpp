@@ -161,7 +161,8 @@ void RawlogWriter::startImages()
 	has_images_ = true;
 }
 
-mrpt::img::CImage RawlogWriter::externalImageCopy(const std::string& source, const std::string& name)
+mrpt::img::CImage RawlogWriter::externalImageCopy(const std::string& source, const std::string& name,
+												  const std::string& checked_state)
 {
 	startImages();
 	listOutputFile(tmp_images_, name);  // before it is written: a killed run's list holds it
@@ -173,6 +174,10 @@ mrpt::img::CImage RawlogWriter::externalImageCopy(const std::string& source, con
 								 source + "'): " + ec.message() + (ec.value() == EIO || ec.value() == EFBIG || ec.value() == ENOSPC
 																	   ? " (is the disk full?)"
 																	   : ""));
+	// After the copy: changed before or while it was copied, what went in is not what was checked.
+	if (fileStateOf(source) != checked_state)
+		throw std::runtime_error("image '" + source + "' changed after it was checked (a run wrote it again " +
+								 "meanwhile): run this again");
 	mrpt::img::CImage img;
 	img.setExternalStorage(name);
 	return img;

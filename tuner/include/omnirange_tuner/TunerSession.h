@@ -120,11 +120,18 @@ class TunerSession
 	RawlogTrainingResult train(const std::string& histogram, TrainingParams training = {},
 							   const std::function<void(std::size_t objects_read)>& progress = {});
 	/** Writes every [section] key with its current value into `ini` (the
-	 * session's own by default), keeping the file's comments and other sections. */
+	 * session's own by default), keeping the file's comments and other sections.
+	 * Checks requireSaveAllowed() first: the files may have moved since. */
 	void saveIni(const std::string& ini = "");
+	/** Throws std::runtime_error, one line, when `ini` may not be saved into:
+	 * what is read (the rawlog, the histogram, the bases the ini had when it
+	 * was read, through links), not an ini, or the session's own ini gone
+	 * (moved or removed: a new file would hold none of its other keys). */
+	void requireSaveAllowed(const std::string& ini) const;
 
    private:
 	void checkImages();
+	std::vector<std::string> bases_;  ///< the ini's bases when it was read: never saved into
 
 	SessionOptions o_;
 	std::vector<Frame> frames_;

@@ -30,6 +30,7 @@ struct TimedImage
 {
 	double time{0};  ///< [s]
 	std::string file;
+	std::string checked_state;  ///< fileStateOf() the file when it was checked: copied only as it was
 };
 struct LaserRow
 {

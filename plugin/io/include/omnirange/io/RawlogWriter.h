@@ -52,8 +52,11 @@ class RawlogWriter
 		const cv::Mat& bgr, const std::string& file_name, int jpeg_quality = 90);
 	/** Copies the image file `source` byte for byte (a camera's JPEG stays
 	 * the camera's) as `file_name` into the images folder and returns a
-	 * CImage stored externally under that name. */
-	mrpt::img::CImage externalImageCopy(const std::string& source, const std::string& file_name);
+	 * CImage stored externally under that name. `checked_state`: the
+	 * source's fileStateOf() when it was checked; a source changed since
+	 * (written again meanwhile) throws rather than be copied unchecked. */
+	mrpt::img::CImage externalImageCopy(const std::string& source, const std::string& file_name,
+										const std::string& checked_state);
 	/** Puts every file of an existing images folder into this rawlog's, each
 	 * a hard link (a copy across file systems): a rawlog that adds
 	 * observations to another (a scan) keeps the images it was made from,

@@ -19,6 +19,9 @@ struct MirrorRim
 	double radius{0};  ///< [px] mean of the fitted ellipse's half axes
 	double ellipticity{0};  ///< [-] 1 - minor / major axis: large means a tilted camera or a wrong fit
 	int image_width{0}, image_height{0};  ///< [px] of the images it was found in
+	/** [px] the farthest any one image's own disc centre is from (cx, cy):
+	 * large when the camera or the mirror moved between the images (0 for one image). */
+	double centre_spread{0};
 };
 
 /** Throws std::runtime_error naming the file if an image cannot be read or
