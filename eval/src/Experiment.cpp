@@ -202,6 +202,7 @@ void Experiment::train()
 	if (c_.learn) return learn(o);
 	const RawlogTrainingResult trained = trainFromRawlog(c_.rangefinder, o);
 	trained.model.save(histogram_);
+	for (const auto& [path, image] : figureFiles(trained, o.figures_prefix)) writeImageAtomically(path, image);
 	histogram_data_ = trained.model;
 	r_.training_pairs = trained.used;
 }
@@ -229,7 +230,8 @@ void Experiment::learn(const RawlogTrainingOptions& o)
 	// The figures of paper Fig. 1, from the first training pair.
 	RawlogTrainingOptions one = o;
 	one.max_frames = 1;
-	trainFromRawlog(c_.rangefinder, one);
+	for (const auto& [path, image] : figureFiles(trainFromRawlog(c_.rangefinder, one), o.figures_prefix))
+		writeImageAtomically(path, image);
 }
 
 // 3. The omnicam scans.

@@ -2,6 +2,7 @@
 // on the factory sample, each result checked against what the sample holds;
 // the command-line parsing fills the same options.
 #include <omnirange_apps/AccuracyApp.h>
+#include <omnirange_eval/TruthComparison.h>
 #include <omnirange_apps/CalibrateApp.h>
 #include <omnirange_apps/CommandLine.h>
 #include <omnirange_apps/ScanApp.h>
@@ -116,6 +117,11 @@ TEST(AppClasses, TrainScanAndAccuracyOfTheFactorySample)
 	// Within the paper's worst Table II figure (0.1375 m) on these 20 frames.
 	EXPECT_LT(acc.stats.meanAbs(), 0.1375);
 	for (const std::string f : {"_pairs.csv", "_histogram.png", "_table.md"}) EXPECT_TRUE(fs::exists(a.output + f)) << f;
+	// Run again on a log without the truth: an earlier run's truth table is not left beside the new files.
+	std::ofstream(a.output + "_truth.md") << eval::kTruthTableBegins << " an earlier run's |\n";
+	a.accuracy.truth_label = "NOSUCH";
+	EXPECT_EQ(AccuracyApp(a).run().truth.frames, 0);
+	EXPECT_FALSE(fs::exists(a.output + "_truth.md"));
 }
 
 TEST(AppClasses, ScanWarnsWhenTheRobotsBodyIsInsideTheScanCircle)
@@ -366,6 +372,30 @@ TEST(AppClasses, CommandLinesFillTheOptions)
 	{
 		EXPECT_EQ(e.code, 2);
 	}
+}
+
+TEST(AppClasses, ATrainingThatFailsLeavesTheOldHistogramAndItsFiguresAsTheyWere)
+{
+	// The figures are of an early pair; an image cut later ends the run: the figures are not replaced without the histogram.
+	const std::string dir = workDir("figures_all_or_none");
+	fs::copy_file(kSample, dir + "/log.rawlog");
+	fs::copy(test::kSource + "/rawlogs/factory-sample_Images", dir + "/log_Images");
+	TrainApp::Options o;
+	o.ini = kIni;
+	o.output = dir + "/f.hist";
+	o.training.input = dir + "/log.rawlog";
+	o.training.figures_prefix = dir + "/fig";
+	o.verbosity = mrpt::system::LVL_ERROR;
+	TrainApp(o).run();
+	for (const std::string f : {"_birdseye.png", "_laser.png", "_fused.png"}) ASSERT_TRUE(fs::exists(o.training.figures_prefix + f)) << f;
+	const std::string old_fig = test::readText(o.training.figures_prefix + "_fused.png"), old_hist = test::readText(o.output);
+	const std::string cut = dir + "/log_Images/factory-sample_OMNICAM_000010.jpg";
+	const std::string bytes = test::readText(cut);
+	std::ofstream(cut, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() / 2);
+	o.training.figures_frame = 1;  // other figures than the ones there
+	EXPECT_THROW(TrainApp(o).run(), std::runtime_error);
+	EXPECT_EQ(test::readText(o.training.figures_prefix + "_fused.png"), old_fig);
+	EXPECT_EQ(test::readText(o.output), old_hist);
 }
 
 TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)

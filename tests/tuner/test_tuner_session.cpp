@@ -336,7 +336,7 @@ TEST(TunerSession, SaveChecksTheIniAgainWhenItIsSavedNotOnlyWhenTheWindowOpens)
 	};
 	// The ini moved away meanwhile: a new file would hold the threshold and none of its other keys or its base.
 	fs::rename(o.ini, dir + "/moved.ini");
-	EXPECT_NE(refusal().find("was moved or removed since it was read"), std::string::npos);
+	EXPECT_NE(refusal().find("was moved or removed since the window opened"), std::string::npos);
 	EXPECT_FALSE(fs::exists(o.ini));
 	// Put back as a link to its base: the base, which other inis read, is not written through it.
 	fs::create_symlink("experiment-base.ini", o.ini);
@@ -346,6 +346,14 @@ TEST(TunerSession, SaveChecksTheIniAgainWhenItIsSavedNotOnlyWhenTheWindowOpens)
 	fs::rename(dir + "/moved.ini", o.ini);
 	EXPECT_EQ(refusal(), "");
 	EXPECT_DOUBLE_EQ(RangefinderParams::loadFromFile(o.ini, "rangefinder").threshold, 0.0123);
+	// Another ini to save into (--save-to), there when the window opened: the same once it is gone.
+	fs::copy_file(o.ini, dir + "/other.ini");
+	s.requireSaveAllowed(dir + "/other.ini");
+	fs::remove(dir + "/other.ini");
+	EXPECT_THROW(s.saveIni(dir + "/other.ini"), std::runtime_error);
+	EXPECT_FALSE(fs::exists(dir + "/other.ini"));
+	s.saveIni(dir + "/new.ini");  // one that was never there is made
+	EXPECT_TRUE(fs::exists(dir + "/new.ini"));
 }
 
 TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOff)

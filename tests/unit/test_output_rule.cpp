@@ -903,6 +903,26 @@ TEST(OutputRule, AnotherProgramsFolderAKilledRunMovedAsideIsStillNotOursToReplac
 	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/d.rawlog", "omnirange-import", {}, true));
 }
 
+TEST(OutputRule, AFileAnotherProgramsFolderListsIsNotReplacedByThisOne)
+{
+	// A report's histogram and dataset replaced by train or sim: its tables and figures would be of other data.
+	const std::string d = fresh("part_of_report");
+	fs::create_directories(d + "/rep/dataset");
+	write(d + "/rep/" + kOutputMarker, "omnirange-experiment\nrun 999985\nfile floor.hist\nfile dataset/d.rawlog\n");
+	write(d + "/rep/floor.hist", "");
+	EXPECT_NE(refusal(d + "/rep/floor.hist", OutputKind::Histogram).find("is part of '" + d + "/rep', which omnirange-experiment wrote"),
+			  std::string::npos)
+		<< refusal(d + "/rep/floor.hist", OutputKind::Histogram);
+	EXPECT_NE(refusal(d + "/rep/dataset", OutputKind::Folder).find("is part of"), std::string::npos);
+	EXPECT_THROW(requireRawlogOutputAllowed(d + "/rep/dataset/d.rawlog", "omnirange-sim", {}, false), std::runtime_error);
+	EXPECT_EQ(refusal(d + "/rep/notes.hist", OutputKind::Histogram), "");  // not the report's: a new file of the user's
+	EXPECT_EQ(refusal(d + "/rep/floor.hist", OutputKind::Histogram, {}, true), "");  // --force: the user means it
+	// The program that made the folder fills it; so does a run that made it (an experiment's stages).
+	EXPECT_NO_THROW(requireNotAnothersPart(d + "/rep/floor.hist", "omnirange-experiment"));
+	write(d + "/rep/" + kOutputMarker, "omnirange-experiment\nrun " + std::to_string(::getpid()) + "\nfile floor.hist\n");
+	EXPECT_NO_THROW(requireNotAnothersPart(d + "/rep/floor.hist", "omnirange-train"));
+}
+
 TEST(OutputRule, AnImageWrittenAgainAfterItWasCheckedIsNotCopiedIntoAnImport)
 {
 	// An import checks every image, then copies each: a simulation writing the source folder meanwhile would mix two datasets.

@@ -252,14 +252,16 @@ RawlogTrainingResult TunerSession::train(const std::string& histogram, TrainingP
 	return r;
 }
 
-void TunerSession::requireSaveAllowed(const std::string& ini) const
+void TunerSession::requireSaveAllowed(const std::string& ini)
 {
 	namespace fs = std::filesystem;
 	std::error_code ec;
-	if (fs::absolute(ini, ec).lexically_normal() == fs::absolute(o_.ini, ec).lexically_normal() &&
-		!fs::exists(ini, ec))
-		throw std::runtime_error("'" + ini + "' was moved or removed since it was read: put it back, or save into " +
-								 "another ini (--save-to)");
+	// An ini there when the window opened (the -c one, or --save-to's) and gone now: moved or removed meanwhile.
+	const std::string key = fs::absolute(ini, ec).lexically_normal().string();
+	existed_.emplace(key, fs::exists(ini, ec) || key == fs::absolute(o_.ini, ec).lexically_normal().string());
+	if (existed_.at(key) && !fs::exists(ini, ec))
+		throw std::runtime_error("'" + ini + "' was moved or removed since the window opened: a new one would hold " +
+								 "none of its other keys; put it back, then save");
 	std::vector<std::string> inputs{o_.rawlog, o_.histogram};
 	inputs.insert(inputs.end(), bases_.begin(), bases_.end());
 	requireOutputAllowed(ini, OutputKind::Ini, "omnirange-tuner", inputs);

@@ -65,6 +65,8 @@ eval::AccuracyResult AccuracyApp::run()
 	std::vector<StagedFile*> files{&pairs, &histogram, &table_md};
 	if (truth) files.push_back(&*truth);
 	commitAll(files);
+	// No truth in this rawlog: an earlier run's table beside these files would read as theirs (checked ours above).
+	if (!truth) std::filesystem::remove(o_.output + "_truth.md");
 	MRPT_LOG_INFO_STREAM("\n" << table);
 	if (truth) MRPT_LOG_INFO_STREAM("against the truth:\n" << truth_table);
 	return r;

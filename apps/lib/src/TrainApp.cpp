@@ -92,7 +92,16 @@ RawlogTrainingResult TrainApp::run()
 	if (!o_.learn_ini.empty()) return learn(params);
 	const RawlogTrainingResult r =
 		trainFromRawlog(params, o_.training, progressAt(o_.verbosity, progress));
-	r.model.save(o_.output);
+	// The histogram and its figures all or none.
+	std::vector<std::unique_ptr<StagedFile>> files;
+	files.push_back(std::make_unique<StagedFile>(o_.output, [&](const std::string& tmp) { r.model.save(tmp); }));
+	if (!fig.empty())
+		for (const auto& [path, image] : figureFiles(r, fig))
+		{
+			const std::string bytes = encodedImage(path, image);
+			files.push_back(std::make_unique<StagedFile>(path, writerOf(path, bytes)));
+		}
+	commitAll(pointersTo(files));
 	MRPT_LOG_INFO_FMT("trained on %d image/scan pairs (of %d), %zu floor and %zu obstacle pixels -> %s", r.used,
 					  r.pairs, r.pixels, r.obstacle_pixels, o_.output.c_str());
 	return r;

@@ -450,9 +450,7 @@ std::function<void(const std::string&)> writerOf(const std::string& path, const 
 	};
 }
 
-namespace
-{
-std::string encoded(const std::string& path, const cv::Mat& image)
+std::string encodedImage(const std::string& path, const cv::Mat& image)
 {
 	const auto dot = path.rfind('.');
 	std::vector<uchar> buf;
@@ -460,7 +458,6 @@ std::string encoded(const std::string& path, const cv::Mat& image)
 		throw std::runtime_error("cannot encode image '" + path + "'");
 	return std::string(buf.begin(), buf.end());
 }
-}  // namespace
 
 void writeFileAtomically(const std::string& path, const std::string& bytes)
 {
@@ -476,12 +473,12 @@ void updateFileAtomically(const std::string& path, const std::string& bytes, con
 
 void writeImageAtomically(const std::string& path, const cv::Mat& image)
 {
-	writeFileAtomically(path, encoded(path, image));
+	writeFileAtomically(path, encodedImage(path, image));
 }
 
 StagedFile stageImage(const std::string& path, const cv::Mat& image)
 {
-	const std::string bytes = encoded(path, image);
+	const std::string bytes = encodedImage(path, image);
 	return StagedFile(path, writerOf(path, bytes));
 }
 }  // namespace omnirange

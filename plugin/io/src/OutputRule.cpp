@@ -249,6 +249,29 @@ std::set<std::string> listedIn(const std::string& dir, bool& has_list)
 }
 }  // namespace
 
+void requireNotAnothersPart(const std::string& output, const std::string& program)
+{
+	std::error_code ec;
+	const fs::path out = fs::absolute(outputPath(output), ec).lexically_normal();
+	for (fs::path dir = out.parent_path(); dir.has_relative_path(); dir = dir.parent_path())
+	{
+		if (!fs::exists(dir / kOutputMarker, ec)) continue;
+		std::ifstream marker(dir / kOutputMarker);
+		std::string writer;
+		std::getline(marker, writer);
+		bool this_run = false;
+		for (std::string line; std::getline(marker, line);) this_run = this_run || line == "run " + std::to_string(::getpid());
+		if (this_run || trimmed(writer) == program) continue;
+		// What that folder lists as its own, or a folder holding some of it: replaced, the rest would no longer match.
+		bool has_list = false;
+		const std::string rel = out.lexically_relative(dir).string();
+		for (const auto& own : listedIn(dir.string(), has_list))
+			if (own == rel || own.rfind(rel + "/", 0) == 0)
+				throw std::runtime_error("'" + output + "' is part of '" + dir.string() + "', which " + trimmed(writer) +
+										 " wrote, not " + program + " (give another output)");
+	}
+}
+
 void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, const std::string& program,
 						  const std::vector<std::string>& inputs, bool force, const std::string& begins_with)
 {
@@ -269,6 +292,7 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 		walked /= part;
 	}
 	requireApartFromInputs(output, kind, inputs);
+	if (!force && !program.empty()) requireNotAnothersPart(output, program);
 	// A file output's temporaries that killed runs left (a folder's are its
 	// writer's to recover: StagedFolder, RawlogWriter).
 	if (kind != OutputKind::Folder) recoverLeftoversOf(output, kind);

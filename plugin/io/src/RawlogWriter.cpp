@@ -98,6 +98,7 @@ void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& pr
 								const std::vector<std::string>& inputs, bool force)
 {
 	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
+	if (!force) requireNotAnothersPart(rawlog, program);
 	// The images go beside the file written (through a link, the file it names).
 	const std::string file = replacedFileOf(outputPath(rawlog)), images = imagesDirFor(file);
 	// Only a scan writes such a link: another program's output does not replace it unasked.

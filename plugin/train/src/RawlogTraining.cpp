@@ -43,12 +43,8 @@ RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTr
 			const TrainingFrame f = trainer.add(decodeImage(*image, rp.camera), *laser);
 			r.pixels += f.pixels;
 			r.obstacle_pixels += f.obstacle_pixels;
-			if (!o.figures_prefix.empty() && r.used == o.figures_frame)
-			{
-				writeImageAtomically(o.figures_prefix + "_birdseye.png", f.birds_eye);
-				writeImageAtomically(o.figures_prefix + "_laser.png", f.laser_free);
-				writeImageAtomically(o.figures_prefix + "_fused.png", f.fused);
-			}
+			// Kept, not written: a run that fails later (a cut image) must not have replaced them.
+			if (!o.figures_prefix.empty() && r.used == o.figures_frame) r.figures = f;
 			++r.used;
 		});
 	loop.run(progress);
@@ -62,6 +58,13 @@ RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTr
 	if (trainer.histogram().empty()) throw std::runtime_error("no free-floor pixel was found to train on");
 	r.model = trainer.model();
 	return r;
+}
+
+std::vector<std::pair<std::string, cv::Mat>> figureFiles(const RawlogTrainingResult& r, const std::string& prefix)
+{
+	return {{prefix + "_birdseye.png", r.figures.birds_eye},
+			{prefix + "_laser.png", r.figures.laser_free},
+			{prefix + "_fused.png", r.figures.fused}};
 }
 
 }  // namespace omnirange

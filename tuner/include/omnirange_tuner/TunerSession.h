@@ -17,6 +17,7 @@
 #include <opencv2/core.hpp>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -125,13 +126,15 @@ class TunerSession
 	void saveIni(const std::string& ini = "");
 	/** Throws std::runtime_error, one line, when `ini` may not be saved into:
 	 * what is read (the rawlog, the histogram, the bases the ini had when it
-	 * was read, through links), not an ini, or the session's own ini gone
-	 * (moved or removed: a new file would hold none of its other keys). */
-	void requireSaveAllowed(const std::string& ini) const;
+	 * was read, through links), not an ini, or an ini gone since it was
+	 * first checked or read (moved or removed: a new file would hold none of
+	 * its other keys). */
+	void requireSaveAllowed(const std::string& ini);
 
    private:
 	void checkImages();
 	std::vector<std::string> bases_;  ///< the ini's bases when it was read: never saved into
+	std::map<std::string, bool> existed_;  ///< whether each ini saved into was there when first checked
 
 	SessionOptions o_;
 	std::vector<Frame> frames_;

@@ -198,6 +198,8 @@ std::function<void(const std::string&)> writerOf(const std::string& path, const 
 /** Encodes `image` in the format its path's extension names (.png, .jpg)
  * and writes it atomically. */
 void writeImageAtomically(const std::string& path, const cv::Mat& image);
+/** `image` encoded as its path's extension names (.png, .jpg). */
+std::string encodedImage(const std::string& path, const cv::Mat& image);
 /** `image` encoded as its path's extension names, staged (StagedFile). */
 StagedFile stageImage(const std::string& path, const cv::Mat& image);
 

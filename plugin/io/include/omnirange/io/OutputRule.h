@@ -60,6 +60,13 @@ void requireDistinctOutputs(const std::vector<std::string>& paths);
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force = false);
 
+/** Throws std::runtime_error, one line, when `output` is (or holds) a file
+ * that a folder around it, marked by another program than `program`, lists
+ * as its own (a report's histogram, its dataset): replacing it would leave
+ * that folder's other files and figures about other data. A folder this run
+ * made is its own to fill. */
+void requireNotAnothersPart(const std::string& output, const std::string& program);
+
 /** Appends `line` to the marker of the folder `dir` (what its run, its
  * files, its rawlog or its moving aside were); throws naming the marker. */
 void noteInMarker(const std::string& dir, const std::string& line);

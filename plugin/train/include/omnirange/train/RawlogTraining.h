@@ -9,6 +9,8 @@
 #include <omnirange/train/HistogramTrainer.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace omnirange
 {
@@ -25,8 +27,8 @@ struct RawlogTrainingOptions
 	int max_frames{0};  ///< use at most this many pairs (0: all)
 	int until{0};  ///< use only pairs before this one (0: to the end): train on a route's first part
 	TrainingParams training;
-	/** If not empty: write PREFIX_birdseye.png, PREFIX_laser.png and
-	 * PREFIX_fused.png (paper Fig. 1) for the used pair `figures_frame`. */
+	/** If not empty: keep the figures of the used pair `figures_frame`
+	 * (RawlogTrainingResult::figures), for figureFiles() PREFIX_*.png. */
 	std::string figures_prefix;
 	int figures_frame{0};
 
@@ -43,7 +45,13 @@ struct RawlogTrainingResult
 	int used{0};  ///< pairs trained on
 	std::size_t pixels{0};  ///< floor pixels counted
 	std::size_t obstacle_pixels{0};  ///< obstacle pixels counted
+	/** The pair figures_frame's (paper Fig. 1), when figures_prefix is set:
+	 * written by the caller with the histogram, all or none. */
+	TrainingFrame figures;
 };
+
+/** The figures' files: PREFIX_birdseye.png, PREFIX_laser.png and PREFIX_fused.png with their images. */
+std::vector<std::pair<std::string, cv::Mat>> figureFiles(const RawlogTrainingResult& r, const std::string& prefix);
 
 /** The camera, its pose and the base come from `params`. Throws
  * std::runtime_error naming the file on bad input, or when no image had a
