@@ -917,10 +917,27 @@ TEST(OutputRule, AFileAnotherProgramsFolderListsIsNotReplacedByThisOne)
 	EXPECT_THROW(requireRawlogOutputAllowed(d + "/rep/dataset/d.rawlog", "omnirange-sim", {}, false), std::runtime_error);
 	EXPECT_EQ(refusal(d + "/rep/notes.hist", OutputKind::Histogram), "");  // not the report's: a new file of the user's
 	EXPECT_EQ(refusal(d + "/rep/floor.hist", OutputKind::Histogram, {}, true), "");  // --force: the user means it
-	// The program that made the folder fills it; so does a run that made it (an experiment's stages).
+	// Through a link to the file, a link to a folder in it, or a link and back up: where it is written counts.
+	fs::create_symlink("rep/floor.hist", d + "/link.hist");
+	fs::create_directory_symlink("rep/dataset", d + "/D");
+	EXPECT_NE(refusal(d + "/link.hist", OutputKind::Histogram).find("is part of"), std::string::npos);
+	EXPECT_THROW(requireRawlogOutputAllowed(d + "/D/d.rawlog", "omnirange-sim", {}, false), std::runtime_error);
+	EXPECT_NE(refusal(d + "/D/../floor.hist", OutputKind::Histogram).find("is part of"), std::string::npos);
+	// The program that made the folder fills it; so does the run filling it as its staging folder (an
+	// experiment's stages), known by that name: a PID alone is every container's PID 1.
 	EXPECT_NO_THROW(requireNotAnothersPart(d + "/rep/floor.hist", "omnirange-experiment"));
-	write(d + "/rep/" + kOutputMarker, "omnirange-experiment\nrun " + std::to_string(::getpid()) + "\nfile floor.hist\n");
-	EXPECT_NO_THROW(requireNotAnothersPart(d + "/rep/floor.hist", "omnirange-train"));
+	const std::string pid = std::to_string(::getpid());
+	write(d + "/rep/" + kOutputMarker, "omnirange-experiment\nrun " + pid + "\nfile floor.hist\n");
+	EXPECT_THROW(requireNotAnothersPart(d + "/rep/floor.hist", "omnirange-train"), std::runtime_error);
+	fs::create_directory(d + "/rep.staging-" + pid);
+	write(d + "/rep.staging-" + pid + "/" + kOutputMarker, "omnirange-experiment\nrun " + pid + "\nfile floor.hist\n");
+	EXPECT_NO_THROW(requireNotAnothersPart(d + "/rep.staging-" + pid + "/floor.hist", "omnirange-train"));
+	// A marker that is a FIFO (or a link to a device) is no marker: read, it would block or never end.
+	fs::create_directory(d + "/fifo");
+	ASSERT_EQ(::mkfifo((d + "/fifo/" + kOutputMarker).c_str(), 0600), 0);
+	EXPECT_TRUE(markerLines(d + "/fifo").empty());
+	EXPECT_EQ(refusal(d + "/fifo/x.hist", OutputKind::Histogram), "");
+	EXPECT_THROW(noteInMarker(d + "/fifo", "file x.hist"), std::runtime_error);
 }
 
 TEST(OutputRule, AnImageWrittenAgainAfterItWasCheckedIsNotCopiedIntoAnImport)

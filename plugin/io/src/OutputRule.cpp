@@ -41,6 +41,19 @@ std::string outputPath(const std::string& path)
 	return p;
 }
 
+std::vector<std::string> markerLines(const std::string& dir)
+{
+	// Only a file of ours: a FIFO there would block, a link to /dev/zero never end.
+	constexpr std::uintmax_t kLargestMarker = 64u << 20;
+	const fs::path marker = fs::path(dir) / kOutputMarker;
+	std::error_code ec;
+	if (!fs::is_regular_file(fs::symlink_status(marker, ec)) || fs::file_size(marker, ec) > kLargestMarker) return {};
+	std::ifstream f(marker);
+	std::vector<std::string> lines;
+	for (std::string l; std::getline(f, l);) lines.push_back(l);
+	return lines;
+}
+
 namespace
 {
 /** A marker's line while its run writes files it has not listed (fillListed()). */
@@ -240,10 +253,9 @@ void requireNameFits(const std::string& output)
 
 std::set<std::string> listedIn(const std::string& dir, bool& has_list)
 {
-	std::ifstream f(fs::path(dir) / kOutputMarker);
 	std::set<std::string> listed;
 	has_list = false;
-	for (std::string line; std::getline(f, line);)
+	for (const auto& line : markerLines(dir))
 		if (line.rfind("file ", 0) == 0) listed.insert(line.substr(5)), has_list = true;
 	return listed;
 }
@@ -252,22 +264,27 @@ std::set<std::string> listedIn(const std::string& dir, bool& has_list)
 void requireNotAnothersPart(const std::string& output, const std::string& program)
 {
 	std::error_code ec;
-	const fs::path out = fs::absolute(outputPath(output), ec).lexically_normal();
+	// Where it is written: through links (to a report's file, or to a folder inside one) and '..' as the system goes.
+	const fs::path out = fs::weakly_canonical(fs::absolute(outputPath(output), ec), ec);
 	for (fs::path dir = out.parent_path(); dir.has_relative_path(); dir = dir.parent_path())
 	{
-		if (!fs::exists(dir / kOutputMarker, ec)) continue;
-		std::ifstream marker(dir / kOutputMarker);
-		std::string writer;
-		std::getline(marker, writer);
-		bool this_run = false;
-		for (std::string line; std::getline(marker, line);) this_run = this_run || line == "run " + std::to_string(::getpid());
-		if (this_run || trimmed(writer) == program) continue;
+		const auto lines = markerLines(dir.string());
+		if (lines.empty()) continue;
+		const std::string writer = trimmed(lines.front());
+		// A folder this run is filling (an experiment's stages): its staging folder, by its name, not by a PID
+		// alone (every run in a container of its own is PID 1).
+		const std::string staging = ".staging-" + std::to_string(::getpid());
+		const std::string name = dir.filename().string();
+		const bool this_run = name.size() > staging.size() &&
+							  name.compare(name.size() - staging.size(), staging.size(), staging) == 0 &&
+							  std::find(lines.begin(), lines.end(), "run " + std::to_string(::getpid())) != lines.end();
+		if (this_run || writer == program) continue;
 		// What that folder lists as its own, or a folder holding some of it: replaced, the rest would no longer match.
 		bool has_list = false;
 		const std::string rel = out.lexically_relative(dir).string();
 		for (const auto& own : listedIn(dir.string(), has_list))
 			if (own == rel || own.rfind(rel + "/", 0) == 0)
-				throw std::runtime_error("'" + output + "' is part of '" + dir.string() + "', which " + trimmed(writer) +
+				throw std::runtime_error("'" + output + "' is part of '" + dir.string() + "', which " + writer +
 										 " wrote, not " + program + " (give another output)");
 	}
 }
@@ -328,10 +345,9 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 		if (!isOutputFolderOf(output, program))
 		{
 			// Another program's output is not the user's to remove: say whose it is, and advise no removal.
-			std::ifstream marker(p / kOutputMarker);
-			std::string writer;
-			if (marker && std::getline(marker, writer) && !trimmed(writer).empty())
-				throw std::runtime_error("'" + output + "' is what " + trimmed(writer) + " wrote, not " + program +
+			const auto lines = markerLines(output);
+			if (!lines.empty() && !trimmed(lines.front()).empty())
+				throw std::runtime_error("'" + output + "' is what " + trimmed(lines.front()) + " wrote, not " + program +
 										 " (give another output)");
 			throw std::runtime_error("'" + output + "' is a folder " + program + " did not write (no " + kOutputMarker +
 									 " naming it)" + hint);
@@ -426,10 +442,8 @@ bool markerSays(const fs::path& p, const std::string& line)
 {
 	std::error_code ec;
 	if (fs::is_symlink(p, ec) || !fs::is_directory(p, ec)) return false;
-	std::ifstream f(p / kOutputMarker);
-	for (std::string l; std::getline(f, l);)
-		if (l == line) return true;
-	return false;
+	const auto lines = markerLines(p.string());
+	return std::find(lines.begin(), lines.end(), line) != lines.end();
 }
 
 /** `p` is a folder run `pid` made (markOutputFolder()). */
@@ -673,8 +687,9 @@ void noteInMarker(const std::string& dir, const std::string& line)
 								 dir + "': a name with a line break");
 	std::error_code ec;
 	// Written through, a link would carry the line into a file that is not this folder's.
-	if (fs::is_symlink(fs::path(dir) / kOutputMarker, ec))
-		throw std::runtime_error("the marker '" + (fs::path(dir) / kOutputMarker).string() + "' is a link, not a file of ours");
+	const fs::path marker = fs::path(dir) / kOutputMarker;
+	if (fs::is_symlink(marker, ec) || (fs::exists(fs::symlink_status(marker, ec)) && !fs::is_regular_file(marker, ec)))
+		throw std::runtime_error("the marker '" + marker.string() + "' is a link or not a file, not a marker of ours");
 	errno = 0;
 	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
 	f << line << "\n";
@@ -684,18 +699,15 @@ void noteInMarker(const std::string& dir, const std::string& line)
 void unnoteInMarker(const std::string& dir, const std::string& line)
 {
 	const std::string marker = (fs::path(dir) / kOutputMarker).string();
-	std::ifstream in(marker);
 	std::string kept;
-	for (std::string l; std::getline(in, l);)
+	for (const auto& l : markerLines(dir))
 		if (l != line) kept += l + "\n";
-	in.close();
 	writeFileAtomically(marker, kept);
 }
 
 std::string markerValue(const std::string& dir, const std::string& key)
 {
-	std::ifstream f(fs::path(dir) / kOutputMarker);
-	for (std::string l; std::getline(f, l);)
+	for (const auto& l : markerLines(dir))
 		if (l.rfind(key + " ", 0) == 0) return l.substr(key.size() + 1);
 	return "";
 }
@@ -770,9 +782,8 @@ void markOutputFolder(const std::string& dir, const std::string& program)
 
 bool isOutputFolderOf(const std::string& dir, const std::string& program)
 {
-	std::ifstream f(fs::path(dir) / kOutputMarker);
-	std::string name;
-	return f && std::getline(f, name) && trimmed(name) == program;
+	const auto lines = markerLines(dir);
+	return !lines.empty() && trimmed(lines.front()) == program;
 }
 
 bool isOfKind(const std::string& path, OutputKind kind)

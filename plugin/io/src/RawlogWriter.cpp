@@ -82,8 +82,7 @@ void requireImagesOf(const std::string& images, const std::string& rawlog)
 									 "' would give it other images (give the output another name)");
 	if (fs::is_symlink(images, ec) || !fs::is_directory(images, ec)) return;
 	// The rawlog the folder was written with, if it is of this name's stem (a copied folder names another).
-	std::ifstream f(fs::path(images) / kOutputMarker);
-	for (std::string line; std::getline(f, line);)
+	for (const auto& line : markerLines(images))
 		if (line.rfind("rawlog ", 0) == 0 && line.substr(7) != mine)
 		{
 			const fs::path owner = dir / line.substr(7);

@@ -67,6 +67,11 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
  * made is its own to fill. */
 void requireNotAnothersPart(const std::string& output, const std::string& program);
 
+/** The lines of the marker in the folder `dir`: none when there is no
+ * marker, or what is there is not a plain file (a FIFO, a link) or is
+ * larger than any marker of ours. Every reader of markers reads them so. */
+std::vector<std::string> markerLines(const std::string& dir);
+
 /** Appends `line` to the marker of the folder `dir` (what its run, its
  * files, its rawlog or its moving aside were); throws naming the marker. */
 void noteInMarker(const std::string& dir, const std::string& line);
