@@ -530,6 +530,12 @@ TEST(OutputRule, AWorkingFolderPastPathMaxIsNoReasonToRefuse)
 	EXPECT_EQ(refusal(d + "/out.rawlog", OutputKind::Rawlog, {"in.rawlog"}), "");
 	EXPECT_NE(refusal("in.rawlog", OutputKind::Rawlog, {"in.rawlog"}), "");
 	fs::remove("in.rawlog");
+	// Two new outputs are two places; a report's listed file there is still the report's.
+	EXPECT_NO_THROW(requireOutputsAllowed({{"a.csv", OutputKind::Text}, {"b.csv", OutputKind::Text}}, "omnirange-test", {}));
+	fs::create_directory("R");
+	write("R/" + std::string(kOutputMarker), "omnirange-experiment\nrun 999984\nfile floor.hist\n");
+	EXPECT_THROW(requireNotAnothersPart("R/floor.hist", "omnirange-train"), std::runtime_error);
+	fs::remove_all("R");
 	for (int i = 0; i < 22; ++i) fs::current_path(".."), fs::remove(level);  // no path reaches them whole
 	fs::current_path(back);
 }

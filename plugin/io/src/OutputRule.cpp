@@ -131,6 +131,15 @@ fs::path asWritten(const std::string& path)
 	return out;
 }
 
+/** Where `path` is written: links and '..' resolved as the system goes; past PATH_MAX, where no
+ * path resolves, as written. */
+fs::path whereWritten(const std::string& path)
+{
+	std::error_code ec;
+	const fs::path real = fs::weakly_canonical(fs::absolute(path, ec), ec);
+	return ec ? asWritten(path) : real;
+}
+
 /** `inner` is `outer` or lies somewhere below it. */
 bool within(const fs::path& inner, const fs::path& outer)
 {
@@ -263,9 +272,10 @@ std::set<std::string> listedIn(const std::string& dir, bool& has_list)
 
 void requireNotAnothersPart(const std::string& output, const std::string& program)
 {
-	std::error_code ec;
-	// Where it is written: through links (to a report's file, or to a folder inside one) and '..' as the system goes.
-	const fs::path out = fs::weakly_canonical(fs::absolute(outputPath(output), ec), ec);
+	// Where it is written: through links (to a report's file, or to a folder inside one) and '..' as the system
+	// goes; past PATH_MAX no absolute path opens, so the folders around it are read as it was given, from here.
+	fs::path out = whereWritten(outputPath(output));
+	if (out.string().size() >= PATH_MAX) out = fs::path(outputPath(output)).lexically_normal();
 	for (fs::path dir = out.parent_path(); dir.has_relative_path(); dir = dir.parent_path())
 	{
 		const auto lines = markerLines(dir.string());
@@ -381,8 +391,7 @@ void requireDistinctOutputs(const std::vector<std::string>& paths)
 		{
 			const std::string a = outputPath(paths[i]), b = outputPath(paths[j]);
 			if (a.empty() || b.empty()) continue;
-			std::error_code ec;
-			const fs::path pa = fs::weakly_canonical(fs::absolute(a), ec), pb = fs::weakly_canonical(fs::absolute(b), ec);
+			const fs::path pa = whereWritten(a), pb = whereWritten(b);
 			if (same(pa, pb) || within(pa, pb) || within(pb, pa))
 				throw std::runtime_error("the outputs '" + paths[i] + "' and '" + paths[j] +
 										 "' are in the same place: one would replace the other");
