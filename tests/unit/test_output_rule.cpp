@@ -929,15 +929,16 @@ TEST(OutputRule, AFileAnotherProgramsFolderListsIsNotReplacedByThisOne)
 	EXPECT_NE(refusal(d + "/link.hist", OutputKind::Histogram).find("is part of"), std::string::npos);
 	EXPECT_THROW(requireRawlogOutputAllowed(d + "/D/d.rawlog", "omnirange-sim", {}, false), std::runtime_error);
 	EXPECT_NE(refusal(d + "/D/../floor.hist", OutputKind::Histogram).find("is part of"), std::string::npos);
-	// The program that made the folder fills it; so does the run filling it as its staging folder (an
-	// experiment's stages), known by that name: a PID alone is every container's PID 1.
+	// The program that made the folder fills it; so does the run filling it as its own staging folder (an
+	// experiment's stages), known as its temporary: a PID in a marker, or a name, is every container's PID 1's.
 	EXPECT_NO_THROW(requireNotAnothersPart(d + "/rep/floor.hist", "omnirange-experiment"));
-	const std::string pid = std::to_string(::getpid());
-	write(d + "/rep/" + kOutputMarker, "omnirange-experiment\nrun " + pid + "\nfile floor.hist\n");
-	EXPECT_THROW(requireNotAnothersPart(d + "/rep/floor.hist", "omnirange-train"), std::runtime_error);
-	fs::create_directory(d + "/rep.staging-" + pid);
-	write(d + "/rep.staging-" + pid + "/" + kOutputMarker, "omnirange-experiment\nrun " + pid + "\nfile floor.hist\n");
-	EXPECT_NO_THROW(requireNotAnothersPart(d + "/rep.staging-" + pid + "/floor.hist", "omnirange-train"));
+	const std::string pid = std::to_string(::getpid()), staging = d + "/rep.staging-" + pid;
+	fs::create_directory(staging);
+	write(staging + "/" + kOutputMarker, "omnirange-experiment\nrun " + pid + "\nfile floor.hist\n");
+	EXPECT_THROW(requireNotAnothersPart(staging + "/floor.hist", "omnirange-train"), std::runtime_error);
+	temporaries::add(staging);
+	EXPECT_NO_THROW(requireNotAnothersPart(staging + "/floor.hist", "omnirange-train"));
+	temporaries::forget(staging);
 	// A marker that is a FIFO (or a link to a device) is no marker: read, it would block or never end.
 	fs::create_directory(d + "/fifo");
 	ASSERT_EQ(::mkfifo((d + "/fifo/" + kOutputMarker).c_str(), 0600), 0);

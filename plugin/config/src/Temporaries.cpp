@@ -96,6 +96,15 @@ void forget(const std::string& path)
 	paths().erase(path);
 }
 
+bool holds(const std::string& path)
+{
+	const std::lock_guard<std::mutex> g(lock());
+	std::error_code ec;
+	for (const auto& p : paths())
+		if (std::filesystem::equivalent(p, path, ec)) return true;
+	return false;
+}
+
 void setChild(int pid) { child.store(pid); }
 
 void removeAtExit(const std::string& name)

@@ -281,14 +281,9 @@ void requireNotAnothersPart(const std::string& output, const std::string& progra
 		const auto lines = markerLines(dir.string());
 		if (lines.empty()) continue;
 		const std::string writer = trimmed(lines.front());
-		// A folder this run is filling (an experiment's stages): its staging folder, by its name, not by a PID
-		// alone (every run in a container of its own is PID 1).
-		const std::string staging = ".staging-" + std::to_string(::getpid());
-		const std::string name = dir.filename().string();
-		const bool this_run = name.size() > staging.size() &&
-							  name.compare(name.size() - staging.size(), staging.size(), staging) == 0 &&
-							  std::find(lines.begin(), lines.end(), "run " + std::to_string(::getpid())) != lines.end();
-		if (this_run || writer == program) continue;
+		// A folder this run is filling (an experiment's stages): one of its own temporaries, not a folder whose
+		// marker merely has this PID (every run in a container of its own is PID 1).
+		if (writer == program || temporaries::holds(dir.string())) continue;
 		// What that folder lists as its own, or a folder holding some of it: replaced, the rest would no longer match.
 		bool has_list = false;
 		const std::string rel = out.lexically_relative(dir).string();

@@ -10,6 +10,8 @@ namespace omnirange::temporaries
 /** Remembers `path` (a file or a folder) until forget(path). */
 void add(const std::string& path);
 void forget(const std::string& path);
+/** Whether `path` is one of this process's temporaries (a staging folder it is filling), by what it is. */
+bool holds(const std::string& path);
 /** The program a run has started and waits for (0: none): an interrupt
  * ends it first, so it writes nothing into a folder being removed. */
 void setChild(int pid);
