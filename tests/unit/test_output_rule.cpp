@@ -24,6 +24,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <fcntl.h>
 #include <linux/fs.h>
@@ -49,6 +50,15 @@ void writeRawlog(const std::string& path)
 }
 
 std::string read(const std::string& path) { return test::readText(path); }
+
+/** A rawlog of one 4x4 image of grey `value` in its images folder; `with_images` as RawlogWriter::commit() has it. */
+void writeOneImageLog(const std::string& rawlog, int value, const std::function<void()>& with_images = {})
+{
+	RawlogWriter w(rawlog, "omnirange-test");
+	w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
+	w.write(mrpt::obs::CObservationOdometry());
+	w.commit({}, with_images);
+}
 /** The inode of `path`, as a set's journal records a new file's. */
 unsigned long inodeNumber(const std::string& path)
 {
@@ -672,11 +682,8 @@ TEST(OutputRule, WhatBelongsWithARawlogGoesInAfterItsImagesAndBeforeIt)
 	// A simulation's true map: a run killed while it goes in must leave what readers refuse,
 	// never a whole-looking rawlog beside another run's true map.
 	const std::string d = fresh("with_images");
-	const auto writeLog = [&](int value, const std::function<void()>& with_images) {
-		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
-		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
-		w.write(mrpt::obs::CObservationOdometry());
-		w.commit({}, with_images);
+	const auto writeLog = [&](int value, const std::function<void()>& with_images = {}) {
+		writeOneImageLog(d + "/log.rawlog", value, with_images);
 	};
 	writeLog(1, [&] { write(d + "/log_truemap.txt", "first"); });
 	const std::string first_rawlog = read(d + "/log.rawlog");
@@ -739,11 +746,8 @@ TEST(OutputRule, ARawlogWhoseImagesAreReplacedWhileItIsReadEndsInAnError)
 {
 	// A scan reading a dataset while a simulation writes it again: part of what it read is of other images.
 	const std::string d = fresh("replaced_while_read");
-	const auto writeLog = [&](int value) {
-		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
-		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
-		w.write(mrpt::obs::CObservationOdometry());
-		w.commit();
+	const auto writeLog = [&](int value, const std::function<void()>& with_images = {}) {
+		writeOneImageLog(d + "/log.rawlog", value, with_images);
 	};
 	writeLog(1);
 	{
@@ -846,11 +850,8 @@ TEST(OutputRule, ACommitTheFolderRefusesHalfWaySaysWhereTheOldImagesAre)
 {
 	// The folder made immutable as the new images go in: neither the commit nor its undo can move them.
 	const std::string d = fresh("immutable_mid_commit");
-	const auto writeLog = [&](int value, const std::function<void()>& with_images) {
-		RawlogWriter w(d + "/log.rawlog", "omnirange-test");
-		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
-		w.write(mrpt::obs::CObservationOdometry());
-		w.commit({}, with_images);
+	const auto writeLog = [&](int value, const std::function<void()>& with_images = {}) {
+		writeOneImageLog(d + "/log.rawlog", value, with_images);
 	};
 	writeLog(1, {});
 	const int fd = ::open(d.c_str(), O_RDONLY | O_DIRECTORY);
