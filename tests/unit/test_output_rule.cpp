@@ -258,9 +258,14 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	// a copy of a report whose marker names another run): kept.
 	write(d + "/.report.tmp-999997", "a user's notes");
 	fs::create_directory(d + "/report.staging-999996");
+	write(d + "/report.staging-999996/notes.txt", "a user's notes");
 	fs::create_directory(d + "/report.old-999995");
+	write(d + "/report.old-999995/notes.txt", "a user's notes");
 	fs::copy(d + "/report.staging-999998", d + "/report.staging-2024", fs::copy_options::recursive);
+	// Empty, its marker gone (a run killed removing it): nothing in it is anyone's.
+	fs::create_directory(d + "/report.old-999994");
 	recoverLeftoversOf(d + "/report");
+	EXPECT_FALSE(fs::exists(d + "/report.old-999994"));
 	EXPECT_EQ(read(d + "/report/new.md"), "new");  // put back
 	EXPECT_FALSE(fs::exists(d + "/report.old-999999"));
 	EXPECT_FALSE(fs::exists(d + "/report.staging-999998"));
@@ -366,6 +371,51 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	recoverLeftoversOf(d + "/x.rawlog", OutputKind::Rawlog);
 	EXPECT_TRUE(fs::exists(d + "/.x.rawlog.tmp-999991"));
 	EXPECT_THROW(requireRawlogOutputAllowed(d + "/backup.tar.gz", "omnirange-scan", {}, false), std::runtime_error);
+}
+
+TEST(OutputRule, WhatHasTheNameOfThisRunsTemporaryIsTheUsersAndIsNeitherEmptiedNorReplaced)
+{
+	// Every run in a container of its own is PID 1: a name with this run's PID is no proof that it made it.
+	const std::string d = fresh("taken_names"), pid = std::to_string(::getpid());
+	// An output of such a name would read as a killed run's leftover to the next run.
+	for (const std::string& name : std::vector<std::string>{"report.staging-1", ".f.hist.tmp-" + pid, ".f.hist.old-7", ".f.hist.commit-7"})
+		EXPECT_NE(refusal(d + "/" + name, OutputKind::Folder).find("the form runs give their temporaries"),
+				  std::string::npos)
+			<< name;
+	for (const std::string name : {"f.old-7", "report.staging-", "report.staging-1a", "f.tmp-7"})
+		EXPECT_EQ(refusal(d + "/" + name, OutputKind::Folder), "") << name;
+
+	// The user's folder where this run would stage its report.
+	fs::create_directories(d + "/report.staging-" + pid);
+	write(d + "/report.staging-" + pid + "/notes.txt", "the user's");
+	EXPECT_THROW(StagedFolder(d + "/report", "omnirange-test", {}, false), std::runtime_error);
+	EXPECT_EQ(read(d + "/report.staging-" + pid + "/notes.txt"), "the user's");
+
+	// The user's backup where this run would move the old images aside: refused, and the images' marker unchanged.
+	writeOneImageLog(d + "/log.rawlog", 1);
+	const std::string marker = read(d + "/log_Images/" + kOutputMarker);
+	fs::create_directory(d + "/log_Images.old-" + pid);
+	write(d + "/log_Images.old-" + pid + "/mine.txt", "the user's");
+	EXPECT_THROW(writeOneImageLog(d + "/log.rawlog", 2), std::runtime_error);
+	EXPECT_EQ(read(d + "/log_Images.old-" + pid + "/mine.txt"), "the user's");
+	EXPECT_EQ(read(d + "/log_Images/" + kOutputMarker), marker);
+	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0)[0], 1);
+
+	// The user's folder where this run would write new images: refused, its file kept.
+	fs::create_directory(d + "/.other_Images.tmp-" + pid);
+	write(d + "/.other_Images.tmp-" + pid + "/mine.txt", "the user's");
+	EXPECT_THROW(writeOneImageLog(d + "/other.rawlog", 3), std::runtime_error);
+	EXPECT_EQ(read(d + "/.other_Images.tmp-" + pid + "/mine.txt"), "the user's");
+	EXPECT_FALSE(fs::exists(d + "/other.rawlog"));
+
+	// The user's file where a set would put its old file aside: the set does not go in, nothing is replaced.
+	write(d + "/a.txt", "old a"), write(d + "/.a.txt.old-" + pid, "the user's");
+	{
+		StagedFile a(d + "/a.txt", [](const std::string& tmp) { write(tmp, "new a"); });
+		EXPECT_THROW(commitAll({&a}), std::runtime_error);
+	}
+	EXPECT_EQ(read(d + "/a.txt"), "old a");
+	EXPECT_EQ(read(d + "/.a.txt.old-" + pid), "the user's");
 }
 
 TEST(OutputRule, AFolderItsRunWasKilledFillingIsRemovedWholeAndOneItFinishedIsListed)
@@ -1032,12 +1082,12 @@ TEST(OutputRule, AnOutputOfSeveralFilesGoesInAllOrNoneAndAKilledRunsHalfIsUndone
 	EXPECT_EQ(read(d + "/a.txt"), "new a");
 	EXPECT_EQ(read(d + "/c.txt"), "new c");
 	EXPECT_EQ(leftovers(), 0);
-	// Run 999986, killed after putting in a new b (the old aside) and a new d (none before), before its journals went.
+	// Run 999986, killed after putting in a new b (the old aside), before its new d (none before) went in.
 	fs::rename(d + "/b.txt", d + "/.b.txt.old-999986");
-	write(d + "/b.txt", "killed run's b"), write(d + "/d.txt", "killed run's d");
+	write(d + "/b.txt", "killed run's b"), write(d + "/.d.txt.tmp-999986", "killed run's d");
 	const auto inode = [&](const std::string& name) { return std::to_string(inodeNumber(d + "/" + name)); };
 	const std::string journal = "run 999986 1\n" + d + "/b.txt\t" + d + "/.b.txt.old-999986\t" + inode("b.txt") + "\n" +
-								d + "/d.txt\t\t" + inode("d.txt") + "\n";
+								d + "/d.txt\t\t" + inode(".d.txt.tmp-999986") + "\n";
 	write(d + "/.b.txt.commit-999986", journal), write(d + "/.d.txt.commit-999986", journal);
 	EXPECT_THROW(requireWholeSet(d + "/b.txt"), std::runtime_error);  // every reader refuses either file
 	EXPECT_THROW(requireWholeSet(d + "/d.txt"), std::runtime_error);
@@ -1050,6 +1100,21 @@ TEST(OutputRule, AnOutputOfSeveralFilesGoesInAllOrNoneAndAKilledRunsHalfIsUndone
 	EXPECT_FALSE(fs::exists(d + "/d.txt"));
 	EXPECT_NO_THROW(requireWholeSet(d + "/b.txt"));
 	EXPECT_EQ(leftovers(), 0);
+	// Run 999983, killed finishing: both new files in, b's journal gone, d's not. The next run writing b then d (its
+	// own set) keeps the new set whole, though b's old file, with no journal beside b, goes as any dead run's.
+	fs::rename(d + "/b.txt", d + "/.b.txt.old-999983");
+	write(d + "/b.txt", "killed run's b"), write(d + "/d.txt", "killed run's d");
+	write(d + "/.d.txt.commit-999983", "run 999983 1\n" + d + "/b.txt\t" + d + "/.b.txt.old-999983\t" + inode("b.txt") +
+										   "\n" + d + "/d.txt\t\t" + inode("d.txt") + "\n");
+	testing::internal::CaptureStderr();
+	recoverLeftoversOf(d + "/b.txt", OutputKind::Text), recoverLeftoversOf(d + "/d.txt", OutputKind::Text);
+	EXPECT_NE(testing::internal::GetCapturedStderr().find("and 1 other file(s) in place: its new files stay"),
+			  std::string::npos);
+	EXPECT_EQ(read(d + "/b.txt"), "killed run's b");
+	EXPECT_EQ(read(d + "/d.txt"), "killed run's d");
+	EXPECT_NO_THROW(requireWholeSet(d + "/d.txt"));
+	EXPECT_EQ(leftovers(), 0);
+	fs::remove(d + "/d.txt"), write(d + "/b.txt", "old b");
 	// A file put where a killed run's new one was (a user's, since) is not taken out by the undoing.
 	write(d + "/e.txt", "the user's e");
 	write(d + "/.e.txt.commit-999985", "run 999985 1\n" + d + "/e.txt\t\t1\n");

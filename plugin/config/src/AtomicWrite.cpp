@@ -9,6 +9,7 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -73,6 +74,30 @@ std::string temporaryOf(const std::string& target)
 	const std::filesystem::path t(target);
 	return (t.parent_path() / ("." + t.filename().string() + ".tmp-" + std::to_string(static_cast<long>(::getpid()))))
 		.string();
+}
+
+bool isTemporaryName(const std::string& name)
+{
+	// "...<what>-<digits>": a run's process id after what the run names.
+	const auto dash = name.rfind('-');
+	if (dash == std::string::npos || dash + 1 == name.size() ||
+		name.find_first_not_of("0123456789", dash + 1) != std::string::npos)
+		return false;
+	const auto dot = name.rfind('.', dash);
+	if (dot == std::string::npos) return false;
+	const std::string what = name.substr(dot + 1, dash - dot - 1);
+	return what == "staging" || (name.front() == '.' && dot > 0 && (what == "tmp" || what == "old" || what == "commit"));
+}
+
+void renameNotReplacing(const std::string& from, const std::string& to, std::error_code& ec)
+{
+	ec.clear();
+	if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return;
+	if (errno != EINVAL) return ec.assign(errno, std::generic_category());
+	// A file system without the flag: looked at first, then renamed (not one step, but no worse than before).
+	struct stat st{};
+	if (::lstat(to.c_str(), &st) == 0) return ec.assign(EEXIST, std::generic_category());
+	if (::rename(from.c_str(), to.c_str()) != 0) ec.assign(errno, std::generic_category());
 }
 
 StagedFile::StagedFile(const std::string& given, const std::function<void(const std::string&)>& write)
@@ -305,7 +330,14 @@ void FileSetCommit::put()
 	try
 	{
 		for (; aside_ < files_.size(); ++aside_)
-			if (!asides_[aside_].empty()) fs::rename(files_[aside_]->path_, asides_[aside_]);
+			if (!asides_[aside_].empty())
+			{
+				std::error_code ec;
+				renameNotReplacing(files_[aside_]->path_, asides_[aside_], ec);
+				if (ec)
+					throw std::runtime_error(ec.value() == EEXIST ? "'" + asides_[aside_] + "' is in the way: move it away"
+																  : ec.message());
+			}
 		for (; in_ < files_.size(); ++in_) fs::rename(files_[in_]->tmp_, files_[in_]->path_);
 	}
 	catch (const std::exception& e)
@@ -370,6 +402,19 @@ void recoverSetOf(const std::string& path)
 		throw std::runtime_error("'" + path + "' is being put in place by another run (" + pid + ") now");
 	std::error_code ec;
 	const auto set = setIn(journal);
+	// Every new file in: it was killed finishing (its journals going, then its old files), and the set is the new one.
+	const bool all_in = std::all_of(set.begin(), set.end(),
+									[](const SetFile& f) { return !f.inode.empty() && inodeOf(f.target) == f.inode; });
+	if (all_in)
+	{
+		for (const auto& f : set) fs::remove(besideAs(f.target, "commit", pid), ec);
+		for (const auto& f : set)
+			if (!f.aside.empty()) fs::remove(f.aside, ec);
+		temporaries::warn("a run (" + pid + ") was killed while it finished putting '" + path + "'" +
+						  (set.size() > 1 ? " and " + std::to_string(set.size() - 1) + " other file(s)" : "") +
+						  " in place: its new files stay");
+		return;
+	}
 	for (const auto& f : set)
 	{
 		// Only what that run put in is taken out: a file put there since is someone's.

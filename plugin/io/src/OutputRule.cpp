@@ -235,6 +235,10 @@ void requireReachable(const std::string& output)
 {
 	std::error_code ec;
 	(void)fs::symlink_status(output, ec);
+	if (ec == std::errc::filename_too_long && output.size() >= PATH_MAX)
+		throw std::runtime_error("cannot reach the output '..." + output.substr(output.size() - 60) + "': its path is " +
+								 std::to_string(output.size()) + " characters, and the system takes at most " +
+								 std::to_string(PATH_MAX - 1) + " (write it from a folder with a shorter path)");
 	if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
 		throw std::runtime_error("cannot reach the output '" + output + "' (" + ec.message() + ")");
 }
@@ -254,6 +258,10 @@ void requireNameFits(const std::string& output)
 	}
 	constexpr std::size_t kLongestName = NAME_MAX - 32;
 	const std::string name = fs::path(output).filename().string();
+	if (isTemporaryName(name))
+		throw std::runtime_error("the output's name '" + name + "' has the form runs give their temporaries " +
+								 "(NAME.staging-PID, .NAME.tmp-PID, .NAME.old-PID, .NAME.commit-PID): a later run would " +
+								 "take it for a killed run's leftover; give another name");
 	if (name.size() <= kLongestName) return;
 	throw std::runtime_error("the output's name '" + name.substr(0, 12) + "..." + name.substr(name.size() - 20) + "' is " +
 							 std::to_string(name.size()) + " characters: at most " + std::to_string(kLongestName) +
@@ -405,15 +413,20 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 
 std::string moveAside(const std::string& target)
 {
-	const std::string old = target + ".old-" + std::to_string(::getpid());
+	const std::string old = target + ".old-" + std::to_string(::getpid()), aside = "aside " + std::to_string(::getpid());
 	std::error_code ec;
 	// The proof that TARGET.old-PID is this run's and not a user's backup of that name.
-	if (!fs::is_symlink(target, ec) && fs::exists(fs::path(target) / kOutputMarker, ec))
-		noteInMarker(target, "aside " + std::to_string(::getpid()));
-	fs::rename(target, old, ec);
-	if (ec)
-		throw std::runtime_error("cannot move '" + target + "' aside to replace it (" + ec.message() + "); it is as it was");
-	return old;
+	const bool noted = !fs::is_symlink(target, ec) && fs::exists(fs::path(target) / kOutputMarker, ec);
+	if (noted) noteInMarker(target, aside);
+	renameNotReplacing(target, old, ec);
+	if (!ec) return old;
+	// Not moved: a copy made of it later must not read as moved aside by this run.
+	if (noted) unnoteInMarker(target, aside);
+	throw std::runtime_error("cannot move '" + target + "' aside to replace it (" +
+							 (ec.value() == EEXIST ? "'" + old + "' is in the way, and it is not what a killed run of " +
+														 "this program left: move it away"
+												   : ec.message()) +
+							 "); it is as it was");
 }
 
 void replaceFolder(const std::string& target, const std::string& fresh)
@@ -589,6 +602,12 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 			const bool old = prefix == name + ".old-";
 			// A file's temporaries are hidden (temporaryOf(), commitAll()'s old copies): "f.hist.staging-2023" is a user's copy.
 			const bool hidden = prefix == "." + name + ".tmp-" || prefix == "." + name + ".old-";
+			// Killed removing it, after its marker went: nothing in it to be anyone's.
+			if (fs::is_directory(fs::symlink_status(e.path(), ec)) && fs::is_empty(e.path(), ec))
+			{
+				fs::remove(e.path(), ec);
+				continue;
+			}
 			if (!fs::is_directory(fs::symlink_status(e.path(), ec)) && !hidden) continue;
 			if (fs::is_directory(fs::symlink_status(e.path(), ec)) &&
 				!(marked(e.path()) && (old ? movedAsideBy(e.path(), pid) : madeBy(e.path(), pid))))
@@ -606,6 +625,14 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 								  "', which that run did not write (remove the folder once nothing in it is yours)");
 		}
 	}
+}
+
+void requireNothingAt(const std::string& temporary, const std::string& what)
+{
+	std::error_code ec;
+	if (fs::exists(fs::symlink_status(temporary, ec)))
+		throw std::runtime_error("'" + temporary + "', the name of this run's " + what + ", is taken, and not by what a " +
+								 "killed run of this program left: move it away");
 }
 
 namespace
@@ -628,7 +655,7 @@ StagedFolder::StagedFolder(const std::string& target, const std::string& program
 {
 	recoverLeftoversOf(target_, OutputKind::Folder, program);
 	requireOutputAllowed(target_, OutputKind::Folder, program, inputs, force);
-	fs::remove_all(staging_);
+	requireNothingAt(staging_, "staging folder");
 	temporaries::add(staging_);
 	try
 	{

@@ -116,6 +116,7 @@ RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, 
 {
 	recoverLeftoversOf(path_, OutputKind::Rawlog);  // what killed runs of this output left
 	recoverLeftoversOf(images_, OutputKind::Folder, owner_);
+	requireNothingAt(tmp_images_, "images folder");  // what is left there is not a temporary of ours to remove
 	temporaries::add(tmp_path_);
 	temporaries::add(tmp_images_);
 	errno = 0;
@@ -154,7 +155,6 @@ void RawlogWriter::write(const mrpt::serialization::CSerializable& obj)
 void RawlogWriter::startImages()
 {
 	if (has_images_) return;
-	fs::remove_all(tmp_images_);
 	fs::create_directories(tmp_images_);
 	markOutputFolder(tmp_images_, owner_);
 	noteInMarker(tmp_images_, "rawlog " + fs::path(path_).filename().string());

@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace cv
@@ -43,6 +44,15 @@ void keepModeOf(const std::string& target, const std::string& tmp);
  * backup, so that the next run can tell a killed run's leftover from a
  * user's "NAME.tmp-2024". */
 std::string temporaryOf(const std::string& target);
+/** Whether a file or folder name is of the forms runs name their
+ * temporaries and leftovers (".NAME.tmp-PID", ".NAME.old-PID",
+ * ".NAME.commit-PID", "NAME.staging-PID"): an output so named would be taken
+ * for a killed run's leftover by a later run. */
+bool isTemporaryName(const std::string& name);
+/** Renames `from` to `to` unless `to` exists (a name of the user's that
+ * merely has the form of a run's temporary is never replaced); the
+ * system's error otherwise (EEXIST when `to` is there). */
+void renameNotReplacing(const std::string& from, const std::string& to, std::error_code& ec);
 
 /** What `path` leads to now, as "DEVICE:INODE:SIZE:MTIME" ("" if nothing):
  * a file written again or renamed in its place has another (a link or a
@@ -118,8 +128,8 @@ class FolderLock
  * destruction before finish()): every new file out, every old one back;
  * the journals stay if that fails, for the next run. A run killed in between
  * leaves its journals: every reader of a file of the set refuses it
- * (requireWholeSet()) and the next run writing one of them puts the old set
- * back first (recoverSetOf()). */
+ * (requireWholeSet()) and the next run writing one of them settles the set
+ * first (recoverSetOf()): the new one if every new file was in, else the old. */
 class FileSetCommit
 {
    public:
@@ -157,9 +167,11 @@ std::vector<StagedFile*> pointersTo(const std::vector<Owner>& owned)
 void requireWholeSet(const std::string& path);
 
 /** When a run that is over left a journal beside `path` (FileSetCommit):
- * every file of its set goes back as it was (an old one from aside, a new
- * one that had no old one removed; only a file whose inode the journal
- * recorded, not one put there since), and its journals go. Throws
+ * if every new file of its set is in (it was killed finishing), its old
+ * files and journals go; else every file of its set goes back as it was (an
+ * old one from aside, a new one that had no old one removed; only a file
+ * whose inode the journal recorded, not one put there since), and its
+ * journals go. Either way the set is one run's whole, never a mix. Throws
  * std::runtime_error when the journal's run is still going: another run is
  * putting `path` in place now. */
 void recoverSetOf(const std::string& path);

@@ -174,8 +174,14 @@ std::string halfReplaced(const std::string& target);
  * (naming `program`, when given), or a file of `kind` (or empty); an old
  * copy only if its marker says that run moved it aside (moveAside()); a
  * user's file or backup with such a name stays. Called before a run makes
- * anything for `target`: names with its own PID are an earlier run's. */
+ * anything for `target`: names with its own PID are an earlier run's. An
+ * empty folder of such a name goes too (a run killed removing it). */
 void recoverLeftoversOf(const std::string& target, OutputKind kind = OutputKind::Folder,
 						const std::string& program = "");
+/** Throws std::runtime_error when something is at `temporary`, the name
+ * this run is about to make its `what` (after recoverLeftoversOf() took
+ * what was a killed run's): it is the user's, and is neither emptied nor
+ * replaced. */
+void requireNothingAt(const std::string& temporary, const std::string& what);
 
 }  // namespace omnirange
