@@ -273,3 +273,15 @@ TEST(PolarScanner, TheRobotsOwnShadowAtTheBaseIsPassed)
 	for (const Ray& r : f.scanner.scan(drawShadowAtTheBase(f.cam, 80.0 + N / 2, 80.0), f.classifier))
 		ASSERT_EQ(r.status, RayStatus::TooClose);
 }
+
+TEST(PolarScanner, AViewpointHeightThatPutsEveryRangeAtTheHorizonIsRefused)
+{
+	const PolarScannerParams p;  // 0.4 to 3.8 m
+	EXPECT_NO_THROW(p.validate(OmniCameraModel{CameraParams{}}));  // h = 0.931 m: about 110 px of scanline
+	// 1 mm (a typo for 1 m): every range from 0.4 to 3.8 m within 1 px of the horizon, and every ray "too close".
+	CameraParams low;
+	low.h = 0.001;
+	EXPECT_THROW(p.validate(OmniCameraModel{low}), std::invalid_argument);
+	low.h = 1e-300;
+	EXPECT_THROW(p.validate(OmniCameraModel{low}), std::invalid_argument);
+}

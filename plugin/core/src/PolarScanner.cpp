@@ -15,6 +15,8 @@ namespace omnirange
 namespace
 {
 constexpr double kPi = 3.14159265358979323846;
+// [px] The shortest stretch of scanline that ranges from min_range to max_range: a real rig has a hundred or more.
+constexpr double kMinScanRing = 5.0;
 /** Pixels classified per call to the classifier: short, so the search's
  * early decisions still skip most of a scanline. */
 constexpr int kClassifyRun = 16;
@@ -152,6 +154,11 @@ void PolarScannerParams::validate(const OmniCameraModel& cam) const
 	require(base_radius < cam.rhoFromDistance(max_range),
 			"base_radius must be smaller than the max-range radius (" +
 				std::to_string(cam.rhoFromDistance(max_range)) + " px)");
+	// A viewpoint's height far off (h = 0.001 m) puts every range in a thin ring at the horizon: all "too close".
+	const double inner = std::max(base_radius, cam.rhoFromDistance(min_range)), ring = cam.rhoFromDistance(max_range) - inner;
+	require(ring >= kMinScanRing, "from min_range (or base_radius) to max_range the scanlines are " + std::to_string(ring) +
+									  " px long, under " + std::to_string(static_cast<int>(kMinScanRing)) +
+									  ": are h (the viewpoint's height above the floor, m) and the mirror's keys right?");
 }
 
 double scanAperture(int S) { return 2.0 * kPi * (S - 1) / S; }
