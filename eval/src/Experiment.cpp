@@ -16,6 +16,8 @@
 #include <omnirange/io/GzObject.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <sys/statvfs.h>
+
 #include <algorithm>
 
 
@@ -30,6 +32,7 @@ namespace omnirange::eval
 namespace
 {
 constexpr const char* kProgram = "omnirange-experiment";
+constexpr unsigned long long kFullDisk = 1 << 20;  // [bytes] free: too few for any stage's output
 
 mrpt::maps::COccupancyGridMap2D loadGrid(const std::string& file)
 {
@@ -80,7 +83,11 @@ void Experiment::stage(const std::string& name, const std::function<void()>& bod
 	}
 	catch (const std::exception& e)
 	{
-		throw std::runtime_error("stage '" + name + "' failed: " + std::string(e.what()));
+		// MRPT's programs may fail to write on a full disk and say nothing; the next reader then finds a file cut short.
+		struct statvfs fs_stat{};
+		const bool full = ::statvfs(out_.c_str(), &fs_stat) == 0 && fs_stat.f_bavail * fs_stat.f_frsize < kFullDisk;
+		throw std::runtime_error("stage '" + name + "' failed: " + std::string(e.what()) +
+								 (full ? " (the disk holding '" + out_ + "' is full)" : ""));
 	}
 }
 

@@ -94,7 +94,7 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 			if (!fs::is_regular_file(file))
 				throw std::invalid_argument((fs::exists(file) ? "'" + file.string() + "' is not a regular file"
 															  : "no image file '" + file.string() + "'"));
-			images.push_back({t, file.string()});
+			images.push_back({t, file.string(), ""});
 		});
 		return images;
 	}
@@ -108,7 +108,7 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 		const std::string stem = entry.path().stem().string();
 		try
 		{
-			images.push_back({parseTime(stem), entry.path().string()});
+			images.push_back({parseTime(stem), entry.path().string(), ""});
 		}
 		catch (const std::invalid_argument&)
 		{
