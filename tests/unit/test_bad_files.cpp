@@ -60,6 +60,13 @@ TEST(BadFiles, AFifoIsRefusedByEveryReaderWithoutBlocking)
 	EXPECT_NE(errorOf([&] { ColourModel::load(fifo); }), "");
 	EXPECT_NE(errorOf([&] { decodeImageFile(fifo, "OMNICAM"); }).find("not a regular file"), std::string::npos);
 	EXPECT_NE(errorOf([&] { requireNoRepeatedKeys(fifo); }).find("not a regular file"), std::string::npos);
+	// A chain of more links than the system follows is not "no file", and not an ini that is missing.
+	std::ofstream(d + "/link0") << "[rangefinder]\nh = 1\n";
+	for (int i = 1; i <= 41; ++i) fs::create_symlink(d + "/link" + std::to_string(i - 1), d + "/link" + std::to_string(i));
+	const std::string last = d + "/link41";
+	EXPECT_NE(errorOf([&] { decodeImageFile(last, "OMNICAM"); }).find("more than 40 in a row"), std::string::npos);
+	EXPECT_NE(errorOf([&] { requireNoRepeatedKeys(last); }).find("Too many levels of symbolic links"), std::string::npos)
+		<< errorOf([&] { requireNoRepeatedKeys(last); });
 }
 
 TEST(BadFiles, AJpegIsJudgedByItsMarkersSoATrailerIsFineAndACutIsNot)

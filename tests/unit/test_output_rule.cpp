@@ -996,6 +996,8 @@ TEST(OutputRule, AFileAnotherProgramsFolderListsIsNotReplacedByThisOne)
 	EXPECT_TRUE(markerLines(d + "/fifo").empty());
 	EXPECT_EQ(refusal(d + "/fifo/x.hist", OutputKind::Histogram), "");
 	EXPECT_THROW(noteInMarker(d + "/fifo", "file x.hist"), std::runtime_error);
+	write(d + "/fifo/notes.txt", "the user's");  // and a folder with it, as an output, is said to be that
+	EXPECT_NE(refusal(d + "/fifo", OutputKind::Folder).find("is a link or not a file, no marker of ours"), std::string::npos);
 }
 
 TEST(OutputRule, AnImageWrittenAgainAfterItWasCheckedIsNotCopiedIntoAnImport)

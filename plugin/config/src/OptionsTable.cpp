@@ -74,6 +74,9 @@ void requireRegularFile(const std::string& path, const std::string& what)
 	std::error_code ec;
 	if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
 		throw std::runtime_error("the " + what + " '" + path + "' is not a regular file");
+	// Else its reader says "no file": a loop of links (or one past 40) is something else.
+	if (ec && ec != std::errc::no_such_file_or_directory)
+		throw std::runtime_error("cannot reach the " + what + " '" + path + "' (" + ec.message() + ")");
 	if (isKernelFile(path)) throw std::runtime_error("the " + what + " '" + path + "' is a file of the kernel's, not of data");
 }
 

@@ -194,7 +194,8 @@ cv::Mat decodeImageFile(const std::string& file, const std::string& label, int f
 		// A FIFO or a device would block or never end.
 		if (std::filesystem::exists(status)) throw std::runtime_error(what + " is not a regular file");
 		if (ec == std::errc::too_many_symbolic_link_levels)
-			throw std::runtime_error(what + " is a link that leads back to itself");
+			throw std::runtime_error(what + " is a link that leads back to itself, or one of more than 40 in a row (the " +
+									 "system follows no more)");
 		// A rawlog copied or renamed without its folder ("d.rawlog.bak" reads "d.rawlog.bak_Images").
 		const auto folder = std::filesystem::path(file).parent_path();
 		if (!folder.empty() && !std::filesystem::exists(folder, ec))

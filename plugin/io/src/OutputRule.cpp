@@ -197,7 +197,8 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 		// A link that leads back to itself names no place: every path would seem inside it.
 		(void)fs::canonical(fs::absolute(outputPath(in)), ec);
 		if (ec == std::errc::too_many_symbolic_link_levels)
-			throw std::runtime_error("the input '" + in + "' is a link that leads back to itself");
+			throw std::runtime_error("the input '" + in + "' is a link that leads back to itself, or one of more than 40 in " +
+									 "a row (the system follows no more)");
 		const fs::path input_as_written = asWritten(outputPath(in));
 		const fs::path input = resolved(fs::absolute(outputPath(in)));
 		// A link replaced as a link is its own path, not the folder it names.
@@ -362,8 +363,12 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 			if (!lines.empty() && !trimmed(lines.front()).empty())
 				throw std::runtime_error("'" + output + "' is what " + trimmed(lines.front()) + " wrote, not " + program +
 										 " (give another output)");
-			throw std::runtime_error("'" + output + "' is a folder " + program + " did not write (no " + kOutputMarker +
-									 " naming it)" + hint);
+			const bool odd = fs::exists(fs::symlink_status(p / kOutputMarker, ec)) &&
+							 !fs::is_regular_file(fs::symlink_status(p / kOutputMarker, ec));
+			throw std::runtime_error("'" + output + "' is a folder " + program + " did not write (" +
+									 (odd ? std::string("its ") + kOutputMarker + " is a link or not a file, no marker of ours"
+										  : std::string("no ") + kOutputMarker + " naming it") +
+									 ")" + hint);
 		}
 		// The folder is the program's, but what a user put in it since is not.
 		if (const std::string added = firstUnlistedIn(output); !added.empty())
