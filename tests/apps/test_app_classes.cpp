@@ -235,6 +235,7 @@ TEST(AppClasses, CalibrateSavesTheCheckerboardsMeiModelIntoTheIni)
 	CalibrateApp::Options o;
 	for (const char* n : {"001", "003", "004", "006"}) o.checkerboards.push_back(real + "/img_para_" + n + ".pgm");
 	o.save_to = dir + "/my.ini";
+	o.intrinsics_output = dir + "/intrinsics.yaml";  // with the keys, as one set
 	std::ofstream(o.save_to) << "[rangefinder]\n; [-] kept\nthreshold = 0.075\nR = 192\n";
 	o.verbosity = mrpt::system::LVL_ERROR;
 	o.accept = true;  // two of the four boards are used: too few to measure the centre's spread
@@ -258,6 +259,8 @@ TEST(AppClasses, CalibrateSavesTheCheckerboardsMeiModelIntoTheIni)
 	EXPECT_EQ(saved.camera.image_height, 1024);
 	EXPECT_DOUBLE_EQ(saved.threshold, 0.075);
 	EXPECT_NE(readText(o.save_to).find("; [-] kept"), std::string::npos);
+	EXPECT_EQ(readText(o.intrinsics_output).rfind("%YAML:1.0", 0), 0u);
+	EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);  // no journal or old file left
 }
 
 TEST(AppClasses, CalibrateSavesAnOCamCalibModelIntoTheIni)

@@ -161,3 +161,26 @@ TEST(IniSectionWriter, TwoRunsSavingIntoOneIniAtOnceKeepBothSections)
 		ASSERT_NE(text.find("[other]"), std::string::npos) << "round " << round << ":\n" << text;
 	}
 }
+
+TEST(IniSectionWriter, AFileWrittenWithTheKeysGoesInWithTheIniOrNeitherDoes)
+{
+	// A calibration's YAML and its keys: one set, so that a failure leaves no new YAML beside old keys.
+	const std::string dir = tmp("with_set"), path = dir + "/my.ini", yaml = dir + "/cam.yaml";
+	std::filesystem::remove_all(dir), std::filesystem::create_directories(dir);
+	std::ofstream(path) << "[rangefinder]\nR = 192\n";
+	std::ofstream(yaml) << "old";
+	{
+		StagedFile staged(yaml, writerOf(yaml, "new"));
+		std::filesystem::remove(temporaryOf(yaml));  // its rename, the set's second, fails
+		EXPECT_THROW(writeIniSection(path, "rangefinder", {{"R", "200"}}, {}, {&staged}), std::runtime_error);
+	}
+	EXPECT_EQ(read(path), "[rangefinder]\nR = 192\n");
+	EXPECT_EQ(read(yaml), "old");
+	{
+		StagedFile staged(yaml, writerOf(yaml, "new"));
+		writeIniSection(path, "rangefinder", {{"R", "200"}}, {}, {&staged});
+	}
+	EXPECT_EQ(read(path), "[rangefinder]\nR = 200\n");
+	EXPECT_EQ(read(yaml), "new");
+	EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 2);
+}

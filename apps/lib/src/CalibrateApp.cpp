@@ -34,7 +34,7 @@ constexpr double kMaxRimOffset = 10.0;
 /** A calibrated camera's keys, each printed by the ini's own table, into
  * [section] of `ini` (the rest of the file kept). */
 void saveCameraKeys(const std::string& ini, const std::string& section, const CameraParams& cam,
-					const std::vector<std::string>& model_keys)
+					const std::vector<std::string>& model_keys, const std::vector<StagedFile*>& with = {})
 {
 	std::vector<std::string> names{"image_width", "image_height", "cx", "cy", "mirror_model"};
 	names.insert(names.end(), model_keys.begin(), model_keys.end());
@@ -42,7 +42,7 @@ void saveCameraKeys(const std::string& ini, const std::string& section, const Ca
 	for (const std::string& name : names)
 		for (const auto& f : CameraParams::table().fields())
 			if (f.info.key == name) keys.push_back({name, f.print(cam)});
-	writeIniSection(ini, section, keys, RangefinderParams::table().comments());
+	writeIniSection(ini, section, keys, RangefinderParams::table().comments(), with);
 	std::printf("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), section.c_str(),
 				ini.c_str());
 }
@@ -238,8 +238,8 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 						 " px when a group of boards is left out (over " + formatDouble(kMaxCentreSpread) +
 						 " px): the boards do not pin it down; add boards spread around the mirror");
 	requireSure(doubts);
-	// Both outputs or neither: the model is checked first, the YAML is staged
-	// and renamed into place only once the ini has its keys.
+	// Both outputs or neither: the model is checked first, then the YAML and
+	// the ini with its keys go in as one set.
 	const CameraParams cam = meiCamera(c);
 	if (!o_.save_to.empty())
 		try
@@ -255,8 +255,10 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 	if (!o_.intrinsics_output.empty())
 		yaml.emplace(o_.intrinsics_output, [&](const std::string& tmp) { writeFileAtomically(tmp, c.yaml()); });
 	if (!o_.save_to.empty())
-		saveCameraKeys(o_.save_to, o_.section, cam, {"xi", "gamma", "aspect", "skew", "k1", "k2", "p1", "p2"});
-	if (yaml) yaml->commit();
+		saveCameraKeys(o_.save_to, o_.section, cam, {"xi", "gamma", "aspect", "skew", "k1", "k2", "p1", "p2"},
+					   yaml ? std::vector<StagedFile*>{&*yaml} : std::vector<StagedFile*>{});
+	else if (yaml)
+		yaml->commit();
 	return c;
 }
 

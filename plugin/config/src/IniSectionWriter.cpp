@@ -105,7 +105,7 @@ std::pair<std::string, std::string> withSection(const std::string& path, const s
 
 void writeIniSection(const std::string& path, const std::string& section,
 					 const std::vector<std::pair<std::string, std::string>>& values,
-					 const std::map<std::string, std::string>& comments)
+					 const std::map<std::string, std::string>& comments, const std::vector<StagedFile*>& with)
 {
 	requireSectionName(section);
 	// Another run's keys (two calibrations saving into one ini) or a user's edit that went in
@@ -116,8 +116,12 @@ void writeIniSection(const std::string& path, const std::string& section,
 		const auto [text, state] = withSection(path, section, values, comments);
 		try
 		{
-			updateFileAtomically(path, text, state);
-			return;
+			if (with.empty()) return updateFileAtomically(path, text, state);
+			StagedFile ini(path, writerOf(path, text));
+			ini.replacing(state);
+			std::vector<StagedFile*> set{&ini};
+			set.insert(set.end(), with.begin(), with.end());
+			return commitAll(set);
 		}
 		catch (const ChangedMeanwhile&)
 		{

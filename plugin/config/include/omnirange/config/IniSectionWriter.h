@@ -10,6 +10,8 @@
 
 namespace omnirange
 {
+class StagedFile;
+
 /** Sets `values` (key, value) in `section` of the ini file `path`. A key
  * already in the section keeps its line and indentation with the new value; keys not there go after the
  * section's last key, each after the line "; COMMENT" when `comments` has
@@ -17,10 +19,13 @@ namespace omnirange
  * missing file is created. Every other line stays as it was. Written atomically (the old
  * file stays whole if anything fails). Throws std::runtime_error naming the
  * file if the section appears twice or the file cannot be read or written,
- * and requireSectionName()'s error before anything is read. */
+ * and requireSectionName()'s error before anything is read. `with`: files
+ * staged beside it (what a calibration writes with these keys), put in
+ * place with the ini as one set (commitAll()): all or none. */
 void writeIniSection(const std::string& path, const std::string& section,
 					 const std::vector<std::pair<std::string, std::string>>& values,
-					 const std::map<std::string, std::string>& comments = {});
+					 const std::map<std::string, std::string>& comments = {},
+					 const std::vector<StagedFile*>& with = {});
 
 /** Throws std::invalid_argument unless `section` is a name an ini line can
  * hold and every reader takes back: letters, digits, '_', '-' and '.' (not
