@@ -22,7 +22,8 @@ cp "$sample" s.rawlog && cp -r "$src/rawlogs/factory-sample_Images" s_Images
 cp "$ini" f.ini && cp "$src/ini/experiment-base.ini" .  # f.ini and its base
 head -c 20000 "$sample" > cut.rawlog
 : > empty.rawlog
-head -c 5000 /dev/urandom > random.rawlog
+# The same "random" bytes every run, so that the table reads the same.
+LC_ALL=C awk 'BEGIN { srand(7); for (i = 0; i < 5000; i++) printf "%c", int(rand() * 256) }' > random.rawlog
 mkdir -p cutimg_Images && cp s.rawlog cutimg.rawlog
 cp s_Images/* cutimg_Images/ && f=$(ls cutimg_Images | sort | sed -n 5p)
 truncate -s 30000 "cutimg_Images/$f"
