@@ -8,6 +8,7 @@
 #include "omnirange_eval/SensoryFrameFormat.h"
 
 #include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/ErrorText.h>
 #include <omnirange/config/Temporaries.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/Progress.h>
@@ -86,7 +87,8 @@ void Experiment::stage(const std::string& name, const std::function<void()>& bod
 		// MRPT's programs may fail to write on a full disk and say nothing; the next reader then finds a file cut short.
 		struct statvfs fs_stat{};
 		const bool full = ::statvfs(out_.c_str(), &fs_stat) == 0 && fs_stat.f_bavail * fs_stat.f_frsize < kFullDisk;
-		throw std::runtime_error("stage '" + name + "' failed: " + std::string(e.what()) +
+		// MRPT's block made one line here: what is said after it (the disk, where the partial output is) stays.
+		throw std::runtime_error("stage '" + name + "' failed: " + errorInOneLine(e.what()) +
 								 (full ? " (the disk holding '" + out_ + "' is full)" : ""));
 	}
 }

@@ -9,6 +9,7 @@
 #include <omnirange_apps/TrainApp.h>
 #include <omnirange_eval/ExperimentConfig.h>
 #include <omnirange_eval/Suite.h>
+#include <omnirange/config/ErrorText.h>
 #include <omnirange/config/LayeredIni.h>
 
 #include <omnirange/io/RawlogReader.h>
@@ -717,6 +718,9 @@ TEST(AppClasses, OpenCVsAndMRPTsErrorsAreOneLineWithoutPathsOrCallStacks)
 	{
 		EXPECT_NE(std::string(e.what()).find("Call stack"), std::string::npos);  // what MRPT gives
 		EXPECT_EQ(errorText(e), "MRPT: the sensor 'X' is unknown");
+		// Made one line where it is caught and said more of (an experiment's stage): what is said after it is kept.
+		const std::runtime_error said("stage 'icp-slam' failed: " + errorInOneLine(e.what()) + " (the disk is full)");
+		EXPECT_EQ(errorText(said), "stage 'icp-slam' failed: MRPT: the sensor 'X' is unknown (the disk is full)");
 	}
 	EXPECT_EQ(errorText(std::runtime_error("two\nlines")), "two lines");
 	// A class name read from a damaged rawlog: its byte that is no text shows as '?', a name in UTF-8 as itself.

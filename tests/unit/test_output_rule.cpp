@@ -282,6 +282,15 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	recoverLeftoversOf(d + "/report");
 	EXPECT_EQ(read(d + "/report.old-999990/notes.txt"), "a user's notes");
 	EXPECT_EQ(read(d + "/report.old-999990/map.png"), "ours");
+	// One a run was killed removing, a folder its listed files were in emptied: all its own still, removed.
+	fs::create_directories(d + "/report.old-999988/icp_slam");
+	write(d + "/report.old-999988/" + kOutputMarker, "omnirange-test\naside 999988\n");
+	write(d + "/report.old-999988/icp_slam/map.simplemap", "ours");
+	listOutputFolder(d + "/report.old-999988");
+	fs::remove(d + "/report.old-999988/icp_slam/map.simplemap");
+	EXPECT_EQ(firstUnlistedIn(d + "/report.old-999988"), "");
+	recoverLeftoversOf(d + "/report");
+	EXPECT_FALSE(fs::exists(d + "/report.old-999988"));
 	// A killed run's staging folder: what it listed as it wrote is removed with it; with a
 	// file it did not list (a user's, added since), the whole folder is kept.
 	for (const bool added : {false, true})

@@ -93,11 +93,7 @@ std::string errorText(const std::exception& e)
 {
 	if (const auto* cv_error = dynamic_cast<const cv::Exception*>(&e))
 		return oneLine("OpenCV: " + cv_error->err + (cv_error->func.empty() ? "" : " (in " + cv_error->func + ")"));
-	const std::string text = e.what();
-	// What was said before MRPT's block (the file a caller names) is kept.
-	if (const auto block = text.find("==== MRPT exception ===="); block != std::string::npos)
-		if (const std::string m = mrptMessages(text); !m.empty()) return oneLine(text.substr(0, block) + "MRPT: " + m);
-	return oneLine(text);
+	return errorInOneLine(e.what());
 }
 
 int runApp(const std::string& name, const std::function<void()>& body)

@@ -50,4 +50,11 @@ std::string mrptMessages(const std::string& text)
 	// Some of MRPT's errors carry their text in the location line only.
 	return messages.empty() ? location : messages;
 }
+
+std::string errorInOneLine(const std::string& text)
+{
+	if (const auto block = text.find("==== MRPT exception ===="); block != std::string::npos)
+		if (const std::string m = mrptMessages(text); !m.empty()) return oneLine(text.substr(0, block) + "MRPT: " + m);
+	return oneLine(text);
+}
 }  // namespace omnirange

@@ -428,8 +428,8 @@ std::string moveAside(const std::string& target)
 	// Not moved: a copy made of it later must not read as moved aside by this run.
 	if (noted) unnoteInMarker(target, aside);
 	throw std::runtime_error("cannot move '" + target + "' aside to replace it (" +
-							 (ec.value() == EEXIST ? "'" + old + "' is in the way, and it is not what a killed run of " +
-														 "this program left: move it away"
+							 (ec.value() == EEXIST ? "'" + old + "' is in the way, and is not this program's to remove: " +
+														 "move it away"
 												   : ec.message()) +
 							 "); it is as it was");
 }
@@ -636,8 +636,8 @@ void requireNothingAt(const std::string& temporary, const std::string& what)
 {
 	std::error_code ec;
 	if (fs::exists(fs::symlink_status(temporary, ec)))
-		throw std::runtime_error("'" + temporary + "', the name of this run's " + what + ", is taken, and not by what a " +
-								 "killed run of this program left: move it away");
+		throw std::runtime_error("'" + temporary + "', the name of this run's " + what + ", is taken by what is not " +
+								 "this program's to remove: move it away");
 }
 
 namespace
@@ -804,8 +804,13 @@ std::string firstUnlistedIn(const std::string& dir)
 	bool has_list = false;
 	const std::set<std::string> listed = listedIn(dir, has_list);
 	if (!has_list) return "";  // a marker from before the listing: nothing to compare
+	// An empty folder its files were listed in is the run's, emptied (a run killed removing it).
+	const auto heldListed = [&](const std::string& rel) {
+		const auto next = listed.lower_bound(rel + "/");
+		return next != listed.end() && next->rfind(rel + "/", 0) == 0;
+	};
 	for (const auto& rel : filesIn(dir))
-		if (!listed.count(rel)) return rel;
+		if (!listed.count(rel) && !heldListed(rel)) return rel;
 	return "";
 }
 

@@ -16,4 +16,8 @@ std::string oneLine(const std::string& s);
  * between them); its location when it has no message; "" when `text` is
  * not MRPT's. */
 std::string mrptMessages(const std::string& text);
+
+/** `text` on one line, an MRPT exception block in it as "MRPT: " and its
+ * messages (what was said before the block, the file a caller names, kept). */
+std::string errorInOneLine(const std::string& text);
 }  // namespace omnirange
