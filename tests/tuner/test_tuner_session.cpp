@@ -343,7 +343,14 @@ TEST(TunerSession, SaveChecksTheIniAgainWhenItIsSavedNotOnlyWhenTheWindowOpens)
 	EXPECT_NE(refusal().find("is the input"), std::string::npos) << refusal();
 	EXPECT_EQ(read(dir + "/experiment-base.ini"), base_text);
 	fs::remove(o.ini);
+	// Emptied meanwhile (by an editor, a copy that failed): the same as gone.
+	const std::string text = read(dir + "/moved.ini");
+	std::ofstream(o.ini).flush();
+	EXPECT_NE(refusal().find("holds no key now"), std::string::npos) << refusal();
+	EXPECT_EQ(fs::file_size(o.ini), 0u);
+	fs::remove(o.ini);
 	fs::rename(dir + "/moved.ini", o.ini);
+	EXPECT_EQ(read(o.ini), text);
 	EXPECT_EQ(refusal(), "");
 	EXPECT_DOUBLE_EQ(RangefinderParams::loadFromFile(o.ini, "rangefinder").threshold, 0.0123);
 	// Another ini to save into (--save-to), there when the window opened: the same once it is gone.
@@ -354,6 +361,9 @@ TEST(TunerSession, SaveChecksTheIniAgainWhenItIsSavedNotOnlyWhenTheWindowOpens)
 	EXPECT_FALSE(fs::exists(dir + "/other.ini"));
 	s.saveIni(dir + "/new.ini");  // one that was never there is made
 	EXPECT_TRUE(fs::exists(dir + "/new.ini"));
+	std::ofstream(dir + "/empty.ini").flush();  // and one empty when first checked takes its first keys
+	s.saveIni(dir + "/empty.ini");
+	EXPECT_DOUBLE_EQ(RangefinderParams::loadFromFile(dir + "/empty.ini", "rangefinder").threshold, 0.0123);
 }
 
 TEST(TunerOverlays, RayEndsLaserAndFreeTintAreDrawnWhereTheScanSaysAndOffMeansOff)

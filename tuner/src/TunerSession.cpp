@@ -11,6 +11,7 @@
 #include <omnirange/io/RawlogProcessor.h>
 
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <limits>
@@ -256,12 +257,29 @@ void TunerSession::requireSaveAllowed(const std::string& ini)
 {
 	namespace fs = std::filesystem;
 	std::error_code ec;
-	// An ini there when the window opened (the -c one, or --save-to's) and gone now: moved or removed meanwhile.
+	// An ini there when the window opened (the -c one, or --save-to's) and gone or emptied now: a save would
+	// make one of the window's changed keys alone, while the window shows the rest as they were.
 	const std::string key = fs::absolute(ini, ec).lexically_normal().string();
-	existed_.emplace(key, fs::exists(ini, ec) || key == fs::absolute(o_.ini, ec).lexically_normal().string());
-	if (existed_.at(key) && !fs::exists(ini, ec))
+	const auto keysIn = [&] {
+		if (!fs::exists(ini, ec)) return -1;
+		try
+		{
+			return requireWellFormedIni(ini);
+		}
+		catch (const std::exception&)
+		{
+			return 1;  // something there, refused as it is below
+		}
+	};
+	const bool own = key == fs::absolute(o_.ini, ec).lexically_normal().string();
+	keys_when_opened_.emplace(key, own ? std::max(1, keysIn()) : keysIn());  // the -c ini was read with its keys
+	const int then = keys_when_opened_.at(key), now = keysIn();
+	if (then >= 0 && now < 0)
 		throw std::runtime_error("'" + ini + "' was moved or removed since the window opened: a new one would hold " +
 								 "none of its other keys; put it back, then save");
+	if (then > 0 && now == 0)
+		throw std::runtime_error("'" + ini + "' holds no key now, emptied since the window opened: a save would " +
+								 "hold none of its other keys; put them back, then save");
 	std::vector<std::string> inputs{o_.rawlog, o_.histogram};
 	inputs.insert(inputs.end(), bases_.begin(), bases_.end());
 	requireOutputAllowed(ini, OutputKind::Ini, "omnirange-tuner", inputs);

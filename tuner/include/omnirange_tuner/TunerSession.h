@@ -134,7 +134,7 @@ class TunerSession
    private:
 	void checkImages();
 	std::vector<std::string> bases_;  ///< the ini's bases when it was read: never saved into
-	std::map<std::string, bool> existed_;  ///< whether each ini saved into was there when first checked
+	std::map<std::string, int> keys_when_opened_;  ///< the keys each ini saved into held when first checked (-1: none there)
 
 	SessionOptions o_;
 	std::vector<Frame> frames_;
