@@ -110,6 +110,35 @@ TEST(BadFiles, AJpegDamagedInsideIsRefusedThoughItsEndMarkerIsThere)
 	EXPECT_EQ(cv::norm(grey, cv::imdecode(buf, cv::IMREAD_GRAYSCALE), cv::NORM_INF), 0.0);
 }
 
+TEST(BadFiles, AJpegsExifOrientationIsNotAppliedTheSensorsPixelsAreReadAsWritten)
+{
+	// One frame of a log re-saved by a tool that tags it: scanned turned, its ranges would be another bearing's.
+	const std::string d = dir("jpeg_exif"), plain = jpeg();
+	std::ofstream(d + "/plain.jpg", std::ios::binary) << plain;
+	const cv::Mat reference = decodeImageFile(d + "/plain.jpg", "OMNICAM");
+	for (const char orientation : {2, 3, 6, 8})
+	{
+		// APP1: "Exif", a little-endian TIFF header and one IFD entry, Orientation (0x0112), a SHORT.
+		const std::string exif = std::string("Exif\0\0II*\0\x08\0\0\0\x01\0\x12\x01\x03\0\x01\0\0\0", 24) +
+								 orientation + std::string(7, '\0');
+		const std::size_t length = exif.size() + 2;
+		const std::string tagged = plain.substr(0, 2) + "\xff\xe1" + static_cast<char>(length >> 8) +
+								   static_cast<char>(length & 0xff) + exif + plain.substr(2);
+		const std::string file = d + "/tagged" + std::to_string(orientation) + ".jpg";
+		std::ofstream(file, std::ios::binary) << tagged;
+		if (orientation == 3)
+		{
+			// OpenCV itself turns it: the tag is read.
+			const cv::Mat turned = cv::imread(file, cv::IMREAD_COLOR);
+			ASSERT_EQ(turned.size(), reference.size());
+			EXPECT_GT(cv::norm(turned, reference, cv::NORM_INF), 0.0);
+		}
+		const cv::Mat read = decodeImageFile(file, "OMNICAM");
+		ASSERT_EQ(read.size(), reference.size()) << int(orientation);
+		EXPECT_EQ(cv::norm(read, reference, cv::NORM_INF), 0.0) << int(orientation);
+	}
+}
+
 TEST(BadFiles, APngDecodesAsOpenCvDecodesItAndADamagedOneGivesOneReasonAndNoLinesOfLibpng)
 {
 	const std::string d = dir("png");

@@ -2,7 +2,6 @@
 
 #include <csetjmp>
 #include <cstdio>
-#include <cstring>
 
 #include <jpeglib.h>
 #include <jerror.h>
@@ -39,13 +38,6 @@ void onMessage(j_common_ptr info, int level)
 	if (damaged) fail(info);
 }
 
-/** Whether an APP1 segment holds Exif data, whose orientation OpenCV applies. */
-bool hasExif(j_decompress_ptr info)
-{
-	for (jpeg_saved_marker_ptr m = info->marker_list; m; m = m->next)
-		if (m->marker == JPEG_APP0 + 1 && m->data_length >= 6 && std::memcmp(m->data, "Exif\0\0", 6) == 0) return true;
-	return false;
-}
 }  // namespace
 
 std::string decodeJpeg(const unsigned char* bytes, std::size_t size, bool grey, cv::Mat& image)
@@ -65,7 +57,6 @@ std::string decodeJpeg(const unsigned char* bytes, std::size_t size, bool grey, 
 	}
 	jpeg_create_decompress(&info);
 	jpeg_mem_src(&info, bytes, static_cast<unsigned long>(size));
-	jpeg_save_markers(&info, JPEG_APP0 + 1, 0xFFFF);
 	jpeg_read_header(&info, TRUE);
 	const bool cmyk = info.jpeg_color_space == JCS_CMYK || info.jpeg_color_space == JCS_YCCK;
 	info.out_color_space = cmyk ? JCS_CMYK : grey ? JCS_GRAYSCALE : JCS_EXT_BGR;
@@ -77,7 +68,9 @@ std::string decodeJpeg(const unsigned char* bytes, std::size_t size, bool grey, 
 		JSAMPROW row = image.ptr(static_cast<int>(info.output_scanline));
 		jpeg_read_scanlines(&info, &row, 1);
 	}
-	const bool opencv_decodes = cmyk || hasExif(&info);
+	// An Exif orientation is not applied: cx, cy and the azimuth are in the sensor's own pixel frame, and one
+	// image of a log tagged otherwise (edited, saved by another tool) would be scanned turned or mirrored.
+	const bool opencv_decodes = cmyk;
 	jpeg_finish_decompress(&info);
 	jpeg_destroy_decompress(&info);
 	if (opencv_decodes) image.release();

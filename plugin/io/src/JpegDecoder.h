@@ -13,6 +13,6 @@ namespace omnirange
 /** Decodes the JPEG `bytes` into 8-bit BGR, or grey if `grey`. Returns why
  * its data is damaged ("Corrupt JPEG data: premature end of data segment"),
  * or "" with `image` set; leaves `image` empty where OpenCV must decode it
- * (CMYK, or an Exif orientation OpenCV applies) after this check passed. */
+ * (CMYK) after this check passed. An Exif orientation is not applied. */
 std::string decodeJpeg(const unsigned char* bytes, std::size_t size, bool grey, cv::Mat& image);
 }  // namespace omnirange

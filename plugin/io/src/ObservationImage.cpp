@@ -223,7 +223,7 @@ cv::Mat decodeImageFile(const std::string& file, const std::string& label, int f
 									 : decodePng(bytes.data(), bytes.size(), grey, image);
 		if (!why.empty()) throw std::runtime_error(what + " is damaged: " + why);
 	}
-	if (image.empty()) image = cv::imdecode(bytes, flags);
+	if (image.empty()) image = cv::imdecode(bytes, flags | cv::IMREAD_IGNORE_ORIENTATION);  // as decodeJpeg()
 	if (image.empty()) throw std::runtime_error(what + " cannot be decoded: damaged, or not an image of its kind");
 	return image;
 }
