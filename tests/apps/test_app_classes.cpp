@@ -12,6 +12,7 @@
 #include <omnirange/config/ErrorText.h>
 #include <omnirange/config/LayeredIni.h>
 
+#include <omnirange/core/ColourModel.h>
 #include <omnirange/io/RawlogReader.h>
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/config/Temporaries.h>
@@ -107,6 +108,7 @@ TEST(AppClasses, TrainScanAndAccuracyOfTheFactorySample)
 	EXPECT_GT(scanned.no_hit, scanned.rays / 4);
 	EXPECT_LT(scanned.too_close, scanned.rays / 20);
 	EXPECT_TRUE(scanWarnings(scanned, s.histogram).empty());
+	EXPECT_EQ(scanned.grey_images, 0u);
 
 	AccuracyApp::Options a;
 	a.input = s.scan.output;
@@ -160,6 +162,28 @@ TEST(AppClasses, ScanWarnsWhenTheRobotsBodyIsInsideTheScanCircle)
 	EXPECT_TRUE(quiet.empty()) << quiet;
 }
 
+TEST(AppClasses, GreyImagesScannedWithAHistogramOfColoursAreWarnedOf)
+{
+	// The factory sample as a grey camera would give it (or a log converted to grey), scanned with the colour one's histogram.
+	const std::string dir = workDir("grey");
+	const std::string rawlog = dir + "/" + fs::path(kSample).filename().string();
+	fs::copy_file(kSample, rawlog);
+	const std::string images = imagesDirToRead(rawlog);
+	fs::copy(imagesDirToRead(kSample), images);
+	for (const auto& e : fs::directory_iterator(images))
+		if (e.path().extension() == ".jpg")
+		{
+			cv::Mat grey;
+			cv::cvtColor(cv::imread(e.path().string()), grey, cv::COLOR_BGR2GRAY);
+			ASSERT_TRUE(cv::imwrite(e.path().string(), grey));
+		}
+	const ScanApp::Options s = scanOf(dir, rawlog);
+	EXPECT_TRUE(ColourModel::load(s.histogram).trainedOnColour());
+	const auto [summary, warned] = scanWithWarnings(s);
+	EXPECT_EQ(summary.grey_images, 20u);
+	EXPECT_NE(warned.find("20 of 20 images are grey (three equal channels)"), std::string::npos) << warned;
+}
+
 TEST(AppClasses, ScanWarningsFollowTheSharesOfTheRays)
 {
 	RawlogScanSummary s;
@@ -172,6 +196,11 @@ TEST(AppClasses, ScanWarningsFollowTheSharesOfTheRays)
 	ASSERT_EQ(one.size(), 1u);
 	EXPECT_NE(one[0].find("'f.hist' trained on this floor"), std::string::npos) << one[0];
 	EXPECT_TRUE(scanWarnings(RawlogScanSummary{}, "f.hist").empty());  // nothing scanned: nothing to say
+	// Grey images: said with a histogram of colours, with either of the others; not with a grey camera's histogram.
+	s.images = 20, s.grey_images = 3;
+	EXPECT_EQ(scanWarnings(s, "f.hist", true).size(), 2u);
+	EXPECT_NE(scanWarnings(s, "f.hist", true)[0].find("3 of 20 images are grey"), std::string::npos);
+	EXPECT_EQ(scanWarnings(s, "f.hist", false).size(), 1u);
 }
 
 namespace

@@ -58,7 +58,8 @@ RawlogScanSummary ScanApp::run()
 	requireRawlogOutputAllowed(o_.scan.output, kScanProgram,
 							   {o_.ini, o_.histogram, o_.scan.input, imagesDirToRead(o_.scan.input)}, o_.scan.force);
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
-	const Rangefinder rf(params, ColourModel::load(o_.histogram));
+	const ColourModel colours = ColourModel::load(o_.histogram);
+	const Rangefinder rf(params, colours);
 	if (rf.compensationMissing())
 		MRPT_LOG_WARN_FMT("'%s' records no floor colour from training: exposure compensation is off; train it again with "
 						  "this omnirange-train to have it", o_.histogram.c_str());
@@ -76,13 +77,19 @@ RawlogScanSummary ScanApp::run()
 					  "%.1f %% rejected as outliers; %zu objects -> %s",
 					  s.images, share(s.hits), share(s.no_hit), share(s.too_close), share(s.outliers), s.objects,
 					  o_.scan.output.c_str());
-	for (const auto& w : scanWarnings(s, o_.histogram)) MRPT_LOG_WARN(w);
+	for (const auto& w : scanWarnings(s, o_.histogram, colours.trainedOnColour())) MRPT_LOG_WARN(w);
 	return s;
 }
 
-std::vector<std::string> scanWarnings(const RawlogScanSummary& s, const std::string& histogram)
+std::vector<std::string> scanWarnings(const RawlogScanSummary& s, const std::string& histogram, bool trained_on_colour)
 {
 	if (s.rays == 0) return {};
+	std::vector<std::string> warnings;
+	// The colours a histogram learned are not in a grey image: its rays end where the grey happens to fall.
+	if (trained_on_colour && s.grey_images > 0)
+		warnings.push_back(std::to_string(s.grey_images) + " of " + std::to_string(s.images) +
+						   " images are grey (three equal channels), but '" + histogram +
+						   "' was trained on a floor of colour: train it on this camera's images");
 	const double hit = shareOf(s.hits, s), too_close = shareOf(s.too_close, s);
 	const auto percent = [](double x) {
 		char b[32];
@@ -92,19 +99,22 @@ std::vector<std::string> scanWarnings(const RawlogScanSummary& s, const std::str
 	// Almost no hit at all is what a histogram trained on another floor, in
 	// other light or with another camera gives: worth saying, not an error.
 	if (hit < 2.0)
-		return {"only " + percent(hit) + " of the rays hit anything: was '" + histogram +
-				"' trained on this floor, light and camera?"};
+	{
+		warnings.push_back("only " + percent(hit) + " of the rays hit anything: was '" + histogram +
+						   "' trained on this floor, light and camera?");
+		return warnings;
+	}
 	// A ray is too close when the floor just beyond the base is not free:
 	// the robot's body inside the scan circle, or that floor darker or
 	// otherwise unlike training (light, the robot's own shadow). Said only
 	// when the histogram itself is not in doubt (above): a histogram of
 	// another floor ends every ray at the base too.
 	if (too_close >= 10.0)
-		return {percent(too_close) +
-				" of the rays ended at the robot's base (too close): check base_radius against the robot's body in "
-				"the image, and whether the floor around it looks as in training (light, the robot's shadow; "
-				"exposure_compensation)"};
-	return {};
+		warnings.push_back(percent(too_close) +
+						   " of the rays ended at the robot's base (too close): check base_radius against the robot's "
+						   "body in the image, and whether the floor around it looks as in training (light, the "
+						   "robot's shadow; exposure_compensation)");
+	return warnings;
 }
 
 }  // namespace omnirange::app

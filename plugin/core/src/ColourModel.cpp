@@ -3,6 +3,7 @@
 #include "omnirange/config/AtomicWrite.h"
 #include "omnirange/config/OptionsTable.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -73,6 +74,13 @@ ColourModel ColourModel::load(const std::string& path)
 		for (int c = 0; c < 3; ++c) std::memcpy(&m.reference[c], bytes.data() + at + 8 + c * sizeof(double), sizeof(double));
 	}
 	return m;
+}
+
+bool ColourModel::trainedOnColour() const
+{
+	constexpr double kGreySpread = 6.0;  // [levels of 255] a grey floor's mean channels in colour JPEGs differ less
+	const auto [lo, hi] = std::minmax_element(reference.begin(), reference.end());
+	return hasReference() && *hi - *lo > kGreySpread;
 }
 
 }  // namespace omnirange

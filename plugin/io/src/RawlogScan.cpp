@@ -30,8 +30,17 @@ struct Batch
 	std::vector<mrpt::obs::CObservationImage::Ptr> images;
 	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;  // one per image
 	std::vector<std::array<int, 4>> statuses;  // per image: its rays by RayStatus (Hit, NoHit, TooClose, Outlier)
+	std::vector<char> grey;  // per image: its three channels equal
 	std::vector<std::exception_ptr> errors;
 };
+
+/** Whether the BGR `image` has three equal channels: a grey camera's, or a log converted to grey. */
+bool isGrey(const cv::Mat& image)
+{
+	cv::Mat channels[3];
+	cv::split(image, channels);
+	return cv::countNonZero(channels[0] != channels[1]) == 0 && cv::countNonZero(channels[1] != channels[2]) == 0;
+}
 
 /** Decodes (and scans) the batch's images in parallel. With `adaptation`,
  * the floor is learned from each decoded image in file order first, and each
@@ -43,6 +52,7 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 	b.scans.assign(n, nullptr);
 	b.statuses.assign(n, {0, 0, 0, 0});
 	b.errors.assign(n, nullptr);
+	b.grey.assign(n, 0);
 	std::vector<cv::Mat> decoded(n);
 	const auto& cam = rf.params().camera;
 	const auto scan = [&](int k, const PixelClassifier* classifier) {
@@ -54,7 +64,9 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 		for (int k = r.start; k < r.end; ++k) try
 			{
 				decoded[k] = decodeImage(*b.images[k], cam);
-				if (!decode_only && !adaptation) scan(k, nullptr);
+				if (decode_only) continue;
+				b.grey[k] = isGrey(decoded[k]);
+				if (!adaptation) scan(k, nullptr);
 			}
 			catch (...)
 			{
@@ -118,6 +130,7 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 			sum.hits += of(RayStatus::Hit), sum.no_hit += of(RayStatus::NoHit);
 			sum.too_close += of(RayStatus::TooClose), sum.outliers += of(RayStatus::Outlier);
 			sum.rays += b.scans[k]->getScanSize();
+			sum.grey_images += b.grey[k];
 			scans.push_back(b.scans[k]);
 		}
 		if (!writer) continue;

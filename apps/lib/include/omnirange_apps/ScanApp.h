@@ -30,9 +30,11 @@ class ScanApp : public mrpt::system::COutputLogger
 	Options o_;
 };
 
-/** What a scan's summary should warn a user of, in one line or none: almost
- * no hit at all (a histogram of another floor, light or camera), or else
- * many rays ended at the base (the floor just beyond it not seen as free). */
-std::vector<std::string> scanWarnings(const RawlogScanSummary& s, const std::string& histogram);
+/** What a scan's summary should warn a user of, a line each: grey images
+ * scanned with a histogram `trained_on_colour` (ColourModel); almost no hit
+ * at all (a histogram of another floor, light or camera), or else many rays
+ * ended at the base (the floor just beyond it not seen as free). */
+std::vector<std::string> scanWarnings(const RawlogScanSummary& s, const std::string& histogram,
+									  bool trained_on_colour = false);
 
 }  // namespace omnirange::app

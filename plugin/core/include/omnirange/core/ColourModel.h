@@ -30,6 +30,10 @@ struct ColourModel
 
 	bool hasObstacles() const { return !obstacles.empty(); }
 	bool hasReference() const { return reference[0] + reference[1] + reference[2] > 0; }
+	/** Whether training saw a floor of colour: its reference's channels
+	 * differ by more than a grey floor's do in colour JPEGs. Grey images
+	 * (three equal channels) hold none of what it learned. */
+	bool trainedOnColour() const;
 
 	/** One file: the floor histogram's bytes, then the obstacles' if any
 	 * (each versioned and checksummed, ColourHistogram's format), then the

@@ -43,6 +43,7 @@ struct RawlogScanSummary
 	std::size_t no_hit{0}, too_close{0}, outliers{0};
 	std::size_t skipped{0};  ///< bad images skipped (skip_bad_images only)
 	std::size_t images_copied{0};  ///< the input's image files copied, not hard-linked (another file system)
+	std::size_t grey_images{0};  ///< of the images scanned, those whose three channels are equal (a grey camera's)
 	std::vector<std::string> skipped_reasons;  ///< why, one line per skipped image
 };
 
