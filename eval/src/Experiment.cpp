@@ -33,6 +33,8 @@ namespace omnirange::eval
 namespace
 {
 constexpr const char* kProgram = "omnirange-experiment";
+/** The report's copy of the sensor's icp-slam ini (Experiment::mrptIni()), which the guarded matcher reads too. */
+std::string icpIniOf(const SensorMaps& s) { return "icp-slam_" + s.tag + ".ini"; }
 constexpr unsigned long long kFullDisk = 1 << 20;  // [bytes] free: too few for any stage's output
 
 mrpt::maps::COccupancyGridMap2D loadGrid(const std::string& file)
@@ -64,6 +66,14 @@ Experiment::Experiment(ExperimentConfig config)
 											 engine + "'s map for the " + sensor.tag + " from '" + own +
 											 "' in its report, and the program empties the folder it names first: set "
 											 "logOutput_dir = " + own);
+	c_.requireMrptInisAsChecked();  // after every check of them, here and in the config's loading
+}
+
+std::string Experiment::mrptIni(const std::string& ini, const std::string& name) const
+{
+	// The bytes checked before the run, not the file now: MRPT's program reads its ini when it starts, minutes on.
+	writeFileAtomically(out_ + "/" + name, c_.mrpt_ini_text.at(ini));
+	return name;
 }
 
 std::string Experiment::slamFolder(const std::string& engine, const std::string& tag)
@@ -291,8 +301,9 @@ void Experiment::mapWithGroundTruth()
 	{
 		const std::string prefix = "gt_" + s.tag;
 		saveSimplemap(simplemapWithGroundTruth(scanned_, s.label, gt_path_), out_ + "/" + prefix + ".simplemap");
-		runProgram({"observations2map", s.map_ini, prefix + ".simplemap", prefix}, out_,
-				   "observations2map_" + s.tag + ".log");
+		runProgram({"observations2map", mrptIni(s.map_ini, "observations2map_" + s.tag + ".ini"), prefix + ".simplemap",
+					prefix},
+				   out_, "observations2map_" + s.tag + ".log");
 		const auto built = resampledLike(loadGrid(out_ + "/" + prefix + "_gridmap_no00.gridmap"), truth_);
 		s.gt = assess(built, s.label + ", ground-truth poses", s.gt_check_marked, figures);
 	}
@@ -307,17 +318,18 @@ void Experiment::runIcpSlam()
 	std::vector<std::pair<std::string, cv::Mat>> figures{{"true map", paperStyle(truth_)}};
 	for (auto& s : r_.sensors)
 	{
-		for (const auto& k : slam::icpKeysMrptIgnores(s.icp_ini))
+		const std::string ini = out_ + "/" + mrptIni(s.icp_ini, icpIniOf(s));
+		for (const auto& k : slam::icpKeysMrptIgnores(ini))
 			MRPT_LOG_WARN_STREAM("icp-slam ini '" << s.icp_ini << "': [ICP] " << k
 												  << " is not read by MRPT 2.5 and keeps its default");
-		for (const auto& setting : slam::mappingSettingsGuardedIcpIgnores(s.icp_ini))
+		for (const auto& setting : slam::mappingSettingsGuardedIcpIgnores(ini))
 			MRPT_LOG_WARN_STREAM("icp-slam ini '" << s.icp_ini << "': [MappingApplication] " << setting
 												  << " is followed by icp-slam, not by the guarded matcher");
 		const std::string only = "only_" + s.tag + ".rawlog";
 		runProgram({"rawlog-edit", "--keep-label", s.label + "," + kOdometryLabel, "-i", "scanned.rawlog", "-o", only,
 					"-w"},
 				   out_, "rawlog-edit_" + s.tag + ".log");
-		runProgram({"icp-slam", s.icp_ini, only}, out_, "icp-slam_" + s.tag + ".log");
+		runProgram({"icp-slam", icpIniOf(s), only}, out_, "icp-slam_" + s.tag + ".log");
 		scoreSlam("icp-slam", slamFolder("icp-slam", s.tag), s, s.icp, s.icp_path, s.icp_check_marked, figures);
 	}
 	writeImageAtomically(out_ + "/maps_icp.png", sideBySide(figures));
@@ -341,7 +353,7 @@ void Experiment::runGuardedIcp()
 	for (auto& s : r_.sensors)
 	{
 		const slam::GuardedIcpResult g = slam::runGuardedIcp(out_ + "/only_" + s.tag + ".rawlog", s.label, kOdometryLabel,
-												 slam::GuardedIcpOptions::fromIniFile(s.icp_ini));
+												 slam::GuardedIcpOptions::fromIniFile(out_ + "/" + icpIniOf(s)));
 		MRPT_LOG_INFO_STREAM("guarded ICP, " << s.label << ": " << g.matches << " matches, " << g.refused_jumps
 											 << " refused, " << g.weak_directions << " weak directions left to the odometry, "
 											 << g.loops << " loops closed");
@@ -365,7 +377,8 @@ void Experiment::runRbpfSlam()
 		if (s.rbpf_ini.empty()) continue;
 		const std::string frames = "frames_" + s.tag + ".rawlog";
 		writeSensoryFrameFormat(out_ + "/only_" + s.tag + ".rawlog", out_ + "/" + frames);
-		runProgram({"rbpf-slam", s.rbpf_ini, frames}, out_, "rbpf-slam_" + s.tag + ".log");
+		runProgram({"rbpf-slam", mrptIni(s.rbpf_ini, "rbpf-slam_" + s.tag + ".ini"), frames}, out_,
+				   "rbpf-slam_" + s.tag + ".log");
 		double unused = 0;
 		scoreSlam("rbpf-slam", slamFolder("rbpf-slam", s.tag), s, s.rbpf, s.rbpf_path, unused, figures);
 	}

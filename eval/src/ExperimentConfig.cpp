@@ -11,6 +11,7 @@
 #include <omnirange/train/RawlogTraining.h>
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -55,6 +56,17 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 
 namespace
 {
+/** The bytes of `path` ("" if it cannot be read: its checks say why). */
+std::string textOf(const std::string& path)
+{
+	// Not a FIFO (it would block) nor more than an ini can be: those its checks refuse.
+	std::error_code ec;
+	if (!fs::is_regular_file(path, ec) || fs::file_size(path, ec) > (1u << 20)) return "";
+	std::ifstream f(path, std::ios::binary);
+	std::ostringstream text;
+	text << f.rdbuf();
+	return text.str();
+}
 /** Resolves the files the [experiment] section names, each against the
  * folder of the ini that names it (the experiment's own, or a base's). */
 void resolvePaths(ExperimentConfig& c, const LayeredIni& layers)
@@ -140,6 +152,14 @@ void ExperimentConfig::requireEnoughFrames() const
 								 std::to_string(train_every) + "): too few for learn = true to train on some and validate on others");
 }
 
+void ExperimentConfig::requireMrptInisAsChecked() const
+{
+	for (const auto& [ini, text] : mrpt_ini_text)
+		if (textOf(ini) != text)
+			throw std::runtime_error("'" + ini + "' changed while the experiment checked it (an edit meanwhile): run it " +
+									 "again");
+}
+
 ExperimentConfig ExperimentConfig::load(const std::string& ini)
 {
 	if (!fs::is_regular_file(ini)) throw std::runtime_error("cannot open experiment ini '" + ini + "'");
@@ -151,6 +171,10 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 		const auto& cfg = *layers.merged;
 		table().load(c, cfg, "experiment");
 		resolvePaths(c, layers);
+		// What is checked is what the programs get: their inis' bytes, taken first (requireMrptInisAsChecked()).
+		for (const auto* mrpt_ini : {&c.icp_laser_ini, &c.icp_omni_ini, &c.map_laser_ini, &c.map_omni_ini,
+									 &c.rbpf_laser_ini, &c.rbpf_omni_ini})
+			if (!mrpt_ini->empty()) c.mrpt_ini_text[*mrpt_ini] = textOf(*mrpt_ini);
 		// Every ini handed to an MRPT program read as strictly as MRPT's own keys allow, before any work.
 		slam::requireStrictIcpSection(c.icp_laser_ini), slam::requireStrictIcpSection(c.icp_omni_ini);
 		slam::requireStrictObservationsToMapIni(c.map_laser_ini), slam::requireStrictObservationsToMapIni(c.map_omni_ini);

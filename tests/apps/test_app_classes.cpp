@@ -7,6 +7,7 @@
 #include <omnirange_apps/CommandLine.h>
 #include <omnirange_apps/ScanApp.h>
 #include <omnirange_apps/TrainApp.h>
+#include <omnirange_eval/Experiment.h>
 #include <omnirange_eval/ExperimentConfig.h>
 #include <omnirange_eval/Suite.h>
 #include <omnirange/config/ErrorText.h>
@@ -479,6 +480,27 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	const eval::AccuracyResult acc = test::scanAndScore(t.learn_ini, t.output, kSample, dir, 12);
 	EXPECT_EQ(acc.frames, 8);
 	EXPECT_LT(acc.stats.meanAbs(), 0.1375);  // within the paper's worst Table II figure
+}
+
+TEST(AppClasses, AnMrptProgramsIniEditedAfterItWasCheckedIsNotRun)
+{
+	// The factory's experiment with its omnicam icp-slam ini in a copy of the user's, edited once checked.
+	const std::string dir = workDir("mrpt_ini_edited"), icp = dir + "/icp.ini", ini = kSource + "/ini/tmp-edited.ini";
+	fs::copy_file(kSource + "/ini/icp-slam-omniscan.ini", icp);
+	std::ofstream(ini) << readText(kSource + "/ini/factory.ini") << "icp_omni_ini = " << icp << "\n";
+	const auto config = eval::ExperimentConfig::load(ini);
+	fs::remove(ini);
+	std::ofstream(icp, std::ios::app) << "\n; an edit while the experiment starts\n";
+	try
+	{
+		eval::Experiment run(config);
+		ADD_FAILURE() << "an ini other than the one checked would be run";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("changed while the experiment checked it"), std::string::npos) << e.what();
+	}
+	EXPECT_EQ(config.mrpt_ini_text.at(icp), readText(kSource + "/ini/icp-slam-omniscan.ini"));  // what it would give
 }
 
 TEST(AppClasses, EveryListedExperimentLoads)

@@ -32,6 +32,11 @@ TEST(Experiment, SmallFactoryRunEndToEnd)
 	for (const std::string f : {"report.md", "maps_gt.png", "maps_icp.png", "accuracy_histogram.png", "fig1_fused.png",
 								"gt_laser_gridmap_no00.gridmap", "icp_slam_omniscan/log_estimated_path.txt"})
 		EXPECT_TRUE(fs::exists(dir + "/report/" + f)) << f;
+	// Each MRPT program ran with the copy of its ini checked before the stages, kept in the report.
+	for (const auto& [copy, given] : {std::pair{"icp-slam_omniscan.ini", "icp-slam-omniscan.ini"},
+									  std::pair{"observations2map_laser.ini", "observations2map-laser.ini"},
+									  std::pair{"rbpf-slam_omniscan.ini", "rbpf-slam-omniscan.ini"}})
+		EXPECT_EQ(readText(dir + "/report/" + copy), readText(kSource + "/ini/" + given)) << copy;
 	const std::string report = readText(dir + "/report/report.md");
 	EXPECT_NE(report.find("The robot: `" + kSource + "/ini/robot-omnip2dx-png.ini`"), std::string::npos);
 	EXPECT_EQ(report.find("**Warning:** the robot's camera"), std::string::npos);  // the same camera reads the images

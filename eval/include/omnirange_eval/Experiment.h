@@ -108,6 +108,9 @@ class Experiment : public mrpt::system::COutputLogger
 	/** The report's folder of `engine`'s run for the sensor `tag` ("icp_slam_omniscan"):
 	 * where an MRPT program's ini must send its logOutput_dir. */
 	static std::string slamFolder(const std::string& engine, const std::string& tag);
+	/** Writes the MRPT program's `ini` as it was checked (ExperimentConfig::mrpt_ini_text) into the
+	 * report as `name`, and returns `name`: the program is given this copy, not the file. */
+	std::string mrptIni(const std::string& ini, const std::string& name) const;
 	/** A SLAM engine's final map and path for one sensor, against the truth:
 	 * the map in `dir`/_finalmap_.simplemap of the report. */
 	void scoreSlam(const std::string& engine, const std::string& dir, const SensorMaps& s, MapMetrics& map,

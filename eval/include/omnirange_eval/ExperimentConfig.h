@@ -7,6 +7,7 @@
 #include <omnirange/config/OptionsTable.h>
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ struct ExperimentConfig
 	std::string check_region;
 	std::array<double, 4> check_box{};  ///< check_region parsed (not a key)
 	RangefinderParams rangefinder;
+	/** Each MRPT program's ini (icp-slam's, observations2map's, rbpf-slam's)
+	 * as it was checked, by its path (not a key): the program is given a copy
+	 * of these bytes, whatever the file holds by the time it runs. */
+	std::map<std::string, std::string> mrpt_ini_text;
 
 	bool hasCheckRegion() const { return !check_region.empty(); }
 	/** The frames the simulation will make: the route's, at most max_frames. */
@@ -51,6 +56,9 @@ struct ExperimentConfig
 	 * leave none to score after training, or (learn) too few pairs to train
 	 * and validate on: max_frames (or -n) may be small. */
 	void requireEnoughFrames() const;
+	/** Throws std::runtime_error naming the first MRPT program's ini that
+	 * holds other bytes now than when it was checked (edited meanwhile). */
+	void requireMrptInisAsChecked() const;
 
 	static const OptionsTable<ExperimentConfig>& table();
 	/** Reads [experiment] and [rangefinder] of `ini` and checks everything
