@@ -242,24 +242,6 @@ std::string besideAs(const std::string& target, const std::string& what, const s
 	return (t.parent_path() / ("." + t.filename().string() + "." + what + "-" + pid)).string();
 }
 
-/** The journal beside `target`, if any: its path, and its run ("PID START"). */
-std::pair<std::string, std::string> journalOf(const std::string& target)
-{
-	const fs::path t(target);
-	const fs::path dir = t.parent_path().empty() ? "." : t.parent_path();
-	const std::string prefix = "." + t.filename().string() + ".commit-";
-	std::error_code ec;
-	for (const auto& e : fs::directory_iterator(dir, ec))
-		if (e.path().filename().string().rfind(prefix, 0) == 0 && fs::is_regular_file(e.symlink_status(ec)))
-		{
-			std::ifstream f(e.path());
-			std::string run;
-			std::getline(f, run);
-			if (run.rfind("run ", 0) == 0) return {e.path().string(), run.substr(4)};
-		}
-	return {};
-}
-
 /** One file of a set a journal names: where it goes, where its old file went
  * ("" if it had none), and the inode of the new file (which a rename keeps). */
 struct SetFile
@@ -281,6 +263,39 @@ std::vector<SetFile> setIn(const std::string& journal)
 			set.push_back(file);
 	}
 	return set;
+}
+
+/** The journal of a set `target` is in, if any: its own (.NAME.commit-PID
+ * beside it), or one beside it that names it (its own removed first by a run
+ * killed finishing); its path, and its run ("PID START"). */
+std::pair<std::string, std::string> journalOf(const std::string& target)
+{
+	const fs::path t(target);
+	const fs::path dir = t.parent_path().empty() ? "." : t.parent_path();
+	const std::string own = "." + t.filename().string() + ".commit-";
+	const auto runOf = [](const fs::path& journal) {
+		std::ifstream f(journal);
+		std::string run;
+		std::getline(f, run);
+		return run.rfind("run ", 0) == 0 ? run.substr(4) : std::string();
+	};
+	std::error_code ec;
+	std::vector<fs::path> others;
+	for (const auto& e : fs::directory_iterator(dir, ec))
+	{
+		const std::string name = e.path().filename().string();
+		if (name.front() != '.' || name.find(".commit-") == std::string::npos || !fs::is_regular_file(e.symlink_status(ec)))
+			continue;
+		if (name.rfind(own, 0) != 0)
+			others.push_back(e.path());
+		else if (const std::string run = runOf(e.path()); !run.empty())
+			return {e.path().string(), run};
+	}
+	for (const auto& journal : others)
+		for (const auto& f : setIn(journal.string()))
+			if (std::error_code same; f.target == target || fs::equivalent(f.target, target, same))
+				if (const std::string run = runOf(journal); !run.empty()) return {journal.string(), run};
+	return {};
 }
 
 /** The inode of `path` ("" if there is none): what tells a run's new file from one put there since. */

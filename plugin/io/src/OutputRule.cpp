@@ -169,6 +169,20 @@ std::vector<std::string> withWhatInputsBring(const std::vector<std::string>& inp
 	return all;
 }
 
+/** `inner` is `outer` or lies below it, by the device and inode of each
+ * folder up from it: the same folder reached by another path (a bind mount)
+ * is found too. Only what exists is compared. */
+bool withinByIdentity(const fs::path& inner, const fs::path& outer)
+{
+	std::error_code ec;
+	if (!fs::is_directory(outer, ec)) return false;
+	for (fs::path p = inner;; p = p.parent_path())
+	{
+		if (fs::exists(p, ec) && fs::equivalent(p, outer, ec)) return true;
+		if (p == p.parent_path() || p.empty()) return false;
+	}
+}
+
 /** The same file or folder: by path through links, or by device and inode (a hard link). */
 bool same(const fs::path& a, const fs::path& b)
 {
@@ -206,9 +220,10 @@ void requireApartFromInputs(const std::string& output, OutputKind kind, const st
 			throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
 		// Also as written: a folder that reaches an input through a link holds it too.
 		const bool holds_as_written = within(input_as_written, abs);
-		if (within(input, out) || holds_as_written)
+		// By identity too, but not through a link replaced as a link (nothing it names is touched).
+		if (within(input, out) || holds_as_written || (!link_itself && withinByIdentity(input, out)))
 			throw std::runtime_error("the output '" + output + "' holds the input '" + in + "': refusing to replace it");
-		if (within(out, input))
+		if (within(out, input) || withinByIdentity(link_itself ? out.parent_path() : out, input))
 			throw std::runtime_error("the output '" + output + "' is inside the input '" + in + "': write it elsewhere");
 	}
 }
@@ -729,7 +744,8 @@ void noteInMarker(const std::string& dir, const std::string& line)
 	errno = 0;
 	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
 	f << line << "\n";
-	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
+	f.close();
+	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string(), "is the disk full?"));
 }
 
 void unnoteInMarker(const std::string& dir, const std::string& line)
@@ -816,9 +832,11 @@ std::string firstUnlistedIn(const std::string& dir)
 
 void markOutputFolder(const std::string& dir, const std::string& program)
 {
+	errno = 0;
 	std::ofstream f(fs::path(dir) / kOutputMarker);
 	f << program << "\nrun " << ::getpid() << "\n";  // the run: a leftover of it is told from a copy
-	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string()));
+	f.close();  // a full disk fails here, not at the buffered writes: an empty marker would name no one
+	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string(), "is the disk full?"));
 }
 
 bool isOutputFolderOf(const std::string& dir, const std::string& program)
