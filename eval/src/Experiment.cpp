@@ -145,11 +145,18 @@ Metrics Experiment::run()
 		// before, unless a user has put something of theirs in there since; listed,
 		// so that the next failed run can tell.
 		std::string failed = report + ".failed";
-		listOutputFolder(staging);
+		try
+		{
+			listOutputFolder(staging);
+		}
+		catch (const std::exception&)  // not listed (its marker cannot be written): the first error is the one to say
+		{
+		}
+		std::error_code ec;
 		if (fs::exists(failed) && (!isOutputFolderOf(failed, kProgram) || !firstUnlistedIn(failed).empty()))
 			failed = staging;
-		else
-			fs::remove_all(failed), fs::rename(staging, failed);
+		else if (fs::remove_all(failed, ec), fs::rename(staging, failed, ec); ec)
+			failed = staging;  // it cannot be moved (made read-only meanwhile): said where it is, the error kept
 		// The message names the files where they are now, not in the staging folder they were written in.
 		throw std::runtime_error(namingTheOutput(e.what(), staging, failed) + " (partial output in '" + failed + "'; '" +
 								 report + "' is as it was)");
