@@ -481,6 +481,15 @@ TEST(OutputRule, AFolderItsRunWasKilledFillingIsRemovedWholeAndOneItFinishedIsLi
 	EXPECT_EQ(firstUnlistedIn(kept), "");
 	write(kept + "/notes.txt", "a user's");
 	EXPECT_EQ(firstUnlistedIn(kept), "notes.txt");
+	// A staged folder output (omnirange-slam's) is filled so too: killed in it, its staging folder is all its own.
+	const std::string slam = fresh("staged_fill") + "/S";
+	StagedFolder staged(slam, "omnirange-test", {}, false);
+	staged.fill([&] {
+		write(staged.path() + "/_finalmap_.simplemap", "ours");
+		EXPECT_NE(read(staged.path() + "/" + kOutputMarker).find("\nfilling\n"), std::string::npos);
+	});
+	EXPECT_EQ(read(staged.path() + "/" + kOutputMarker).find("\nfilling\n"), std::string::npos);
+	EXPECT_EQ(firstUnlistedIn(staged.path()), "");
 }
 
 TEST(OutputRule, AFolderOutputNamedDotIsTheFolderItself)
@@ -1145,6 +1154,10 @@ TEST(OutputRule, AnOutputOfSeveralFilesGoesInAllOrNoneAndAKilledRunsHalfIsUndone
 	EXPECT_EQ(read(d + "/d.txt"), "killed run's d");
 	EXPECT_NO_THROW(requireWholeSet(d + "/d.txt"));
 	EXPECT_EQ(leftovers(), 0);
+	// A journal's own temporary (a run killed writing it) names no set: b is read.
+	write(d + "/..b.txt.commit-999982.tmp-999982", "run 999982 1\n" + d + "/b.txt\t\t1\n");
+	EXPECT_NO_THROW(requireWholeSet(d + "/b.txt"));
+	fs::remove(d + "/..b.txt.commit-999982.tmp-999982");
 	fs::remove(d + "/d.txt"), write(d + "/b.txt", "old b");
 	// A file put where a killed run's new one was (a user's, since) is not taken out by the undoing.
 	write(d + "/e.txt", "the user's e");

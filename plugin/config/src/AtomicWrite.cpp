@@ -283,8 +283,11 @@ std::pair<std::string, std::string> journalOf(const std::string& target)
 	std::vector<fs::path> others;
 	for (const auto& e : fs::directory_iterator(dir, ec))
 	{
+		// ".NAME.commit-PID" only: not a journal's own temporary ("..NAME.commit-PID.tmp-PID"), which names no set yet.
 		const std::string name = e.path().filename().string();
-		if (name.front() != '.' || name.find(".commit-") == std::string::npos || !fs::is_regular_file(e.symlink_status(ec)))
+		const auto at = name.rfind(".commit-");
+		if (name.front() != '.' || at == std::string::npos || at + 8 == name.size() ||
+			name.find_first_not_of("0123456789", at + 8) != std::string::npos || !fs::is_regular_file(e.symlink_status(ec)))
 			continue;
 		if (name.rfind(own, 0) != 0)
 			others.push_back(e.path());

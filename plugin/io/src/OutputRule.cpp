@@ -699,7 +699,7 @@ void StagedFolder::fill(const std::function<void()>& write) const
 {
 	try
 	{
-		write();
+		fillListed(staging_, write);  // killed while it writes, the folder is all this run's: the next run removes it
 	}
 	catch (const std::exception& e)
 	{
