@@ -443,6 +443,17 @@ TEST(OutputRule, WhatHasTheNameOfThisRunsTemporaryIsTheUsersAndIsNeitherEmptiedN
 	}
 	EXPECT_EQ(read(d + "/a.txt"), "old a");
 	EXPECT_EQ(read(d + "/.a.txt.old-" + pid), "the user's");
+
+	// The user's file where this run would write its temporary (not of the output's kind, so no leftover):
+	// refused before anything is written, for a rawlog and for any other file.
+	write(d + "/.third.rawlog.tmp-" + pid, "the user's notes");
+	EXPECT_THROW(writeOneImageLog(d + "/third.rawlog", 4), std::runtime_error);
+	EXPECT_EQ(read(d + "/.third.rawlog.tmp-" + pid), "the user's notes");
+	EXPECT_FALSE(fs::exists(d + "/third.rawlog"));
+	write(d + "/.b.txt.tmp-" + pid, "the user's notes");
+	EXPECT_THROW(writeFileAtomically(d + "/b.txt", "new b"), std::runtime_error);
+	EXPECT_EQ(read(d + "/.b.txt.tmp-" + pid), "the user's notes");
+	EXPECT_FALSE(fs::exists(d + "/b.txt"));
 }
 
 TEST(OutputRule, AFolderItsRunWasKilledFillingIsRemovedWholeAndOneItFinishedIsListed)

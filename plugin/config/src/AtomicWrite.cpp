@@ -89,6 +89,14 @@ bool isTemporaryName(const std::string& name)
 	return what == "staging" || (name.front() == '.' && dot > 0 && (what == "tmp" || what == "old" || what == "commit"));
 }
 
+void requireNothingAt(const std::string& temporary, const std::string& what)
+{
+	struct stat st{};
+	if (::lstat(temporary.c_str(), &st) == 0)
+		throw std::runtime_error("'" + temporary + "', the name of this run's " + what + ", is taken by what is not " +
+								 "this program's to remove: move it away");
+}
+
 void renameNotReplacing(const std::string& from, const std::string& to, std::error_code& ec)
 {
 	ec.clear();
@@ -103,6 +111,7 @@ void renameNotReplacing(const std::string& from, const std::string& to, std::err
 StagedFile::StagedFile(const std::string& given, const std::function<void(const std::string&)>& write)
 	: path_(replacedFileOf(given)), tmp_(temporaryOf(path_))
 {
+	requireNothingAt(tmp_, "temporary file");
 	temporaries::add(tmp_);
 	try
 	{

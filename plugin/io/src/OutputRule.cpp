@@ -647,14 +647,6 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	}
 }
 
-void requireNothingAt(const std::string& temporary, const std::string& what)
-{
-	std::error_code ec;
-	if (fs::exists(fs::symlink_status(temporary, ec)))
-		throw std::runtime_error("'" + temporary + "', the name of this run's " + what + ", is taken by what is not " +
-								 "this program's to remove: move it away");
-}
-
 namespace
 {
 /** `path` as a folder output: "." or ".." (`-o .` in a folder made for it) by

@@ -116,7 +116,9 @@ RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, 
 {
 	recoverLeftoversOf(path_, OutputKind::Rawlog);  // what killed runs of this output left
 	recoverLeftoversOf(images_, OutputKind::Folder, owner_);
-	requireNothingAt(tmp_images_, "images folder");  // what is left there is not a temporary of ours to remove
+	// What is left there is not a temporary of ours to remove.
+	requireNothingAt(tmp_path_, "temporary file");
+	requireNothingAt(tmp_images_, "images folder");
 	temporaries::add(tmp_path_);
 	temporaries::add(tmp_images_);
 	errno = 0;

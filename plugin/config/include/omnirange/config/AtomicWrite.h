@@ -49,6 +49,12 @@ std::string temporaryOf(const std::string& target);
  * ".NAME.commit-PID", "NAME.staging-PID"): an output so named would be taken
  * for a killed run's leftover by a later run. */
 bool isTemporaryName(const std::string& name);
+/** Throws std::runtime_error when something is at `temporary`, the name
+ * this run is about to make its `what` (after recoverLeftoversOf() took
+ * what was a killed run's): it is the user's, and is neither emptied nor
+ * replaced. In a container every run is PID 1, so the name is known in
+ * advance. */
+void requireNothingAt(const std::string& temporary, const std::string& what);
 /** Renames `from` to `to` unless `to` exists (a name of the user's that
  * merely has the form of a run's temporary is never replaced); the
  * system's error otherwise (EEXIST when `to` is there). */

@@ -179,10 +179,5 @@ std::string halfReplaced(const std::string& target);
  * empty folder of such a name goes too (a run killed removing it). */
 void recoverLeftoversOf(const std::string& target, OutputKind kind = OutputKind::Folder,
 						const std::string& program = "");
-/** Throws std::runtime_error when something is at `temporary`, the name
- * this run is about to make its `what` (after recoverLeftoversOf() took
- * what was a killed run's): it is the user's, and is neither emptied nor
- * replaced. */
-void requireNothingAt(const std::string& temporary, const std::string& what);
 
 }  // namespace omnirange
