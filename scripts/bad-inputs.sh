@@ -65,6 +65,7 @@ variant empty_value 'threshold ='
 sed 's/^base = .*/base = nowhere.ini/' f.ini > no_base.ini
 printf '[laser]\nfov = 180\n' > renamed_robot.ini
 printf '[lazer]\nfov_deg = 90\n' > misspelt_robot.ini
+printf '[robot]\nspeed = 0.01\nframe_rate = 100\n' > slow_robot.ini
 
 # --- running ------------------------------------------------------------
 declare -a inputs_sums
@@ -162,6 +163,7 @@ sim "route: a waypoint at 1e300" error -w w.world -r far.route -n 2
 sim "world: a line cut short" error -w broken.world -r w.route -n 2
 sim "route: a word for a number" error -w w.world -r broken.route -n 2
 sim "frames -n -1" error -w w.world -r w.route -n -1
+sim "route of more frames than any run writes (1 cm/s at 100 Hz)" error -w w.world -r w.route -c slow_robot.ini
 sim "threads -j 70000" error -w w.world -r w.route -n 2 -j 70000
 sim "robot ini with a renamed key (fov)" error -w w.world -r w.route -n 2 -c renamed_robot.ini
 sim "robot ini with a misspelt section" error -w w.world -r w.route -n 2 -c misspelt_robot.ini

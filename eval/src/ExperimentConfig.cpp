@@ -126,8 +126,15 @@ void checkSimulatorInputs(ExperimentConfig& c)
 int ExperimentConfig::plannedFrames() const
 {
 	const auto r = sim::RobotParams::loadFile(robot).robot;
-	const int route_frames = static_cast<int>(sim::sampleTrajectory(sim::loadRoute(route), r.speed, r.turn_rate, 1.0 / r.frame_rate).size());
-	return max_frames > 0 ? std::min(max_frames, route_frames) : route_frames;
+	const auto legs = sim::loadRoute(route);
+	try
+	{
+		return static_cast<int>(sim::sampleTrajectory(legs, r.speed, r.turn_rate, 1.0 / r.frame_rate, max_frames).size());
+	}
+	catch (const std::runtime_error& e)
+	{
+		throw std::runtime_error("'" + route + "': " + e.what());
+	}
 }
 
 int ExperimentConfig::trainingFrames(int frames) const

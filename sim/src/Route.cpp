@@ -83,7 +83,7 @@ void checkRouteClear(const Route& route, const World& world, double clearance, d
 		}
 }
 
-std::vector<Pose2> sampleTrajectory(const Route& route, double speed, double turn_rate, double dt)
+std::vector<Pose2> sampleTrajectory(const Route& route, double speed, double turn_rate, double dt, int max_frames)
 {
 	if (!(speed > 0) || !(turn_rate > 0) || !(dt > 0))
 		throw std::invalid_argument("speed, turn_rate and the frame period must be > 0");
@@ -105,10 +105,20 @@ std::vector<Pose2> sampleTrajectory(const Route& route, double speed, double tur
 		const double dist = (w[i + 1] - w[i]).norm();
 		segs.push_back({{w[i].x, w[i].y, yaw}, dist, 0, dist / speed});
 	}
+	double total = 0;
+	for (const auto& s : segs) total += s.duration;
+	const double frames = std::floor(total / dt) + 1;
+	if (frames > kMaxRouteFrames && (max_frames <= 0 || max_frames > kMaxRouteFrames))
+	{
+		std::ostringstream m;
+		m << "the route is " << std::llround(std::min(frames, 1e18)) << " frames long (" << total << " s at "
+		  << 1.0 / dt << " Hz); at most " << kMaxRouteFrames << " are written: stop sooner with max_frames (-n)";
+		throw std::runtime_error(m.str());
+	}
 	std::vector<Pose2> out;
 	double t = 0, seg_start = 0;
 	std::size_t k = 0;
-	for (;; t += dt)
+	for (; max_frames <= 0 || static_cast<int>(out.size()) < max_frames; t += dt)
 	{
 		while (k < segs.size() && t > seg_start + segs[k].duration) seg_start += segs[k++].duration;
 		if (k == segs.size()) break;

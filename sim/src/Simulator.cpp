@@ -89,8 +89,14 @@ SimInputs readInputs(const SimOptions& o)
 	checkRouteClear(route, in.world, in.robot.robot.clearance, in.robot.omnicam.camera.h);
 	in.waypoints = route.waypoints.size();
 	in.dt = 1.0 / in.robot.robot.frame_rate;
-	in.poses = sampleTrajectory(route, in.robot.robot.speed, in.robot.robot.turn_rate, in.dt);
-	if (o.max_frames > 0 && static_cast<int>(in.poses.size()) > o.max_frames) in.poses.resize(o.max_frames);
+	try
+	{
+		in.poses = sampleTrajectory(route, in.robot.robot.speed, in.robot.robot.turn_rate, in.dt, o.max_frames);
+	}
+	catch (const std::runtime_error& e)
+	{
+		throw std::runtime_error("'" + o.route_file + "': " + e.what());
+	}
 	return in;
 }
 

@@ -147,6 +147,20 @@ TEST(Route, TrajectoryDrivesAndTurns)
 	EXPECT_GT(poses.back().y, 1.7);
 }
 
+TEST(Route, ARouteOfMoreFramesThanAnyRunWritesIsRefusedBeforeSamplingUnlessCutShort)
+{
+	// 400 m at 1 mm/s, 10 Hz: 4 million frames, gigabytes of poses and terabytes of images.
+	const auto route = loadRoute(test::writeFile("slow.route", "0 0\n200 0\n0 0\n"));
+	const std::string e = errorOf([&] { sampleTrajectory(route, 0.001, 0.5, 0.1); });
+	EXPECT_NE(e.find("frames long"), std::string::npos) << e;
+	EXPECT_NE(e.find(std::to_string(kMaxRouteFrames)), std::string::npos) << e;
+	EXPECT_EQ(sampleTrajectory(route, 0.001, 0.5, 0.1, 25).size(), 25u);
+	EXPECT_THROW(sampleTrajectory(route, 0.001, 0.5, 0.1, kMaxRouteFrames + 1), std::runtime_error);
+	// Just under the cap (99.9 m at 1 cm/s, 10 Hz: 99901 frames): written in full.
+	const auto under_cap = loadRoute(test::writeFile("under_cap.route", "0 0\n99.9 0\n"));
+	EXPECT_NEAR(static_cast<double>(sampleTrajectory(under_cap, 0.01, 0.5, 0.1).size()), 99901.0, 1.0);
+}
+
 TEST(WorldFile, FarAwaySolidsAndWaypointsAreErrorsNotMemory)
 {
 	// Once: bad_alloc for the maps of a world 2000 km wide; a hang for a waypoint at 1e300.

@@ -3,6 +3,7 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange/io/Progress.h>
+#include <omnirange_sim/Route.h>
 
 namespace omnirange::app
 {
@@ -15,7 +16,7 @@ SimApp::Options SimApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> route("r", "route", "route file: one 'x y' waypoint per line [m]", true, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> robot("c", "robot", "robot ini (default: built-in OmniP2DX-like robot)", false, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "rawlog to write (NAME.rawlog; images go to NAME_Images/)", true, "", "FILE", cmd);
-	TCLAP::ValueArg<int> frames("n", "max-frames", "stop after this many frames (0: the whole route)", false, s.max_frames, "N", cmd);
+	TCLAP::ValueArg<int> frames("n", "max-frames", "stop after this many frames (0: the whole route, which may give at most " + std::to_string(sim::kMaxRouteFrames) + ")", false, s.max_frames, "N", cmd);
 	TCLAP::ValueArg<int> threads("j", "threads", "rendering threads", false, s.threads, "N", cmd);
 	TCLAP::ValueArg<std::string> format("f", "image-format", "png or jpg, overriding the robot ini", false, "", "FMT", cmd);
 	ForceArg force(cmd);

@@ -30,9 +30,17 @@ Route loadRoute(const std::string& path);
  * `robot_height` [m]. */
 void checkRouteClear(const Route& route, const World& world, double clearance, double robot_height);
 
+/** The most frames one route may give: each is an image of 0.1 to 1 MB and
+ * a fraction of a second's rendering, so this is hours of driving and tens
+ * of GB; a route past it is a slip (a speed or coordinates off by powers of
+ * ten), found before anything is written. */
+constexpr int kMaxRouteFrames = 100000;
+
 /** Poses every `dt` seconds driving at `speed` [m/s], turning at `turn_rate`
- * [rad/s]; the first pose faces the first leg. */
+ * [rad/s]; the first pose faces the first leg. Stops after `max_frames`
+ * poses (0: the whole route); throws std::runtime_error, before sampling,
+ * when that would be more than kMaxRouteFrames. */
 std::vector<Pose2> sampleTrajectory(
-	const Route& route, double speed, double turn_rate, double dt);
+	const Route& route, double speed, double turn_rate, double dt, int max_frames = 0);
 
 }  // namespace omnirange::sim
