@@ -22,14 +22,22 @@ std::string lastLine(const std::string& file)
 {
 	std::ifstream f(file);
 	std::string line, last;
+	// MRPT's programs end a failure with "Press any key to continue...": the cause is the line before.
 	while (std::getline(f, line))
-		if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+		if (line.find_first_not_of(" \t\r") != std::string::npos && line.rfind("Press any key", 0) != 0) last = line;
 	return last;
 }
 
+/** In the child, once its output is the log: says why in the log, whose last line the run quotes. */
+[[noreturn]] void failInChild(const std::string& what, int code)
+{
+	const std::string why = what + ": " + std::strerror(errno) + "\n";
+	(void)!::write(2, why.data(), why.size());
+	::_exit(code);
+}
+
 /** In the child: redirect, change folder, exec; never returns. */
-[[noreturn]] void execIn(const std::vector<char*>& args, const std::string& dir, const std::string& log_path,
-						 pid_t parent)
+[[noreturn]] void execIn(const std::vector<char*>& args, const std::string& dir, int out, pid_t parent)
 {
 	// A run killed outright (kill -9) cannot end its program itself: the
 	// kernel does, so no observations2map or icp-slam is left running.
@@ -41,14 +49,10 @@ std::string lastLine(const std::string& file)
 	::signal(SIGXFSZ, SIG_DFL);  // the apps ignore it (CommandLine.cpp); MRPT's programs keep their default
 	restoreAddressSpaceLimit();  // the apps cap their own (MemoryLimit.h), not MRPT's programs
 	const int in = ::open("/dev/null", O_RDONLY);
-	const int out = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-	if (in < 0 || out < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(out, 2) < 0 ||
-		::chdir(dir.c_str()) != 0)
-		::_exit(126);
+	if (in < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(out, 2) < 0) ::_exit(126);
+	if (::chdir(dir.c_str()) != 0) failInChild("cannot enter " + dir, 126);
 	::execvp(args[0], args.data());
-	const std::string why = std::string("cannot start ") + args[0] + ": " + std::strerror(errno) + "\n";
-	(void)!::write(2, why.data(), why.size());
-	::_exit(127);
+	failInChild(std::string("cannot start ") + args[0], 127);
 }
 }  // namespace
 
@@ -59,10 +63,19 @@ void runProgram(const std::vector<std::string>& argv, const std::string& dir, co
 	for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
 	args.push_back(nullptr);
 	const std::string log_path = dir + "/" + log;
+	// Opened here, so that a log that cannot be made is said as such (not as the program's failure).
+	const int out = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+	if (out < 0) throw std::runtime_error("cannot create the log '" + log_path + "' of " + argv[0] + ": " + std::strerror(errno));
 	const pid_t parent = ::getpid();
 	const pid_t pid = ::fork();
-	if (pid < 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(errno));
-	if (pid == 0) execIn(args, dir, log_path, parent);
+	if (pid < 0)
+	{
+		const std::string why = std::strerror(errno);
+		::close(out);
+		throw std::runtime_error("cannot start " + argv[0] + ": " + why);
+	}
+	if (pid == 0) execIn(args, dir, out, parent);
+	::close(out);
 	temporaries::setChild(pid);  // an interrupt ends it before removing its folder
 	int status = 0;
 	while (::waitpid(pid, &status, 0) < 0)

@@ -49,6 +49,29 @@ TEST(ExternalProgram, FailureNamesTheProgramAndTheLogsLastLine)
 		EXPECT_NE(what.find("the reason"), std::string::npos) << what;
 	}
 	EXPECT_THROW(runProgram({"no-such-program-here"}, dir.string(), "x.log"), std::runtime_error);
+	// MRPT's programs end a failure with a prompt: the line before it is the cause.
+	try
+	{
+		runProgram({"sh", "-c", "echo 'cannot write map.gz'; echo 'Press any key to continue...'; exit 255"}, dir.string(),
+				   "mrpt.log");
+		FAIL() << "a failing program must throw";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("): cannot write map.gz"), std::string::npos) << e.what();
+	}
+	// A log that cannot be made is said as such, and the program is not started.
+	try
+	{
+		runProgram({"sh", "-c", "touch started"}, dir.string(), "no-such-folder/x.log");
+		FAIL() << "a log that cannot be made must throw";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("cannot create the log"), std::string::npos) << e.what();
+		EXPECT_NE(std::string(e.what()).find("No such file"), std::string::npos) << e.what();
+	}
+	EXPECT_FALSE(fs::exists(dir / "started"));
 }
 
 TEST(ExternalProgram, ARunKilledOutrightTakesItsProgramWithIt)

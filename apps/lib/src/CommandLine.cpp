@@ -10,6 +10,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/core/utils/logger.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <csignal>
@@ -96,6 +98,18 @@ std::string errorText(const std::exception& e)
 	return errorInOneLine(e.what());
 }
 
+namespace
+{
+/** A relative path met a removed working folder: std::filesystem's text
+ * ("cannot make absolute path") would not say so. */
+bool workingFolderGone(const std::exception& e)
+{
+	char here[4096];
+	return dynamic_cast<const std::filesystem::filesystem_error*>(&e) != nullptr && ::getcwd(here, sizeof here) == nullptr &&
+		   errno == ENOENT;
+}
+}  // namespace
+
 int runApp(const std::string& name, const std::function<void()>& body)
 {
 	// OpenCV's own log lines (a cut image, a codec's complaint) would make an
@@ -135,7 +149,7 @@ int runApp(const std::string& name, const std::function<void()>& body)
 			std::cerr << name << ": interrupted\n";
 			temporaries::waitForInterrupt();
 		}
-		std::cerr << name << ": error: " << errorText(e) << "\n";
+		std::cerr << name << ": error: " << (workingFolderGone(e) ? "the working folder no longer exists: change to one that does" : errorText(e)) << "\n";
 		return 1;
 	}
 }
