@@ -456,6 +456,70 @@ TEST(OutputRule, WhatHasTheNameOfThisRunsTemporaryIsTheUsersAndIsNeitherEmptiedN
 	EXPECT_FALSE(fs::exists(d + "/b.txt"));
 }
 
+TEST(OutputRule, AFolderPutInTheOutputsPlaceWhileItIsReplacedIsKeptNotRemoved)
+{
+	const std::string d = fresh("swapped_in"), pid = std::to_string(::getpid());
+	const auto output = [&](const std::string& name) {
+		fs::create_directories(d + "/" + name);
+		write(d + "/" + name + "/0.png", "ours");
+		write(d + "/" + name + "/" + kOutputMarker, "omnirange-test\nrun 7\nfile 0.png\n");
+		return d + "/" + name;
+	};
+	// The output as checked is moved aside, but a user's folder stands at its old name by the time it is removed.
+	MovedAside a = moveAside(output("a"));
+	ASSERT_TRUE(a.noted);
+	fs::remove_all(a.path);
+	fs::create_directories(a.path);
+	write(a.path + "/notes.txt", "the user's");
+	testing::internal::CaptureStderr();
+	removeReplaced(a);
+	EXPECT_NE(testing::internal::GetCapturedStderr().find("kept"), std::string::npos);
+	EXPECT_EQ(read(d + "/a.replaced-" + pid + "/notes.txt"), "the user's");
+	// A file added to the output's folder after it was checked is kept with it.
+	MovedAside b = moveAside(output("b"));
+	write(b.path + "/notes.txt", "the user's");
+	testing::internal::CaptureStderr();
+	removeReplaced(b);
+	EXPECT_NE(testing::internal::GetCapturedStderr().find("'notes.txt', which the output did not list"), std::string::npos);
+	EXPECT_EQ(read(d + "/b.replaced-" + pid + "/notes.txt"), "the user's");
+	// What is wholly the output's goes, without a word.
+	MovedAside c = moveAside(output("c"));
+	testing::internal::CaptureStderr();
+	removeReplaced(c);
+	EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+	EXPECT_FALSE(fs::exists(c.path));
+	// A folder with no marker (one put in the place of the output after it was checked) is not marked as moved aside.
+	fs::create_directories(d + "/user");
+	EXPECT_THROW(noteInMarker(d + "/user", "aside " + pid, false), std::runtime_error);
+	EXPECT_FALSE(fs::exists(d + "/user/" + kOutputMarker));
+}
+
+TEST(OutputRule, AFolderItsRunWasKilledMarkingIsRemovedAndOneWithAnythingElseIsKept)
+{
+	// Killed between making its staging folder and writing the marker's lines: an empty marker, no file
+	// (as PID 1, in a container, every later run would find its staging name taken). Process 999999 is not running.
+	const std::string d = fresh("killed_marking"), pid = std::to_string(::getpid());
+	for (const std::string& run : {std::string("999999"), pid})
+	{
+		fs::create_directories(d + "/report.staging-" + run);
+		write(d + "/report.staging-" + run + "/" + kOutputMarker, "");
+	}
+	fs::create_directories(d + "/.out_Images.tmp-999999");
+	write(d + "/.out_Images.tmp-999999/" + kOutputMarker, "omnirange-te");
+	// A marker cut short beside a file: the file may be anyone's.
+	fs::create_directories(d + "/other.staging-999999");
+	write(d + "/other.staging-999999/" + kOutputMarker, "");
+	write(d + "/other.staging-999999/notes.txt", "the user's");
+	recoverLeftoversOf(d + "/report", OutputKind::Folder, "omnirange-test");
+	recoverLeftoversOf(d + "/out_Images", OutputKind::Folder, "omnirange-test");
+	recoverLeftoversOf(d + "/other", OutputKind::Folder, "omnirange-test");
+	EXPECT_FALSE(fs::exists(d + "/report.staging-999999"));
+	EXPECT_FALSE(fs::exists(d + "/report.staging-" + pid));
+	EXPECT_FALSE(fs::exists(d + "/.out_Images.tmp-999999"));
+	EXPECT_EQ(read(d + "/other.staging-999999/notes.txt"), "the user's");
+	EXPECT_NO_THROW(StagedFolder(d + "/report", "omnirange-test", {}, false));
+}
+
 TEST(OutputRule, AFolderItsRunWasKilledFillingIsRemovedWholeAndOneItFinishedIsListed)
 {
 	// An experiment killed while icp-slam writes into its staging folder: files no list names, all the run's.

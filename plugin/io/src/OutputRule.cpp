@@ -190,6 +190,8 @@ bool same(const fs::path& a, const fs::path& b)
 	return a == b || (fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec));
 }
 
+}  // namespace
+
 void requireApartFromInputs(const std::string& output, OutputKind kind, const std::vector<std::string>& given)
 {
 	const std::vector<std::string> inputs = withWhatInputsBring(given);
@@ -292,7 +294,6 @@ std::set<std::string> listedIn(const std::string& dir, bool& has_list)
 		if (line.rfind("file ", 0) == 0) listed.insert(line.substr(5)), has_list = true;
 	return listed;
 }
-}  // namespace
 
 void requireNotAnothersPart(const std::string& output, const std::string& program)
 {
@@ -431,15 +432,23 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
 }
 
-std::string moveAside(const std::string& target)
+MovedAside moveAside(const std::string& target)
 {
 	const std::string old = target + ".old-" + std::to_string(::getpid()), aside = "aside " + std::to_string(::getpid());
 	std::error_code ec;
-	// The proof that TARGET.old-PID is this run's and not a user's backup of that name.
+	// The proof that TARGET.old-PID is this run's and not a user's backup of that name (added only to a
+	// marker still there: a folder put in its place since has none to add to).
 	const bool noted = !fs::is_symlink(target, ec) && fs::exists(fs::path(target) / kOutputMarker, ec);
-	if (noted) noteInMarker(target, aside);
+	try
+	{
+		if (noted) noteInMarker(target, aside, false);
+	}
+	catch (const std::exception& e)
+	{
+		throw std::runtime_error("cannot move '" + target + "' aside to replace it (" + e.what() + "); it is as it was");
+	}
 	renameNotReplacing(target, old, ec);
-	if (!ec) return old;
+	if (!ec) return {old, noted};
 	// Not moved: a copy made of it later must not read as moved aside by this run.
 	if (noted) unnoteInMarker(target, aside);
 	throw std::runtime_error("cannot move '" + target + "' aside to replace it (" +
@@ -452,7 +461,7 @@ std::string moveAside(const std::string& target)
 void replaceFolder(const std::string& target, const std::string& fresh)
 {
 	const FolderLock lock(target);
-	std::string old;
+	MovedAside old;
 	std::error_code ec;
 	const bool had_old = fs::exists(fs::symlink_status(target, ec));
 	if (had_old) old = moveAside(target);
@@ -462,7 +471,7 @@ void replaceFolder(const std::string& target, const std::string& fresh)
 	}
 	catch (const std::exception& e)
 	{
-		if (had_old) fs::rename(old, target, ec);
+		if (had_old) fs::rename(old.path, target, ec);
 		throw std::runtime_error("cannot move '" + fresh + "' to '" + target + "' (" + e.what() + "); '" + target +
 								 "' is as it was");
 	}
@@ -481,6 +490,15 @@ bool markerSays(const fs::path& p, const std::string& line)
 	if (fs::is_symlink(p, ec) || !fs::is_directory(p, ec)) return false;
 	const auto lines = markerLines(p.string());
 	return std::find(lines.begin(), lines.end(), line) != lines.end();
+}
+
+/** `p` is a folder whose marker names the run that made it or moved it aside
+ * (a marker cut short, by a run killed writing it, names none). */
+bool markerNamesARun(const fs::path& p)
+{
+	for (const auto& l : markerLines(p.string()))
+		if (l.rfind("run ", 0) == 0 || l.rfind("aside ", 0) == 0) return true;
+	return false;
 }
 
 /** `p` is a folder run `pid` made (markOutputFolder()). */
@@ -550,17 +568,26 @@ std::string halfReplacedItself(const std::string& target)
 }
 }  // namespace
 
-void removeReplaced(const std::string& old)
+void removeReplaced(const MovedAside& aside)
 {
-	const std::string why = removedMarkerLast(old);
-	if (why.empty()) return;
+	const std::string& old = aside.path;
+	// Noted as ours: what says otherwise now was put there by someone while the run committed (or given with --force).
+	std::string theirs;
+	if (aside.noted && !movedAsideBy(old, std::to_string(::getpid())))
+		theirs = "its marker no longer says this run moved it aside (a folder put in its place meanwhile?)";
+	else if (const std::string added = aside.noted ? firstUnlistedIn(old) : ""; !added.empty())
+		theirs = "it holds '" + added + "', which the output did not list";
+	const std::string why = theirs.empty() ? removedMarkerLast(old) : "";
+	if (theirs.empty() && why.empty()) return;
 	// Renamed, so that no reader takes it for an output half replaced (halfReplaced()).
 	const auto at = old.rfind(".old-");
 	const std::string kept = at == std::string::npos ? old : old.substr(0, at) + ".replaced-" + old.substr(at + 5);
 	std::error_code ec;
 	fs::rename(old, kept, ec);
-	temporaries::warn("could not remove the replaced '" + (ec ? old : kept) + "' (" + why +
-					  "): the new output is whole; remove that folder yourself");
+	temporaries::warn(theirs.empty() ? "could not remove the replaced '" + (ec ? old : kept) + "' (" + why +
+										   "): the new output is whole; remove that folder yourself"
+									 : "kept '" + (ec ? old : kept) + "', what the output replaced: " + theirs +
+										   "; the new output is whole");
 }
 
 std::string halfReplaced(const std::string& target)
@@ -622,10 +649,12 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 			const bool old = prefix == name + ".old-";
 			// A file's temporaries are hidden (temporaryOf(), commitAll()'s old copies): "f.hist.staging-2023" is a user's copy.
 			const bool hidden = prefix == "." + name + ".tmp-" || prefix == "." + name + ".old-";
-			// Killed removing it, after its marker went: nothing in it to be anyone's.
-			if (fs::is_directory(fs::symlink_status(e.path(), ec)) && fs::is_empty(e.path(), ec))
+			// Killed removing it after its marker went, or making it before its marker named the run: nothing in it
+			// to be anyone's.
+			if (fs::is_directory(fs::symlink_status(e.path(), ec)) && filesIn(e.path().string()).empty() &&
+				!markerNamesARun(e.path()))
 			{
-				fs::remove(e.path(), ec);
+				fs::remove_all(e.path(), ec);
 				continue;
 			}
 			if (!fs::is_directory(fs::symlink_status(e.path(), ec)) && !hidden) continue;
@@ -722,7 +751,7 @@ void StagedFolder::keep()
 	done_ = true;
 }
 
-void noteInMarker(const std::string& dir, const std::string& line)
+void noteInMarker(const std::string& dir, const std::string& line, bool create)
 {
 	// One note a line: a file named with a line break (an input's image) would read back as two.
 	if (line.find_first_of("\n\r") != std::string::npos)
@@ -733,11 +762,20 @@ void noteInMarker(const std::string& dir, const std::string& line)
 	const fs::path marker = fs::path(dir) / kOutputMarker;
 	if (fs::is_symlink(marker, ec) || (fs::exists(fs::symlink_status(marker, ec)) && !fs::is_regular_file(marker, ec)))
 		throw std::runtime_error("the marker '" + marker.string() + "' is a link or not a file, not a marker of ours");
+	// Opened as checked: no link followed, and (without `create`) no marker made in a folder put there since.
+	const int fd = ::open(marker.c_str(), O_WRONLY | O_APPEND | O_NOFOLLOW | O_CLOEXEC | (create ? O_CREAT : 0), 0644);
+	if (fd < 0 && errno == ENOENT && !create)
+		throw std::runtime_error("its marker is gone: was it replaced meanwhile?");
+	if (fd < 0) throw std::runtime_error(cannotWrite(marker.string()));
+	const std::string text = line + "\n";
 	errno = 0;
-	std::ofstream f(fs::path(dir) / kOutputMarker, std::ios::app);
-	f << line << "\n";
-	f.close();
-	if (!f) throw std::runtime_error(cannotWrite((fs::path(dir) / kOutputMarker).string(), "is the disk full?"));
+	const bool whole = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+	const int write_errno = errno;
+	if (::close(fd) != 0 || !whole)
+	{
+		errno = write_errno ? write_errno : errno;
+		throw std::runtime_error(cannotWrite(marker.string(), "is the disk full?"));
+	}
 }
 
 void unnoteInMarker(const std::string& dir, const std::string& line)

@@ -281,7 +281,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	// The old images go aside, the new ones in, then the rawlog; only when
 	// all moves succeeded is the old folder removed.
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
-	const std::string old = had_old ? moveAside(images_) : "";
+	const MovedAside old = had_old ? moveAside(images_) : MovedAside{};
 	bool moved_in = false;
 	try
 	{
@@ -295,11 +295,11 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 		std::error_code back;
 		const std::string left = files.undo();
 		if (moved_in) fs::remove_all(images_, back);  // ours, just moved in
-		if (had_old && !back) fs::rename(old, images_, back);
+		if (had_old && !back) fs::rename(old.path, images_, back);
 		// What the folder refuses to the commit (made read-only or immutable meanwhile) it may refuse to the undo.
 		std::string images_left;
 		if (back && had_old)
-			images_left = "the old images could not be put back (" + back.message() + "): they are in '" + old + "'";
+			images_left = "the old images could not be put back (" + back.message() + "): they are in '" + old.path + "'";
 		else if (back)
 			images_left = "the new images could not be taken out (" + back.message() + "): remove '" + images_ + "'";
 		std::string said = left;

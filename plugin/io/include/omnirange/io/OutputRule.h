@@ -45,6 +45,12 @@ void requireOutputAllowed(const std::string& output, OutputKind kind, const std:
 						  const std::vector<std::string>& inputs, bool force = false,
 						  const std::string& begins_with = "");
 
+/** requireOutputAllowed()'s check against `inputs` alone (throws naming
+ * one the output is, holds or lies in, through links, bind mounts and hard
+ * links): for what a run checks again just before it writes, once it has
+ * staged temporaries that the whole check would take for leftovers. */
+void requireApartFromInputs(const std::string& output, OutputKind kind, const std::vector<std::string>& inputs);
+
 struct Output
 {
 	std::string path;
@@ -73,8 +79,9 @@ void requireNotAnothersPart(const std::string& output, const std::string& progra
 std::vector<std::string> markerLines(const std::string& dir);
 
 /** Appends `line` to the marker of the folder `dir` (what its run, its
- * files, its rawlog or its moving aside were); throws naming the marker. */
-void noteInMarker(const std::string& dir, const std::string& line);
+ * files, its rawlog or its moving aside were); throws naming the marker.
+ * With `create` false, a folder without a marker is refused, not marked. */
+void noteInMarker(const std::string& dir, const std::string& line, bool create = true);
 /** Takes `line` out of the marker of `dir` (the marker rewritten whole). */
 void unnoteInMarker(const std::string& dir, const std::string& line);
 /** What the marker of `dir` says after "KEY " on its first line so begun
@@ -144,10 +151,19 @@ class StagedFolder
 	bool done_{false};
 };
 
-/** Renames `target` to TARGET.old-PID and returns that name; a folder of
- * ours first notes in its marker that this run moved it ("aside PID"), so
- * that recoverLeftoversOf() can tell it from a user's backup of that name. */
-std::string moveAside(const std::string& target);
+/** A folder an output replaces, moved aside (moveAside()). */
+struct MovedAside
+{
+	std::string path;  ///< TARGET.old-PID
+	/** It was a folder of ours, noted "aside PID" in its marker just before the
+	 * rename: only such a folder, found still so, is removed as ours. */
+	bool noted{false};
+};
+
+/** Renames `target` to TARGET.old-PID; a folder of ours first notes in its
+ * marker that this run moved it ("aside PID"), so that recoverLeftoversOf()
+ * can tell it from a user's backup of that name. */
+MovedAside moveAside(const std::string& target);
 
 /** Puts the finished folder `fresh` in the place of `target`: the old
  * `target` (if any) goes aside as TARGET.old-PID, `fresh` is renamed in,
@@ -158,8 +174,11 @@ void replaceFolder(const std::string& target, const std::string& fresh);
 /** Removes `old`, what an output replaced (TARGET.old-PID). What cannot be
  * removed is renamed TARGET.replaced-PID (no reader takes it for a half
  * replaced output) and warned about with the system's reason; the new
- * output is in place by then, so the run does not fail. */
-void removeReplaced(const std::string& old);
+ * output is in place by then, so the run does not fail. A folder noted as
+ * ours that no longer says so, or holds what its marker does not list, was
+ * put in its place by someone while the run committed: it is kept, and
+ * said. */
+void removeReplaced(const MovedAside& old);
 
 /** TARGET.old-PID that a run, now gone, moved aside and did not finish
  * replacing (moveAside()): `target` may be that run's new folder beside an
