@@ -294,18 +294,29 @@ TEST(AppClasses, CalibrateSavesTheCheckerboardsMeiModelIntoTheIni)
 	EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);  // no journal or old file left
 }
 
-TEST(AppClasses, CalibrateSavesAnOCamCalibModelIntoTheIni)
+namespace
 {
-	// A calib_results.txt for the stock paraboloid (R 192: z = -96 + rho^2 / 384),
-	// centre row 380, column 515; the saved ini reads floor distances as R 192 does.
-	const std::string dir = workDir("ocamcalib_save");
+/** A calibration from a calib_results.txt in `dir` for the stock paraboloid
+ * (R 192: z = -96 + rho^2 / 384), centre row 380, column 515, with the
+ * affine terms `affine` ("c d e"). */
+CalibrateApp::Options ocamCalibrationIn(const std::string& dir, const std::string& affine)
+{
 	CalibrateApp::Options o;
 	o.ocamcalib = dir + "/calib_results.txt";
 	std::ofstream(o.ocamcalib) << "#direct\n\n3 -96 0 0.0026041666666666665\n\n#inverse\n\n2 1 1\n\n#center\n\n"
-								  "380 515\n\n#affine\n\n1.001 0.0005 -0.0002\n\n#size\n\n768 1024\n";
+								  "380 515\n\n#affine\n\n" << affine << "\n\n#size\n\n768 1024\n";
+	o.verbosity = mrpt::system::LVL_ERROR;
+	return o;
+}
+}  // namespace
+
+TEST(AppClasses, CalibrateSavesAnOCamCalibModelIntoTheIni)
+{
+	// The saved ini reads floor distances as R 192 does.
+	const std::string dir = workDir("ocamcalib_save");
+	CalibrateApp::Options o = ocamCalibrationIn(dir, "1.001 0.0005 -0.0002");
 	o.save_to = dir + "/my.ini";
 	std::ofstream(o.save_to) << "[rangefinder]\n; [-] kept\nthreshold = 0.075\n";
-	o.verbosity = mrpt::system::LVL_ERROR;
 	CalibrateApp(o).runOCamCalib();
 	mrpt::system::COutputLogger quiet("test");
 	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
@@ -319,6 +330,21 @@ TEST(AppClasses, CalibrateSavesAnOCamCalibModelIntoTheIni)
 	const OmniCameraModel model(saved.camera);
 	CameraParams para;
 	EXPECT_NEAR(model.distanceFromRho(150), OmniCameraModel(para).distanceFromRho(150), 1e-9);
+}
+
+TEST(AppClasses, CalibrateDoesNotSaveIntoABaseIniItsIniWasReplacedByALinkToMeanwhile)
+{
+	const std::string dir = workDir("ocamcalib_swapped");
+	CalibrateApp::Options o = ocamCalibrationIn(dir, "1 0 0");
+	std::ofstream(dir + "/base.ini") << "[rangefinder]\nthreshold = 0.075\n";
+	o.ini = o.save_to = dir + "/c.ini";
+	std::ofstream(o.ini) << "base = base.ini\n[rangefinder]\nK = 4\n";
+	CalibrateApp app(o);
+	// While it runs, the ini becomes a link to the base under it (which other inis build on too).
+	fs::rename(o.ini, dir + "/c.ini.mine");
+	fs::create_symlink("base.ini", o.ini);
+	EXPECT_THROW(app.runOCamCalib(), std::runtime_error);
+	EXPECT_EQ(readText(dir + "/base.ini"), "[rangefinder]\nthreshold = 0.075\n");
 }
 
 TEST(AppClasses, CalibrateFindsTheCamerasOrientation)

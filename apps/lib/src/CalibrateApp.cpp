@@ -31,10 +31,9 @@ constexpr char kOpenCvYamlBegins[] = "%YAML:1.0";  // how cv::FileStorage begins
 // ten images' own discs within 2.5 px of theirs together; the rest is room for a rim partly hidden.
 constexpr double kMaxRimOffset = 10.0;
 
-/** A calibrated camera's keys, each printed by the ini's own table, into
- * [section] of `ini` (the rest of the file kept). */
-void saveCameraKeys(const std::string& ini, const std::string& section, const CameraParams& cam,
-					const std::vector<std::string>& model_keys, const std::vector<StagedFile*>& with = {})
+/** A calibrated camera's keys, each printed by the ini's own table. */
+std::vector<std::pair<std::string, std::string>> cameraKeys(const CameraParams& cam,
+															const std::vector<std::string>& model_keys)
 {
 	std::vector<std::string> names{"image_width", "image_height", "cx", "cy", "mirror_model"};
 	names.insert(names.end(), model_keys.begin(), model_keys.end());
@@ -42,9 +41,7 @@ void saveCameraKeys(const std::string& ini, const std::string& section, const Ca
 	for (const std::string& name : names)
 		for (const auto& f : CameraParams::table().fields())
 			if (f.info.key == name) keys.push_back({name, f.print(cam)});
-	writeIniSection(ini, section, keys, RangefinderParams::table().comments(), with);
-	std::printf("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), section.c_str(),
-				ini.c_str());
+	return keys;
 }
 /** Every image file in `dir`, sorted by name, appended to `files`. */
 void addImagesOf(const std::string& dir, std::vector<std::string>& files)
@@ -122,17 +119,33 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 {
 	setMinLoggingLevel(o_.verbosity);
 	// --save-to writes keys into an ini (the -c one is the usual choice), never into what was read.
-	std::vector<std::string> inputs{o_.calibration.input, o_.histogram, o_.ocamcalib};
-	inputs.insert(inputs.end(), o_.checkerboards.begin(), o_.checkerboards.end());
-	inputs.insert(inputs.end(), o_.rim_images.begin(), o_.rim_images.end());
-	if (!o_.checkerboard_dir.empty()) inputs.push_back(o_.checkerboard_dir);
-	if (!o_.calibration.input.empty()) inputs.push_back(imagesDirToRead(o_.calibration.input));
+	inputs_ = {o_.calibration.input, o_.histogram, o_.ocamcalib};
+	inputs_.insert(inputs_.end(), o_.checkerboards.begin(), o_.checkerboards.end());
+	inputs_.insert(inputs_.end(), o_.rim_images.begin(), o_.rim_images.end());
+	if (!o_.checkerboard_dir.empty()) inputs_.push_back(o_.checkerboard_dir);
+	if (!o_.calibration.input.empty()) inputs_.push_back(imagesDirToRead(o_.calibration.input));
 	// Its -c ini is the usual --save-to, but not the bases under it: they are other inis' too.
 	if (!o_.ini.empty())
-		for (const auto& base : iniBasesOf(o_.ini)) inputs.push_back(base);
+		for (const auto& base : iniBasesOf(o_.ini)) inputs_.push_back(base);
 	requireOutputsAllowed({{o_.save_to, OutputKind::Ini}, {o_.intrinsics_output, OutputKind::Text, kOpenCvYamlBegins}},
-						  "omnirange-calibrate", inputs);
+						  "omnirange-calibrate", inputs_);
 	if (!o_.save_to.empty()) RangefinderParams::requireWritable(o_.save_to, o_.section);
+}
+
+void CalibrateApp::saveCameraKeys(const CameraParams& cam, const std::vector<std::string>& model_keys,
+								  const std::vector<StagedFile*>& with) const
+{
+	saveKeys(cameraKeys(cam, model_keys), with);
+	std::printf("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), o_.section.c_str(),
+				o_.save_to.c_str());
+}
+
+void CalibrateApp::saveKeys(const std::vector<std::pair<std::string, std::string>>& keys,
+							const std::vector<StagedFile*>& with) const
+{
+	// An ini replaced meanwhile by a link to its base is not written through (the -o YAML may be staged by now).
+	requireApartFromInputs(outputPath(o_.save_to), OutputKind::Ini, inputs_);
+	writeIniSection(o_.save_to, o_.section, keys, RangefinderParams::table().comments(), with);
 }
 
 MirrorCalibration CalibrateApp::run()
@@ -193,7 +206,7 @@ MirrorCalibration CalibrateApp::run()
 			if (shape_calibrated) keys.push_back({"h", formatDouble(std::round(c.height.h * 1e4) / 1e4)});
 			keys.push_back({"boundary_offset", formatDouble(c.suggested_boundary_offset)});
 		}
-		writeIniSection(o_.save_to, o_.section, keys, RangefinderParams::table().comments());
+		saveKeys(keys);
 		std::printf("wrote %zu keys into [%s] of %s\n", keys.size(), o_.section.c_str(), o_.save_to.c_str());
 	}
 	return c;
@@ -255,8 +268,10 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 	if (!o_.intrinsics_output.empty())
 		yaml.emplace(o_.intrinsics_output, [&](const std::string& tmp) { writeFileAtomically(tmp, c.yaml()); });
 	if (!o_.save_to.empty())
-		saveCameraKeys(o_.save_to, o_.section, cam, {"xi", "gamma", "aspect", "skew", "k1", "k2", "p1", "p2"},
+	{
+		saveCameraKeys(cam, {"xi", "gamma", "aspect", "skew", "k1", "k2", "p1", "p2"},
 					   yaml ? std::vector<StagedFile*>{&*yaml} : std::vector<StagedFile*>{});
+	}
 	else if (yaml)
 		yaml->commit();
 	return c;
@@ -338,11 +353,10 @@ MirrorRim CalibrateApp::runRim()
 	requireSure(doubts);
 	if (!o_.save_to.empty())
 	{
-		writeIniSection(o_.save_to, o_.section,
-						{{"image_width", std::to_string(rim.image_width)},
-						 {"image_height", std::to_string(rim.image_height)},
-						 {"cx", formatDouble(std::round(rim.cx * 10) / 10)}, {"cy", formatDouble(std::round(rim.cy * 10) / 10)}},
-						RangefinderParams::table().comments());
+		saveKeys({{"image_width", std::to_string(rim.image_width)},
+				  {"image_height", std::to_string(rim.image_height)},
+				  {"cx", formatDouble(std::round(rim.cx * 10) / 10)},
+				  {"cy", formatDouble(std::round(rim.cy * 10) / 10)}});
 		std::printf("wrote image_width, image_height, cx, cy into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
 	}
 	return rim;
@@ -370,7 +384,7 @@ CameraParams CalibrateApp::runOCamCalib()
 				model.radial() ? " (none: the image is radial)" : " (the scanlines follow them)");
 	if (!o_.save_to.empty())
 	{
-		saveCameraKeys(o_.save_to, o_.section, cam, {"ocam_poly", "ocam_affine"});
+		saveCameraKeys(cam, {"ocam_poly", "ocam_affine"});
 	}
 	return cam;
 }

@@ -111,9 +111,18 @@ void writeIniSection(const std::string& path, const std::string& section,
 	// Another run's keys (two calibrations saving into one ini) or a user's edit that went in
 	// meanwhile are read again and kept; a file that keeps changing is left as it is.
 	constexpr int kTries = 5;
+	// The file the caller checked: one replaced meanwhile by a link (to a base ini, another input) is not written through.
+	const auto leadsTo = [&path] {
+		std::error_code ec;
+		return std::filesystem::weakly_canonical(path, ec).string();
+	};
+	const std::string checked = leadsTo();
 	for (int attempt = 1;; ++attempt)
 	{
 		const auto [text, state] = withSection(path, section, values, comments);
+		if (leadsTo() != checked)
+			throw std::runtime_error("'" + path + "' now leads to '" + leadsTo() + "', not to the file it was checked as: " +
+									 "nothing was saved");
 		try
 		{
 			if (with.empty()) return updateFileAtomically(path, text, state);

@@ -13,6 +13,14 @@
 #include <mrpt/system/COutputLogger.h>
 
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace omnirange
+{
+class StagedFile;
+}
 
 namespace omnirange::app
 {
@@ -59,7 +67,17 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	 * saved from a calibration that says it may be wrong. With --accept,
 	 * each doubt is a warning on stderr. */
 	void requireSure(const std::vector<std::string>& doubts) const;
+	/** `keys` into [section] of --save-to, with `with` as one set, checked
+	 * against the inputs again (an ini replaced meanwhile by a link to its
+	 * base). */
+	void saveKeys(const std::vector<std::pair<std::string, std::string>>& keys,
+				  const std::vector<StagedFile*>& with = {}) const;
+	/** A calibrated camera's keys (the image, the centre, the model and its `model_keys`), saved and said. */
+	void saveCameraKeys(const CameraParams& cam, const std::vector<std::string>& model_keys,
+						const std::vector<StagedFile*>& with = {}) const;
 	Options o_;
+	/** What the run reads, as found at the start (the -c ini's bases included). */
+	std::vector<std::string> inputs_;
 	OrientationFit orientation_;
 };
 
