@@ -7,11 +7,15 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cctype>
+#include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string_view>
 #include <vector>
 #include <stdexcept>
@@ -174,6 +178,33 @@ std::string imageProblem(Bytes b)
 			  std::to_string(kMaxImagePixels / 1000000) + " megapixels";
 	return why;
 }
+
+/** The bytes of the file `file` (`what` in errors), checked on what was
+ * opened: a folder or a FIFO put in its place after it was looked at is
+ * refused as such, not read as a size it does not have. */
+std::vector<unsigned char> bytesOf(const std::string& file, const std::string& what)
+{
+	const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+	if (fd < 0) throw std::runtime_error(what + " is unreadable (" + std::strerror(errno) + ")");
+	struct stat st{};
+	if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
+	{
+		::close(fd);
+		throw std::runtime_error(what + " is not a regular file");
+	}
+	std::vector<unsigned char> bytes(static_cast<std::size_t>(st.st_size));
+	std::size_t got = 0;
+	while (got < bytes.size())
+	{
+		const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
+		if (n < 0 && errno == EINTR) continue;
+		if (n <= 0) break;
+		got += static_cast<std::size_t>(n);
+	}
+	::close(fd);
+	if (got != bytes.size()) throw std::runtime_error(what + " is unreadable (it changed while it was read)");
+	return bytes;
+}
 }  // namespace
 
 bool isImageFileName(const std::string& file)
@@ -204,11 +235,7 @@ cv::Mat decodeImageFile(const std::string& file, const std::string& label, int f
 		throw std::runtime_error(what + " is missing");
 	}
 	if (isKernelFile(file)) throw std::runtime_error(what + " is a file of the kernel's, not of data");
-	std::ifstream f(file, std::ios::binary | std::ios::ate);
-	std::vector<unsigned char> bytes(f ? static_cast<std::size_t>(f.tellg()) : 0);
-	f.seekg(0);
-	if (!f || !f.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
-		throw std::runtime_error(what + " is unreadable");
+	const std::vector<unsigned char> bytes = bytesOf(file, what);
 	if (bytes.empty()) throw std::runtime_error(what + " is empty");
 	if (const std::string why = imageProblem(Bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 		!why.empty())
