@@ -157,6 +157,7 @@ TEST(Import, AUsersLogsImportedScoreAsTheOriginal)
 	EXPECT_EQ(s.scans, 20u);
 	EXPECT_EQ(s.odometry, 20u);
 	EXPECT_EQ(s.rays, 181);
+	EXPECT_EQ(s.images_without_scan, 0u);
 	EXPECT_EQ(s.image_width, 1024);
 	EXPECT_TRUE(fs::exists(dir + "/imported_Images/OMNICAM_000000.jpg"));
 	// The camera's bytes, not a re-encoding: the first image is the earliest file.
@@ -192,6 +193,31 @@ TEST(Import, AUsersLogsImportedScoreAsTheOriginal)
 		EXPECT_EQ(order[k + 1], t + " OMNICAM") << k;
 		EXPECT_EQ(order[k + 2], t + " LASER") << k;
 	}
+}
+
+TEST(Import, ImagesWithNoLaserScanNearThemAreCounted)
+{
+	// The laser's clock ten frames ahead of the camera's: the first ten images have no scan near them, the others
+	// one taken ten frames away (which no check of times can tell from their own).
+	const std::string dir = test::freshDir("omnirange_import", "clocks_apart");
+	const UserLogs u = takeApart(dir);
+	std::vector<std::pair<double, std::string>> rows;
+	{
+		std::ifstream in(u.laser);
+		for (std::string line; std::getline(in, line);)
+			if (!line.empty() && line[0] != '#')
+				rows.emplace_back(std::stod(line.substr(0, line.find(','))), line.substr(line.find(',')));
+	}
+	ASSERT_EQ(rows.size(), 20u);
+	const double ahead = 10 * (rows[1].first - rows[0].first);
+	{
+		std::ofstream out(dir + "/ahead.csv");
+		out.precision(17);
+		for (const auto& [t, rest] : rows) out << t + ahead << rest << "\n";
+	}
+	ImportApp::Options o = importOf(u, dir + "/ahead.rawlog");
+	o.import.laser_csv = dir + "/ahead.csv";
+	EXPECT_EQ(ImportApp(o).run().images_without_scan, 10u);
 }
 
 TEST(Import, ACarmenLogStandsForTheTwoCsvs)
@@ -240,6 +266,7 @@ TEST(Import, ACarmenLogStandsForTheTwoCsvs)
 		{"remissions.carmen", "RAWLASER1 0 -1.57 3.14 0.0175 80 0.01 0 2 1.0 1.0 4 1.5 host 1.5\n",
 		 "remissions.carmen:1: RAWLASER1: num_remissions 4 is not a count of the fields that follow"},
 		{"formfeed.carmen", "ODOM 1 2 3 0 0 0 10.0 h 0\n\f\n", "formfeed.carmen:2: a line of blanks only"},
+		{"short_count.carmen", "FLASER 2 1 2 3 0 0 0 0 0 0 10.5 h 0\n", "short_count.carmen:1: FLASER: 13 fields, too many"},
 		{"late.carmen", "ODOM 1 2 3 0 0 0 10.0 h 0\nODOM 1 2 3 0 0 0 9.0 h 0\n", "late.carmen:2: ODOM time 9"}};
 	for (const BadLog& b : carmen)
 		EXPECT_NE(errorWithFile(o, o.import.carmen_log, dir + "/" + b.name, b.text).find(b.error), std::string::npos)
@@ -266,9 +293,10 @@ TEST(Import, BadLogsAreNamedByFileAndLineAndNothingIsWritten)
 	ImportApp::Options o = importOf(u, out);
 	o.import.laser_csv = dir + "/unsorted.csv";
 	EXPECT_NE(errorOf(o).find("unsorted.csv:3: time"), std::string::npos) << errorOf(o);
-	// A row with one range too few, and a missing time.
+	// A row with one range too few, a missing time, ranges written with decimal commas (each read as two rays).
 	const BadLog csvs[] = {{"short.csv", "100.0, 1, 2, 3\n100.1, 1, 2\n", "short.csv:2: 2 ranges, but the first row has 3"},
-						   {"notime.csv", "100.0, 1, 2, 3\n, 1, 2, 3\n", "notime.csv:2: time ''"}};
+						   {"notime.csv", "100.0, 1, 2, 3\n, 1, 2, 3\n", "notime.csv:2: time ''"},
+						   {"commas.csv", "100,2,000,2,100,1,950\n", "commas.csv:1: range 1 '000': a whole number with a leading zero"}};
 	for (const BadLog& b : csvs)
 		EXPECT_NE(errorWithFile(o, o.import.laser_csv, dir + "/" + b.name, b.text).find(b.error), std::string::npos)
 			<< errorOf(o);

@@ -2,6 +2,7 @@
 
 #include "omnirange_apps/CommandLine.h"
 
+#include <omnirange/io/ObservationPairer.h>
 #include <omnirange/io/RawlogWriter.h>
 
 #include <omnirange/core/Rangefinder.h>
@@ -86,6 +87,11 @@ LogImportSummary ImportApp::run()
 	MRPT_LOG_INFO_FMT("%zu images (%dx%d), %zu laser scans (%d rays), %zu odometry readings over %.1f s -> %s",
 					  s.images, s.image_width, s.image_height, s.scans, s.rays, s.odometry, s.last_time - s.first_time,
 					  o_.import.output.c_str());
+	// A few at the ends are a log started or stopped apart; more are clocks apart.
+	if (s.scans > 0 && s.images_without_scan * 10 > s.images)
+		MRPT_LOG_WARN_FMT("%zu of %zu images have no laser scan within %.1f s, so nothing trains or scores on them: "
+						  "are the camera's and the laser's clocks apart (a time zone, another unit)?",
+						  s.images_without_scan, s.images, kDefaultMaxPairingDt);
 	return s;
 }
 

@@ -26,6 +26,13 @@ class Fields
 		if (left() < n)
 			throw std::invalid_argument(f_.front() + ": " + std::to_string(f_.size() - 1) + " fields; " + what);
 	}
+	/** Exactly `n` more fields: a record with more is read a field off (a count one short of its ranges). */
+	void needExactly(std::size_t n, const std::string& what) const
+	{
+		need(n, what);
+		if (left() > n)
+			throw std::invalid_argument(f_.front() + ": " + std::to_string(f_.size() - 1) + " fields, too many: " + what + " (is a count short?)");
+	}
 	std::string word() { return take("a word"); }
 	double number(const std::string& name) { return parsed(name, parseDouble); }
 	/** [s] A timestamp: decimal seconds within MRPT's clock (parseTime()). */
@@ -100,7 +107,7 @@ struct CarmenReader
 	{
 		f.need(1, "expected the number of readings");
 		const int n = f.count("num_readings");
-		f.need(n + 9, "expected " + std::to_string(n) + " ranges, two poses and three time fields");
+		f.needExactly(n + 9, "expected " + std::to_string(n) + " ranges, two poses and three time fields");
 		LaserRow row;
 		for (int i = 0; i < n; ++i) row.ranges.push_back(f.number("range " + std::to_string(i)));
 		f.skip(3, "the laser's pose");

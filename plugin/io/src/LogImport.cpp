@@ -3,6 +3,7 @@
 #include "omnirange/config/AtomicWrite.h"
 #include "omnirange/io/CarmenLog.h"
 #include "omnirange/io/ObservationImage.h"
+#include "omnirange/io/ObservationPairer.h"
 #include "omnirange/config/OptionsTable.h"
 #include "omnirange/io/RawlogWriter.h"
 
@@ -137,7 +138,15 @@ std::vector<LaserRow> readLaserCsv(const std::string& path)
 		row.time = logTime(f[0]);
 		requireTimeAfter(previous, row.time);
 		previous = row.time;
-		for (std::size_t i = 1; i < f.size(); ++i) row.ranges.push_back(number(f[i], "range " + std::to_string(i - 1)));
+		for (std::size_t i = 1; i < f.size(); ++i)
+		{
+			// "2,050" split at its comma: no one writes a range "050", but a decimal comma leaves one.
+			if (f[i].size() > 1 && f[i][0] == '0' && f[i].find_first_not_of("0123456789") == std::string::npos)
+				throw std::invalid_argument("range " + std::to_string(i - 1) + " '" + f[i] +
+											"': a whole number with a leading zero, as a decimal comma leaves (write "
+											"2.05, not 2,05: fields are split at commas)");
+			row.ranges.push_back(number(f[i], "range " + std::to_string(i - 1)));
+		}
 		if (!rows.empty() && row.ranges.size() != rows.front().ranges.size())
 			throw std::invalid_argument(std::to_string(row.ranges.size()) + " ranges, but the first row has " +
 										std::to_string(rows.front().ranges.size()));
@@ -344,6 +353,15 @@ LogImportSummary importLogs(const LogImportOptions& o)
 	s.first_time = std::min({timeOf(u.images, 0), timeOf(u.scans, 0), timeOf(u.odometry, 0)});
 	s.last_time = std::max({u.images.back().time, u.scans.empty() ? -INFINITY : u.scans.back().time,
 							u.odometry.empty() ? -INFINITY : u.odometry.back().time});
+	if (!u.scans.empty())
+		for (const TimedImage& im : u.images)
+		{
+			const auto after = std::lower_bound(u.scans.begin(), u.scans.end(), im.time,
+												[](const LaserRow& row, double t) { return row.time < t; });
+			const bool near = (after != u.scans.end() && after->time - im.time <= kDefaultMaxPairingDt) ||
+							  (after != u.scans.begin() && im.time - std::prev(after)->time <= kDefaultMaxPairingDt);
+			if (!near) ++s.images_without_scan;
+		}
 	return s;
 }
 

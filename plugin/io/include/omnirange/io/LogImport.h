@@ -92,6 +92,9 @@ struct LogImportSummary
 	int image_width{0}, image_height{0};
 	int rays{0};
 	double first_time{0}, last_time{0};  ///< [s]
+	/** Images with no laser scan within kDefaultMaxPairingDt: nothing trains
+	 * or scores on them (many: clocks apart, by a time zone or a unit). */
+	std::size_t images_without_scan{0};
 };
 
 /** Checks every input first (each image is decoded once), then writes the
