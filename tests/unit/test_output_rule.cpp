@@ -244,14 +244,15 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	const std::string d = fresh("replace");
 	fs::create_directory(d + "/report");
 	write(d + "/report/old.md", "old");
+	write(d + "/report/" + kOutputMarker, "omnirange-test\nrun 7\nfile old.md\n");
 	fs::create_directory(d + "/report.staging-1");
 	write(d + "/report.staging-1/new.md", "new");
-	replaceFolder(d + "/report", d + "/report.staging-1");
+	replaceFolder(d + "/report", d + "/report.staging-1", false);
 	EXPECT_EQ(read(d + "/report/new.md"), "new");
 	EXPECT_FALSE(fs::exists(d + "/report/old.md"));
 	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1);  // nothing aside is left
 	// A rename that fails (nothing to move) leaves the old folder where it was.
-	EXPECT_THROW(replaceFolder(d + "/report", d + "/nothing"), std::runtime_error);
+	EXPECT_THROW(replaceFolder(d + "/report", d + "/nothing", false), std::runtime_error);
 	EXPECT_EQ(read(d + "/report/new.md"), "new");
 
 	// A user's backups named as an old copy would be: a copy of the report (its marker too, but no
@@ -454,6 +455,13 @@ TEST(OutputRule, WhatHasTheNameOfThisRunsTemporaryIsTheUsersAndIsNeitherEmptiedN
 	EXPECT_THROW(writeFileAtomically(d + "/b.txt", "new b"), std::runtime_error);
 	EXPECT_EQ(read(d + "/.b.txt.tmp-" + pid), "the user's notes");
 	EXPECT_FALSE(fs::exists(d + "/b.txt"));
+	// A text output is known by how it begins: any text is of its kind. A leftover cut short within that goes.
+	write(d + "/.t.md.tmp-" + pid, "the user's notes");
+	EXPECT_NO_THROW(requireOutputAllowed(d + "/t.md", OutputKind::Text, "omnirange-test", {}, false, "# Table\n"));
+	EXPECT_EQ(read(d + "/.t.md.tmp-" + pid), "the user's notes");
+	write(d + "/.u.md.tmp-" + pid, "# Ta");
+	EXPECT_NO_THROW(requireOutputAllowed(d + "/u.md", OutputKind::Text, "omnirange-test", {}, false, "# Table\n"));
+	EXPECT_FALSE(fs::exists(d + "/.u.md.tmp-" + pid));
 }
 
 TEST(OutputRule, AFolderPutInTheOutputsPlaceWhileItIsReplacedIsKeptNotRemoved)
@@ -466,7 +474,7 @@ TEST(OutputRule, AFolderPutInTheOutputsPlaceWhileItIsReplacedIsKeptNotRemoved)
 		return d + "/" + name;
 	};
 	// The output as checked is moved aside, but a user's folder stands at its old name by the time it is removed.
-	MovedAside a = moveAside(output("a"));
+	MovedAside a = moveAside(output("a"), false);
 	ASSERT_TRUE(a.noted);
 	fs::remove_all(a.path);
 	fs::create_directories(a.path);
@@ -476,22 +484,40 @@ TEST(OutputRule, AFolderPutInTheOutputsPlaceWhileItIsReplacedIsKeptNotRemoved)
 	EXPECT_NE(testing::internal::GetCapturedStderr().find("kept"), std::string::npos);
 	EXPECT_EQ(read(d + "/a.replaced-" + pid + "/notes.txt"), "the user's");
 	// A file added to the output's folder after it was checked is kept with it.
-	MovedAside b = moveAside(output("b"));
+	MovedAside b = moveAside(output("b"), false);
 	write(b.path + "/notes.txt", "the user's");
 	testing::internal::CaptureStderr();
 	removeReplaced(b);
 	EXPECT_NE(testing::internal::GetCapturedStderr().find("'notes.txt', which the output did not list"), std::string::npos);
 	EXPECT_EQ(read(d + "/b.replaced-" + pid + "/notes.txt"), "the user's");
 	// What is wholly the output's goes, without a word.
-	MovedAside c = moveAside(output("c"));
+	MovedAside c = moveAside(output("c"), false);
 	testing::internal::CaptureStderr();
 	removeReplaced(c);
 	EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 	EXPECT_FALSE(fs::exists(c.path));
-	// A folder with no marker (one put in the place of the output after it was checked) is not marked as moved aside.
+	// A folder with no marker (one put in the place of the output after it was checked) is not marked as moved aside,
+	// nor moved aside (without --force) once it holds anything.
 	fs::create_directories(d + "/user");
 	EXPECT_THROW(noteInMarker(d + "/user", "aside " + pid, false), std::runtime_error);
 	EXPECT_FALSE(fs::exists(d + "/user/" + kOutputMarker));
+	write(d + "/user/notes.txt", "the user's");
+	EXPECT_THROW(moveAside(d + "/user", false), std::runtime_error);
+	EXPECT_EQ(read(d + "/user/notes.txt"), "the user's");
+	// Empty when the run looked, filled by the time it is removed: kept.
+	fs::create_directories(d + "/empty");
+	MovedAside e = moveAside(d + "/empty", false);
+	write(e.path + "/notes.txt", "the user's");
+	testing::internal::CaptureStderr();
+	removeReplaced(e);
+	EXPECT_NE(testing::internal::GetCapturedStderr().find("was empty when the run looked"), std::string::npos);
+	EXPECT_EQ(read(d + "/empty.replaced-" + pid + "/notes.txt"), "the user's");
+	// A folder made while a staged output was being written is not replaced by it.
+	StagedFolder late(d + "/late", "omnirange-test", {}, false);
+	fs::create_directories(d + "/late");
+	write(d + "/late/notes.txt", "the user's");
+	EXPECT_THROW(late.commit(), std::runtime_error);
+	EXPECT_EQ(read(d + "/late/notes.txt"), "the user's");
 }
 
 TEST(OutputRule, AFolderItsRunWasKilledMarkingIsRemovedAndOneWithAnythingElseIsKept)

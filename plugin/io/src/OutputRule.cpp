@@ -342,7 +342,7 @@ void requireOutputAllowed(const std::string& output_as_given, OutputKind kind, c
 	if (!force && !program.empty()) requireNotAnothersPart(output, program);
 	// A file output's temporaries that killed runs left (a folder's are its
 	// writer's to recover: StagedFolder, RawlogWriter).
-	if (kind != OutputKind::Folder) recoverLeftoversOf(output, kind);
+	if (kind != OutputKind::Folder) recoverLeftoversOf(output, kind, "", begins_with);
 	const fs::path p(output);
 	std::error_code ec;
 	// A link is the user's: replaced (not what it names) only when they say so.
@@ -432,13 +432,16 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
 }
 
-MovedAside moveAside(const std::string& target)
+MovedAside moveAside(const std::string& target, bool force)
 {
 	const std::string old = target + ".old-" + std::to_string(::getpid()), aside = "aside " + std::to_string(::getpid());
 	std::error_code ec;
 	// The proof that TARGET.old-PID is this run's and not a user's backup of that name (added only to a
 	// marker still there: a folder put in its place since has none to add to).
 	const bool noted = !fs::is_symlink(target, ec) && fs::exists(fs::path(target) / kOutputMarker, ec);
+	if (!noted && !force && fs::is_directory(fs::symlink_status(target, ec)) && !fs::is_empty(target, ec))
+		throw std::runtime_error("cannot move '" + target + "' aside to replace it (it holds what this program did " +
+								 "not write: made or filled while the run went?); it is as it was");
 	try
 	{
 		if (noted) noteInMarker(target, aside, false);
@@ -448,7 +451,7 @@ MovedAside moveAside(const std::string& target)
 		throw std::runtime_error("cannot move '" + target + "' aside to replace it (" + e.what() + "); it is as it was");
 	}
 	renameNotReplacing(target, old, ec);
-	if (!ec) return {old, noted};
+	if (!ec) return {old, noted, force};
 	// Not moved: a copy made of it later must not read as moved aside by this run.
 	if (noted) unnoteInMarker(target, aside);
 	throw std::runtime_error("cannot move '" + target + "' aside to replace it (" +
@@ -458,13 +461,13 @@ MovedAside moveAside(const std::string& target)
 							 "); it is as it was");
 }
 
-void replaceFolder(const std::string& target, const std::string& fresh)
+void replaceFolder(const std::string& target, const std::string& fresh, bool force)
 {
 	const FolderLock lock(target);
 	MovedAside old;
 	std::error_code ec;
 	const bool had_old = fs::exists(fs::symlink_status(target, ec));
-	if (had_old) old = moveAside(target);
+	if (had_old) old = moveAside(target, force);
 	try
 	{
 		fs::rename(fresh, target);
@@ -577,6 +580,11 @@ void removeReplaced(const MovedAside& aside)
 		theirs = "its marker no longer says this run moved it aside (a folder put in its place meanwhile?)";
 	else if (const std::string added = aside.noted ? firstUnlistedIn(old) : ""; !added.empty())
 		theirs = "it holds '" + added + "', which the output did not list";
+	else if (std::error_code ec; !aside.noted && !aside.forced && fs::is_directory(fs::symlink_status(old, ec)))
+	{
+		if (const auto files = filesIn(old); !files.empty())
+			theirs = "it holds '" + files.front() + "', and was empty when the run looked";
+	}
 	const std::string why = theirs.empty() ? removedMarkerLast(old) : "";
 	if (theirs.empty() && why.empty()) return;
 	// Renamed, so that no reader takes it for an output half replaced (halfReplaced()).
@@ -601,7 +609,8 @@ std::string halfReplaced(const std::string& target)
 }
 
 
-void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::string& program)
+void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::string& program,
+						const std::string& begins_with)
 {
 	const fs::path t(target);
 	const fs::path dir = t.parent_path().empty() ? fs::path(".") : t.parent_path();
@@ -618,10 +627,11 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	// A folder: what in it the run did not make (firstNotMadeBy()); a file: not of the output's kind.
 	const auto notOurs = [&](const fs::path& p, const std::string& pid) -> std::string {
 		if (fs::is_directory(fs::symlink_status(p, ec))) return marked(p) ? firstNotMadeBy(p, pid) : p.string();
-		return kind != OutputKind::Folder && fs::is_regular_file(fs::symlink_status(p, ec)) &&
-					   (fs::file_size(p, ec) == 0 || isOfKind(p.string(), kind))
-				   ? ""
-				   : p.string();
+		if (kind == OutputKind::Folder || !fs::is_regular_file(fs::symlink_status(p, ec))) return p.string();
+		if (fs::file_size(p, ec) == 0) return "";
+		// Begun as this output begins, or cut short within that: a user's notes are text too.
+		const std::string head = firstBytes(p.string(), begins_with.size());
+		return isOfKind(p.string(), kind) && begins_with.compare(0, head.size(), head) == 0 ? "" : p.string();
 	};
 	for (const auto& e : fs::directory_iterator(dir, ec))
 	{
@@ -692,7 +702,11 @@ std::string folderOutputOf(const std::string& path)
 
 StagedFolder::StagedFolder(const std::string& target, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force)
-	: target_(folderOutputOf(target)), staging_(target_ + ".staging-" + std::to_string(::getpid()))
+	: target_(folderOutputOf(target)),
+	  staging_(target_ + ".staging-" + std::to_string(::getpid())),
+	  program_(program),
+	  inputs_(inputs),
+	  force_(force)
 {
 	recoverLeftoversOf(target_, OutputKind::Folder, program);
 	requireOutputAllowed(target_, OutputKind::Folder, program, inputs, force);
@@ -739,8 +753,17 @@ StagedFolder::~StagedFolder()
 
 void StagedFolder::commit()
 {
+	try
+	{
+		requireOutputAllowed(target_, OutputKind::Folder, program_, inputs_, force_);
+	}
+	catch (const std::exception& e)
+	{
+		throw std::runtime_error(std::string("the output was made but not put in place, as what is there changed while "
+											 "the run went: ") + e.what());
+	}
 	listOutputFolder(staging_);
-	replaceFolder(target_, staging_);  // if it fails, the old folder is back and the staging goes with this object
+	replaceFolder(target_, staging_, force_);  // if it fails, the old folder is back and the staging goes with this object
 	temporaries::forget(staging_);
 	done_ = true;
 }

@@ -270,8 +270,8 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	}
 	// The rule the programs check before they start, checked again here for
 	// every writer (a library user need not have called it).
-	requireOutputAllowed(images_, OutputKind::Folder, owner_, {},
-						 replace_any_ || (owner_ == kScanProgram && imagesLinkOf(path_, images_)));
+	const bool replace_any = replace_any_ || (owner_ == kScanProgram && imagesLinkOf(path_, images_));
+	requireOutputAllowed(images_, OutputKind::Folder, owner_, {}, replace_any);
 	if (!replace_any_) requireImagesOf(images_, path_);
 	// New images go in marked "pending" until their rawlog is in: a run killed
 	// between the two leaves images that every reader refuses, old rawlog or not.
@@ -281,7 +281,7 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	// The old images go aside, the new ones in, then the rawlog; only when
 	// all moves succeeded is the old folder removed.
 	const bool had_old = fs::is_symlink(images_) || fs::exists(images_);
-	const MovedAside old = had_old ? moveAside(images_) : MovedAside{};
+	const MovedAside old = had_old ? moveAside(images_, replace_any) : MovedAside{};
 	bool moved_in = false;
 	try
 	{

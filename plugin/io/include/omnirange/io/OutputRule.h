@@ -142,13 +142,16 @@ class StagedFolder
 	/** Runs `write`, which fills the staging folder; an error it throws names
 	 * the output the user asked for, not the staging folder (which is removed). */
 	void fill(const std::function<void()>& write) const;
+	/** Checks the rule again (the folder may have been made, filled or
+	 * replaced while the run went), then swaps the staging folder in. */
 	void commit();
 	/** Leaves the staging folder as it is (a failed run's output, for a look). */
 	void keep();
 
    private:
-	std::string target_, staging_;
-	bool done_{false};
+	std::string target_, staging_, program_;
+	std::vector<std::string> inputs_;
+	bool force_{false}, done_{false};
 };
 
 /** A folder an output replaces, moved aside (moveAside()). */
@@ -158,18 +161,22 @@ struct MovedAside
 	/** It was a folder of ours, noted "aside PID" in its marker just before the
 	 * rename: only such a folder, found still so, is removed as ours. */
 	bool noted{false};
+	/** Given with --force: a folder of no marker is replaced whatever it holds. */
+	bool forced{false};
 };
 
 /** Renames `target` to TARGET.old-PID; a folder of ours first notes in its
  * marker that this run moved it ("aside PID"), so that recoverLeftoversOf()
- * can tell it from a user's backup of that name. */
-MovedAside moveAside(const std::string& target);
+ * can tell it from a user's backup of that name. A folder of no marker that
+ * holds anything is refused unless `force`: the rule let only an empty one
+ * be replaced, so it was made or filled while the run went. */
+MovedAside moveAside(const std::string& target, bool force);
 
 /** Puts the finished folder `fresh` in the place of `target`: the old
  * `target` (if any) goes aside as TARGET.old-PID, `fresh` is renamed in,
  * then the old one is removed. If the rename fails, the old is put back and
  * the error names both. All-or-nothing for a multi-file output. */
-void replaceFolder(const std::string& target, const std::string& fresh);
+void replaceFolder(const std::string& target, const std::string& fresh, bool force);
 
 /** Removes `old`, what an output replaced (TARGET.old-PID). What cannot be
  * removed is renamed TARGET.replaced-PID (no reader takes it for a half
@@ -191,12 +198,14 @@ std::string halfReplaced(const std::string& target);
  * process is gone: staging and temporary copies are removed; an old copy
  * is put back when `target` is missing (the run died between the two
  * renames), else removed. Only what is ours: a folder holding the marker
- * (naming `program`, when given), or a file of `kind` (or empty); an old
- * copy only if its marker says that run moved it aside (moveAside()); a
- * user's file or backup with such a name stays. Called before a run makes
- * anything for `target`: names with its own PID are an earlier run's. An
- * empty folder of such a name goes too (a run killed removing it). */
+ * (naming `program`, when given), or a file of `kind` (or empty) that
+ * begins as `begins_with` or is cut short within it (a text output: any
+ * text would be of its kind); an old copy only if its marker says that run
+ * moved it aside (moveAside()); a user's file or backup with such a name
+ * stays. Called before a run makes anything for `target`: names with its
+ * own PID are an earlier run's. An empty folder of such a name goes too (a
+ * run killed removing it). */
 void recoverLeftoversOf(const std::string& target, OutputKind kind = OutputKind::Folder,
-						const std::string& program = "");
+						const std::string& program = "", const std::string& begins_with = "");
 
 }  // namespace omnirange
