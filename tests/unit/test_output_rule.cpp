@@ -96,6 +96,9 @@ TEST(OutputRule, AFolderIsReplacedOnlyWhenEmptyOrMarkedByTheSameProgram)
 	fs::create_directory(d + "/ours");
 	markOutputFolder(d + "/ours", "omnirange-test");
 	write(d + "/ours/report.md", "old");
+	// A marker that lists no file (an older version's, or cut short) vouches for none.
+	EXPECT_NE(refusal(d + "/ours", OutputKind::Folder).find("report.md"), std::string::npos);
+	listOutputFolder(d + "/ours");
 	EXPECT_EQ(refusal(d + "/ours", OutputKind::Folder), "");
 	fs::create_directory(d + "/other");
 	markOutputFolder(d + "/other", "omnirange-other");
@@ -520,6 +523,32 @@ TEST(OutputRule, AFolderPutInTheOutputsPlaceWhileItIsReplacedIsKeptNotRemoved)
 	EXPECT_EQ(read(d + "/late/notes.txt"), "the user's");
 }
 
+TEST(OutputRule, AFolderMadeAtTheOutputsNameAsItGoesInGetsNoMarkerAndTheOldOutputIsKept)
+{
+	const std::string d = fresh("made_at_commit"), pid = std::to_string(::getpid());
+	writeOneImageLog(d + "/x.rawlog", 1);
+	// The new images are in and the rawlog about to be: the user moves them away and makes a folder of that name.
+	const auto userFolder = [&] {
+		fs::rename(d + "/x_Images", d + "/x_Images.moved");
+		fs::create_directory(d + "/x_Images");
+		write(d + "/x_Images/notes.txt", "the user's");
+	};
+	EXPECT_THROW(writeOneImageLog(d + "/x.rawlog", 2, userFolder), std::runtime_error);
+	EXPECT_EQ(read(d + "/x_Images/notes.txt"), "the user's");
+	EXPECT_FALSE(fs::exists(d + "/x_Images/" + kOutputMarker));
+	// The old images a run moved aside, beside a folder of the user's at the output's name: kept, and said.
+	fs::create_directories(d + "/S.old-999999");
+	write(d + "/S.old-999999/a.md", "the old output");
+	write(d + "/S.old-999999/" + kOutputMarker, "omnirange-test\nrun 5\nfile a.md\naside 999999\n");
+	fs::create_directories(d + "/S");
+	write(d + "/S/notes.txt", "the user's");
+	testing::internal::CaptureStderr();
+	recoverLeftoversOf(d + "/S", OutputKind::Folder, "omnirange-test");
+	EXPECT_NE(testing::internal::GetCapturedStderr().find("is not this program's output"), std::string::npos);
+	EXPECT_EQ(read(d + "/S.old-999999/a.md"), "the old output");
+	EXPECT_EQ(read(d + "/S/notes.txt"), "the user's");
+}
+
 TEST(OutputRule, AFolderItsRunWasKilledMarkingIsRemovedAndOneWithAnythingElseIsKept)
 {
 	// Killed between making its staging folder and writing the marker's lines: an empty marker, no file
@@ -769,9 +798,14 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 	EXPECT_THROW(writeOne(false), std::runtime_error);
 	EXPECT_EQ(read(d + "/log_Images/photo.jpg"), "the user's");
 	EXPECT_FALSE(fs::exists(d + "/log.rawlog"));
-	writeOne(true);  // --force
+	testing::internal::CaptureStderr();
+	writeOne(true);  // --force: replaced, and the user's folder kept beside it, said
+	EXPECT_NE(testing::internal::GetCapturedStderr().find("replaced with --force"), std::string::npos);
 	EXPECT_TRUE(fs::exists(d + "/log_Images/0.png"));
 	EXPECT_TRUE(isOutputFolderOf(d + "/log_Images", "omnirange-test"));
+	const std::string kept = d + "/log_Images.replaced-" + std::to_string(::getpid());
+	EXPECT_EQ(read(kept + "/photo.jpg"), "the user's");
+	fs::remove_all(kept);
 	writeOne(false);  // now ours: replaced again without asking
 	EXPECT_TRUE(fs::exists(d + "/log.rawlog"));
 	EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 2);  // no .old or .tmp left

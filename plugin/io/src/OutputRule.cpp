@@ -474,9 +474,11 @@ void replaceFolder(const std::string& target, const std::string& fresh, bool for
 	}
 	catch (const std::exception& e)
 	{
-		if (had_old) fs::rename(old.path, target, ec);
-		throw std::runtime_error("cannot move '" + fresh + "' to '" + target + "' (" + e.what() + "); '" + target +
-								 "' is as it was");
+		if (had_old) renameNotReplacing(old.path, target, ec);
+		// Not put back (a folder made at its name meanwhile): said where it is.
+		throw std::runtime_error("cannot move '" + fresh + "' to '" + target + "' (" + e.what() + "); " +
+								 (had_old && ec ? "the old output is in '" + old.path + "' (" + ec.message() + ")"
+												: "'" + target + "' is as it was"));
 	}
 	if (had_old) removeReplaced(old);
 }
@@ -580,10 +582,12 @@ void removeReplaced(const MovedAside& aside)
 		theirs = "its marker no longer says this run moved it aside (a folder put in its place meanwhile?)";
 	else if (const std::string added = aside.noted ? firstUnlistedIn(old) : ""; !added.empty())
 		theirs = "it holds '" + added + "', which the output did not list";
-	else if (std::error_code ec; !aside.noted && !aside.forced && fs::is_directory(fs::symlink_status(old, ec)))
+	else if (std::error_code ec; !aside.noted && fs::is_directory(fs::symlink_status(old, ec)))
 	{
+		// No marker: a folder --force replaced, or one filled after the run found it empty. Kept all the same.
 		if (const auto files = filesIn(old); !files.empty())
-			theirs = "it holds '" + files.front() + "', and was empty when the run looked";
+			theirs = "it holds '" + files.front() + "', and " +
+					 (aside.forced ? "is no output of this program (replaced with --force)" : "was empty when the run looked");
 	}
 	const std::string why = theirs.empty() ? removedMarkerLast(old) : "";
 	if (theirs.empty() && why.empty()) return;
@@ -674,6 +678,11 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 			// An old copy put back where its output is missing is moved, not removed: its being ours is enough.
 			if (old && !fs::exists(fs::symlink_status(t, ec)))
 				fs::rename(e.path(), t, ec);
+			// The output's name taken by what is not this program's (a folder made there meanwhile): the old copy is the
+			// only output left.
+			else if (old && !marked(t))
+				temporaries::warn("kept '" + e.path().string() + "', the output a killed or failed run moved aside: '" +
+								  t.string() + "' is not this program's output (rename one of them)");
 			else if (const std::string added = notOurs(e.path(), pid); added.empty())
 			{
 				if (const std::string why = removedMarkerLast(e.path()); !why.empty())
@@ -801,13 +810,16 @@ void noteInMarker(const std::string& dir, const std::string& line, bool create)
 	}
 }
 
-void unnoteInMarker(const std::string& dir, const std::string& line)
+bool unnoteInMarker(const std::string& dir, const std::string& line)
 {
 	const std::string marker = (fs::path(dir) / kOutputMarker).string();
 	std::string kept;
+	bool had = false;
 	for (const auto& l : markerLines(dir))
 		if (l != line) kept += l + "\n";
-	writeFileAtomically(marker, kept);
+		else had = true;
+	if (had) writeFileAtomically(marker, kept);
+	return had;
 }
 
 std::string markerValue(const std::string& dir, const std::string& key)
@@ -870,9 +882,9 @@ void listOutputFolder(const std::string& dir)
 
 std::string firstUnlistedIn(const std::string& dir)
 {
+	// A marker that lists nothing (cut short, or written before markers listed files) vouches for no file.
 	bool has_list = false;
 	const std::set<std::string> listed = listedIn(dir, has_list);
-	if (!has_list) return "";  // a marker from before the listing: nothing to compare
 	// An empty folder its files were listed in is the run's, emptied (a run killed removing it).
 	const auto heldListed = [&](const std::string& rel) {
 		const auto next = listed.lower_bound(rel + "/");

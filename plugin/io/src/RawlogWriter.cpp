@@ -310,7 +310,20 @@ void RawlogWriter::commit(const std::vector<StagedFile*>& along, const std::func
 	files.finish();
 	committed_ = true;
 	forgetReadings();
-	unnoteInMarker(images_, pending);
+	bool unnoted = false;
+	std::string why;
+	try
+	{
+		unnoted = unnoteInMarker(images_, pending);
+	}
+	catch (const std::exception& e)
+	{
+		why = std::string(" (") + e.what() + ")";
+	}
+	if (!unnoted)
+		throw std::runtime_error("'" + path_ + "' is in place, but its images '" + images_ + "' were moved or replaced " +
+								 "while the run put them there" + why +
+								 (had_old ? "; the old ones are in '" + old.path + "'" : "") + ": run it again");
 	if (had_old) removeReplaced(old);
 }
 

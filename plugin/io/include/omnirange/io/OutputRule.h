@@ -82,8 +82,10 @@ std::vector<std::string> markerLines(const std::string& dir);
  * files, its rawlog or its moving aside were); throws naming the marker.
  * With `create` false, a folder without a marker is refused, not marked. */
 void noteInMarker(const std::string& dir, const std::string& line, bool create = true);
-/** Takes `line` out of the marker of `dir` (the marker rewritten whole). */
-void unnoteInMarker(const std::string& dir, const std::string& line);
+/** Takes `line` out of the marker of `dir` (the marker rewritten whole);
+ * false, and nothing written, when the marker does not have it (the folder
+ * was moved or replaced meanwhile: no marker is made in a user's folder). */
+bool unnoteInMarker(const std::string& dir, const std::string& line);
 /** What the marker of `dir` says after "KEY " on its first line so begun
  * ("" if none): "pending PID" (a folder moved in before the file it belongs
  * with, RawlogWriter::commit()), "rawlog NAME", "content CRC" (its rawlog's,
@@ -161,7 +163,8 @@ struct MovedAside
 	/** It was a folder of ours, noted "aside PID" in its marker just before the
 	 * rename: only such a folder, found still so, is removed as ours. */
 	bool noted{false};
-	/** Given with --force: a folder of no marker is replaced whatever it holds. */
+	/** Given with --force: a folder of no marker is replaced whatever it holds
+	 * (and kept, renamed, if it holds anything). */
 	bool forced{false};
 };
 
@@ -182,8 +185,9 @@ void replaceFolder(const std::string& target, const std::string& fresh, bool for
  * removed is renamed TARGET.replaced-PID (no reader takes it for a half
  * replaced output) and warned about with the system's reason; the new
  * output is in place by then, so the run does not fail. A folder noted as
- * ours that no longer says so, or holds what its marker does not list, was
- * put in its place by someone while the run committed: it is kept, and
+ * ours that no longer says so, or holds what its marker does not list, and
+ * a folder of no marker that holds anything (replaced with --force, or
+ * filled after the run found it empty) are the user's: they are kept so, and
  * said. */
 void removeReplaced(const MovedAside& old);
 
