@@ -345,6 +345,15 @@ TEST(AppClasses, CalibrateDoesNotSaveIntoABaseIniItsIniWasReplacedByALinkToMeanw
 	fs::create_symlink("base.ini", o.ini);
 	EXPECT_THROW(app.runOCamCalib(), std::runtime_error);
 	EXPECT_EQ(readText(dir + "/base.ini"), "[rangefinder]\nthreshold = 0.075\n");
+	// Nor into another camera's ini (no input of this run) it was re-pointed to.
+	fs::remove(o.ini);
+	fs::rename(dir + "/c.ini.mine", o.ini);
+	CalibrateApp again(o);
+	std::ofstream(dir + "/other.ini") << "[rangefinder]\nK = 2\n";
+	fs::rename(o.ini, dir + "/c.ini.mine");
+	fs::create_symlink("other.ini", o.ini);
+	EXPECT_THROW(again.runOCamCalib(), std::runtime_error);
+	EXPECT_EQ(readText(dir + "/other.ini"), "[rangefinder]\nK = 2\n");
 }
 
 TEST(AppClasses, CalibrateFindsTheCamerasOrientation)

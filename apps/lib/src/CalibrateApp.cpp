@@ -130,6 +130,8 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 	requireOutputsAllowed({{o_.save_to, OutputKind::Ini}, {o_.intrinsics_output, OutputKind::Text, kOpenCvYamlBegins}},
 						  "omnirange-calibrate", inputs_);
 	if (!o_.save_to.empty()) RangefinderParams::requireWritable(o_.save_to, o_.section);
+	std::error_code ec;
+	save_to_file_ = std::filesystem::weakly_canonical(o_.save_to, ec).string();
 }
 
 void CalibrateApp::saveCameraKeys(const CameraParams& cam, const std::vector<std::string>& model_keys,
@@ -143,7 +145,12 @@ void CalibrateApp::saveCameraKeys(const CameraParams& cam, const std::vector<std
 void CalibrateApp::saveKeys(const std::vector<std::pair<std::string, std::string>>& keys,
 							const std::vector<StagedFile*>& with) const
 {
-	// An ini replaced meanwhile by a link to its base is not written through (the -o YAML may be staged by now).
+	// An ini replaced meanwhile by a link (to its base, to another camera's ini) is not written through; the
+	// whole check would take the -o YAML, staged by now, for a leftover.
+	std::error_code ec;
+	if (const std::string now = std::filesystem::weakly_canonical(o_.save_to, ec).string(); now != save_to_file_)
+		throw std::runtime_error("'" + o_.save_to + "' now leads to '" + now + "', not to the file it was when the run " +
+								 "began: nothing was saved (run again)");
 	requireApartFromInputs(outputPath(o_.save_to), OutputKind::Ini, inputs_);
 	writeIniSection(o_.save_to, o_.section, keys, RangefinderParams::table().comments(), with);
 }

@@ -78,6 +78,8 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	Options o_;
 	/** What the run reads, as found at the start (the -c ini's bases included). */
 	std::vector<std::string> inputs_;
+	/** The file --save-to leads to at the start, through links. */
+	std::string save_to_file_;
 	OrientationFit orientation_;
 };
 
