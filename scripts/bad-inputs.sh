@@ -177,11 +177,13 @@ printf '#direct\n3 96 0 0.0026\n#inverse\n2 1 1\n#center\n380 515\n#affine\n1 0 
 run_case "calibrate: OCamCalib file with a wrong count" error cal.ini -- "$apps/omnirange-calibrate" -q --ocamcalib wrong_count_calib.txt --save-to cal.ini
 run_case "calibrate: OCamCalib centre looking up (a0 > 0)" error cal.ini -- "$apps/omnirange-calibrate" -q --ocamcalib upward_calib.txt --save-to cal.ini
 mkdir -p imp && cp "$(ls s_Images/* | sort | head -1)" imp/100.0.jpg && cp "$(ls s_Images/* | sort | sed -n 2p)" imp/100.4.jpg
-printf '100.0, 1, 2, 3\n100.4, 1, 2, 3\n' > imp_laser.csv
+printf '100.0, 1.5, 2.5, 3.5\n100.4, 1.5, 2.5, 3.5\n' > imp_laser.csv
 printf '100.4, 1, 2, 3\n100.0, 1, 2, 3\n' > imp_unsorted.csv
 printf '100.0, 1, 2, 3\n100.4, 1, 2\n' > imp_short.csv
 run_case "import: laser rows out of time order" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_unsorted.csv -o imp.rawlog
 run_case "import: a laser row with a range missing" error imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_short.csv -o imp.rawlog
+printf '100.0,2,1,2,2,2,3\n100.4,2,1,2,2,2,3\n' > imp_commas.csv
+run_case "import: ranges written with decimal commas (2,1)" "error:decimal commas" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_commas.csv -o imp.rawlog
 mkdir -p imp_bad && printf 'not an image' > imp_bad/100.0.jpg
 run_case "import: an image that does not decode" error imp.rawlog -- "$apps/omnirange-import" -q --images imp_bad --laser imp_laser.csv -o imp.rawlog
 run_case "import: output is the laser log" error imp_laser.csv.none -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv -o imp_laser.csv
@@ -369,7 +371,7 @@ run_case "train: --laser-margin 1e6" "error:laser_margin must be within" lm.hist
 variant azimuth_huge 'forward_azimuth_deg = 1e308'
 run_case "scan: forward_azimuth_deg = 1e308" "error:forward_azimuth_deg = '1e308'" az.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c azimuth_huge.ini -H floor.hist -o az.rawlog
 run_case "import: --laser-max-range 1e308" "error:max range" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --laser-max-range 1e308 -o imp.rawlog
-printf '1000.0, 1, 2, 3\n1000.4, 1, 2, 3\n' > imp_far.csv
+printf '1000.0, 1.5, 2.5, 3.5\n1000.4, 1.5, 2.5, 3.5\n' > imp_far.csv
 run_case "import: a laser log with no time in common with the images" "error:no time in common" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_far.csv -o imp.rawlog
 printf '[rangefinder]\nthresold = 0.1\n' > typo_save.ini && cp typo_save.ini typo_save.ini.orig
 printf '#direct\n3 -96 0 0.0026\n#inverse\n2 1 1\n#center\n380 515\n#affine\n1 0 0\n#size\n768 1024\n' > good_calib.txt

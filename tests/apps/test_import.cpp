@@ -296,7 +296,8 @@ TEST(Import, BadLogsAreNamedByFileAndLineAndNothingIsWritten)
 	// A row with one range too few, a missing time, ranges written with decimal commas (each read as two rays).
 	const BadLog csvs[] = {{"short.csv", "100.0, 1, 2, 3\n100.1, 1, 2\n", "short.csv:2: 2 ranges, but the first row has 3"},
 						   {"notime.csv", "100.0, 1, 2, 3\n, 1, 2, 3\n", "notime.csv:2: time ''"},
-						   {"commas.csv", "100,2,000,2,100,1,950\n", "commas.csv:1: range 1 '000': a whole number with a leading zero"}};
+						   {"commas.csv", "100,2,000,2,100,1,950\n", "commas.csv:1: range 1 '000': a whole number with a leading zero"},
+						   {"one_decimal.csv", "100,2,1,2,2\n100.4,2,1,2,2\n", "is a whole number of metres"}};
 	for (const BadLog& b : csvs)
 		EXPECT_NE(errorWithFile(o, o.import.laser_csv, dir + "/" + b.name, b.text).find(b.error), std::string::npos)
 			<< errorOf(o);

@@ -236,6 +236,13 @@ UserLogs readUserLogs(const LogImportOptions& o)
 	if (!u.scans.empty() && !any_return)
 		throw std::runtime_error("no range of '" + laser_file + "' lies within (0, " + formatDouble(u.laser_max_range) +
 								 ") m, the laser's max range: ranges in millimetres, or another max range?");
+	// No laser measures in whole metres: "2,1" (a decimal comma) read as the two rays 2 and 1 leaves only such.
+	const bool all_whole = std::all_of(u.scans.begin(), u.scans.end(), [](const LaserRow& row) {
+		return std::all_of(row.ranges.begin(), row.ranges.end(), [](double r) { return r == std::floor(r); });
+	});
+	if (!u.scans.empty() && all_whole)
+		throw std::runtime_error("every range of '" + laser_file + "' is a whole number of metres: written with " +
+								 "decimal commas (2,1 is read as the two rays 2 and 1), or in another unit?");
 	requireSharedTime(u.images, u.scans, laser_file), requireSharedTime(u.images, u.odometry, odometry_file);
 	for (const OdometryRow& p : u.odometry)
 		if (!(std::abs(p.x) <= kMaxOdometryCoordinate && std::abs(p.y) <= kMaxOdometryCoordinate &&
