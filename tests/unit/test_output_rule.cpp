@@ -549,6 +549,34 @@ TEST(OutputRule, AFolderMadeAtTheOutputsNameAsItGoesInGetsNoMarkerAndTheOldOutpu
 	EXPECT_EQ(read(d + "/S/notes.txt"), "the user's");
 }
 
+TEST(OutputRule, FoldersForceReplacesAreKeptEachUnderANameOfItsOwnAndAMarkersTemporaryIsNoObstacle)
+{
+	// In a container every run is PID 1: the second folder kept must not meet the first.
+	const std::string d = fresh("kept_twice"), pid = std::to_string(::getpid());
+	const auto forced = [&](int value) {
+		RawlogWriter w(d + "/x.rawlog", "omnirange-test");
+		w.replaceAnyImagesFolder();
+		w.externalImage(cv::Mat(4, 4, CV_8UC3, cv::Scalar(value, value, value)), "0.png");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit();
+	};
+	for (int i = 1; i <= 2; ++i)
+	{
+		fs::remove_all(d + "/x_Images");
+		fs::create_directories(d + "/x_Images");
+		write(d + "/x_Images/notes.txt", "the user's " + std::to_string(i));
+		testing::internal::CaptureStderr();
+		forced(i);
+		EXPECT_NE(testing::internal::GetCapturedStderr().find("replaced with --force"), std::string::npos);
+	}
+	EXPECT_EQ(read(d + "/x_Images.replaced-" + pid + "/notes.txt"), "the user's 1");
+	EXPECT_EQ(read(d + "/x_Images.replaced-" + pid + "-2/notes.txt"), "the user's 2");
+	// A run killed rewriting the output's marker left the marker's temporary in it: the next run goes on.
+	write(d + "/x_Images/." + std::string(kOutputMarker) + ".tmp-" + pid, "omnirange-te");
+	EXPECT_NO_THROW(writeOneImageLog(d + "/x.rawlog", 3));
+	EXPECT_EQ(cv::imread(d + "/x_Images/0.png").at<cv::Vec3b>(0, 0)[0], 3);
+}
+
 TEST(OutputRule, AFolderItsRunWasKilledMarkingIsRemovedAndOneWithAnythingElseIsKept)
 {
 	// Killed between making its staging folder and writing the marker's lines: an empty marker, no file

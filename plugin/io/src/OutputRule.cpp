@@ -432,6 +432,23 @@ void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string
 	for (const auto& o : outputs) requireOutputAllowed(o.path, o.kind, program, inputs, force, o.begins_with);
 }
 
+namespace
+{
+/** Renames `from` to TARGET.replaced-PID, or TARGET.replaced-PID-N where that
+ * is taken (a container's runs are all PID 1): where a folder an output
+ * replaced is kept, never onto another such. Sets `kept` to the name. */
+void moveToKept(const std::string& from, const std::string& target, std::string& kept, std::error_code& ec)
+{
+	const std::string first = target + ".replaced-" + std::to_string(::getpid());
+	for (int n = 1; n <= 1000; ++n)
+	{
+		kept = n == 1 ? first : first + "-" + std::to_string(n);
+		renameNotReplacing(from, kept, ec);
+		if (ec.value() != EEXIST) return;
+	}
+}
+}  // namespace
+
 MovedAside moveAside(const std::string& target, bool force)
 {
 	const std::string old = target + ".old-" + std::to_string(::getpid()), aside = "aside " + std::to_string(::getpid());
@@ -442,6 +459,15 @@ MovedAside moveAside(const std::string& target, bool force)
 	if (!noted && !force && fs::is_directory(fs::symlink_status(target, ec)) && !fs::is_empty(target, ec))
 		throw std::runtime_error("cannot move '" + target + "' aside to replace it (it holds what this program did " +
 								 "not write: made or filled while the run went?); it is as it was");
+	// Not this program's, replaced with --force: kept at once under the name it keeps (a run killed now leaves it
+	// there, in no run's way and taken by none for a leftover).
+	if (!noted && force && fs::is_directory(fs::symlink_status(target, ec)) && !fs::is_empty(target, ec))
+	{
+		std::string kept;
+		moveToKept(target, target, kept, ec);
+		if (!ec) return {kept, false, true, true};
+		throw std::runtime_error("cannot move '" + target + "' aside to replace it (" + ec.message() + "); it is as it was");
+	}
 	try
 	{
 		if (noted) noteInMarker(target, aside, false);
@@ -592,10 +618,10 @@ void removeReplaced(const MovedAside& aside)
 	const std::string why = theirs.empty() ? removedMarkerLast(old) : "";
 	if (theirs.empty() && why.empty()) return;
 	// Renamed, so that no reader takes it for an output half replaced (halfReplaced()).
-	const auto at = old.rfind(".old-");
-	const std::string kept = at == std::string::npos ? old : old.substr(0, at) + ".replaced-" + old.substr(at + 5);
+	std::string kept = old;
 	std::error_code ec;
-	fs::rename(old, kept, ec);
+	if (const auto at = old.rfind(".old-"); !aside.kept && at != std::string::npos)
+		moveToKept(old, old.substr(0, at), kept, ec);
 	temporaries::warn(theirs.empty() ? "could not remove the replaced '" + (ec ? old : kept) + "' (" + why +
 										   "): the new output is whole; remove that folder yourself"
 									 : "kept '" + (ec ? old : kept) + "', what the output replaced: " + theirs +
@@ -622,6 +648,15 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 	if (!fs::is_directory(dir, ec)) return;
 	const std::string name = t.filename().string();
 	if (kind != OutputKind::Folder) recoverSetOf(target);  // a set of files a killed run was putting in place
+	// Inside the output: its marker's temporary, from a run killed rewriting it (the marker's name is ours).
+	if (kind == OutputKind::Folder && fs::is_directory(fs::symlink_status(t, ec)))
+		for (const auto& e : fs::directory_iterator(t, ec))
+		{
+			const std::string other = e.path().filename().string(), prefix = std::string(".") + kOutputMarker + ".tmp-";
+			if (other.rfind(prefix, 0) != 0 || !fs::is_regular_file(fs::symlink_status(e.path(), ec))) continue;
+			if (const std::string pid = other.substr(prefix.size()); pid == std::to_string(::getpid()) || deadRun(pid))
+				fs::remove(e.path(), ec);
+		}
 	// Only what our runs leave: a folder holding the marker; a file of the
 	// output's kind, or empty (killed before it wrote). A user's file that
 	// merely has such a name is left alone.

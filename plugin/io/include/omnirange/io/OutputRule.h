@@ -166,6 +166,9 @@ struct MovedAside
 	/** Given with --force: a folder of no marker is replaced whatever it holds
 	 * (and kept, renamed, if it holds anything). */
 	bool forced{false};
+	/** Moved straight to the name it is kept under (TARGET.replaced-PID): a
+	 * folder of no marker that --force replaces, which no run removes. */
+	bool kept{false};
 };
 
 /** Renames `target` to TARGET.old-PID; a folder of ours first notes in its
