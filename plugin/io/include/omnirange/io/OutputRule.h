@@ -114,8 +114,9 @@ void fillListed(const std::string& dir, const std::function<void()>& write);
  * the program wrote, so that a file a user adds later is not replaced with it. */
 void listOutputFolder(const std::string& dir);
 /** A file in the marked folder `dir` (relative) that its marker does not
- * list, or "" (also for a marker without a list). An empty folder counts
- * as a file, unless its marker lists files in it (the run's, emptied). */
+ * list, or "" (a marker without a list vouches for no file). An empty
+ * folder counts as a file, unless its marker lists files in it (the run's,
+ * emptied). */
 std::string firstUnlistedIn(const std::string& dir);
 /** Writes the marker into the folder `dir` (being made) naming `program`. */
 void markOutputFolder(const std::string& dir, const std::string& program);
