@@ -301,9 +301,18 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 	write(d + "/report.old-999990/map.png", "ours");
 	listOutputFolder(d + "/report.old-999990");
 	write(d + "/report.old-999990/notes.txt", "a user's notes");
+	// Kept under a name no run takes (in a container, the next run's own .old-1 would be in the way), and said.
+	const auto keptAs = [](const std::string& said) {
+		const auto at = said.find("kept '") + 6;
+		return said.substr(at, said.find('\'', at) - at);
+	};
+	testing::internal::CaptureStderr();
 	recoverLeftoversOf(d + "/report");
-	EXPECT_EQ(read(d + "/report.old-999990/notes.txt"), "a user's notes");
-	EXPECT_EQ(read(d + "/report.old-999990/map.png"), "ours");
+	const std::string kept = keptAs(testing::internal::GetCapturedStderr());
+	EXPECT_EQ(kept.rfind(d + "/report.replaced-", 0), 0u) << kept;
+	EXPECT_EQ(read(kept + "/notes.txt"), "a user's notes");
+	EXPECT_EQ(read(kept + "/map.png"), "ours");
+	EXPECT_FALSE(fs::exists(d + "/report.old-999990"));
 	// One a run was killed removing, a folder its listed files were in emptied: all its own still, removed.
 	fs::create_directories(d + "/report.old-999988/icp_slam");
 	write(d + "/report.old-999988/" + kOutputMarker, "omnirange-test\naside 999988\n");
@@ -326,11 +335,15 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 		testing::internal::CaptureStderr();
 		recoverLeftoversOf(d + "/report", OutputKind::Folder, "omnirange-test");
 		const std::string said = testing::internal::GetCapturedStderr();
-		EXPECT_EQ(fs::exists(staging), added) << (added ? "a user's file was removed" : "a listed leftover stayed");
+		EXPECT_FALSE(fs::exists(staging));
 		// What is kept is said, naming the file that keeps it.
-		EXPECT_EQ(said.find("warning: kept '" + staging + "'") != std::string::npos && said.find("NOTES.txt") != std::string::npos,
-				  added) << said;
-		fs::remove_all(staging);
+		EXPECT_EQ(said.find("warning: kept '") != std::string::npos && said.find("NOTES.txt") != std::string::npos, added)
+			<< said;
+		if (added)
+		{
+			EXPECT_EQ(read(keptAs(said) + "/NOTES.txt"), "a user's notes");
+			fs::remove_all(keptAs(said));
+		}
 	}
 	// Killed before it listed its files (an experiment during its simulation): what it wrote by then is
 	// its hidden temporaries and folders its marker names; with anything else in it, it is kept and said.
@@ -346,9 +359,13 @@ TEST(OutputRule, AFolderIsReplacedAllOrNothingAndAKilledRunsLeftoversAreCleared)
 		testing::internal::CaptureStderr();
 		recoverLeftoversOf(d + "/report", OutputKind::Folder, "omnirange-test");
 		const std::string said = testing::internal::GetCapturedStderr();
-		EXPECT_EQ(fs::exists(staging), added) << (added ? "a user's file was removed" : "an unlisted leftover stayed");
+		EXPECT_FALSE(fs::exists(staging));
 		EXPECT_EQ(said.find("dataset/notes.txt") != std::string::npos, added) << said;
-		fs::remove_all(staging);
+		if (added)
+		{
+			EXPECT_EQ(read(keptAs(said) + "/dataset/notes.txt"), "either") << "a user's file was removed";
+			fs::remove_all(keptAs(said));
+		}
 	}
 	// A path through a folder that is not there: the system could not write it, though it reads as "d".
 	EXPECT_NE(refusal(d + "/missing/..", OutputKind::Folder).find("passes through"), std::string::npos);

@@ -724,8 +724,13 @@ void recoverLeftoversOf(const std::string& target, OutputKind kind, const std::s
 					temporaries::warn("could not remove '" + e.path().string() + "', a killed run's leftover (" + why + ")");
 			}
 			else if (fs::is_directory(e.path(), ec))
-				temporaries::warn("kept '" + e.path().string() + "', a killed run's leftover: it holds '" + added +
-								  "', which that run did not write (remove the folder once nothing in it is yours)");
+			{
+				// Out of the names runs take (in a container, the next run's own): kept where no run will need it.
+				std::string kept;
+				moveToKept(e.path().string(), t.string(), kept, ec);
+				temporaries::warn("kept '" + (ec ? e.path().string() : kept) + "', a killed run's leftover: it holds '" +
+								  added + "', which that run did not write (remove the folder once nothing in it is yours)");
+			}
 		}
 	}
 }
