@@ -159,6 +159,7 @@ TEST(TunerSession, ChangesAreUnsavedUntilSaved)
 	p.scanner.filter.K += 1;
 	s.setParams(p);
 	fs::copy_file(kIni, dir + "/user.ini");
+	fs::copy_file(test::kSource + "/ini/experiment-base.ini", dir + "/experiment-base.ini");  // its base: it loads
 	s.saveIni(dir + "/user.ini");
 	EXPECT_FALSE(s.unsaved());
 }
@@ -342,6 +343,17 @@ TEST(TunerSession, SaveChecksTheIniAgainWhenItIsSavedNotOnlyWhenTheWindowOpens)
 	fs::create_symlink("experiment-base.ini", o.ini);
 	EXPECT_NE(refusal().find("is the input"), std::string::npos) << refusal();
 	EXPECT_EQ(read(dir + "/experiment-base.ini"), base_text);
+	fs::remove(o.ini);
+	// Put back as a link to a file that is no input (another camera's ini): not the file the window opened on.
+	std::ofstream(dir + "/camera2.ini") << "[rangefinder]\nthreshold = 0.9\n";
+	fs::create_symlink("camera2.ini", o.ini);
+	EXPECT_NE(refusal().find("now leads to"), std::string::npos) << refusal();
+	EXPECT_EQ(read(dir + "/camera2.ini"), "[rangefinder]\nthreshold = 0.9\n");
+	fs::remove(o.ini);
+	// Its base line edited to a file that is not there: what would be saved no program could read.
+	std::ofstream(o.ini) << "base = missing-base.ini\n[rangefinder]\nN = 12\n";
+	EXPECT_NE(refusal().find("missing-base.ini"), std::string::npos) << refusal();
+	EXPECT_EQ(read(o.ini), "base = missing-base.ini\n[rangefinder]\nN = 12\n");
 	fs::remove(o.ini);
 	// Emptied meanwhile (by an editor, a copy that failed): the same as gone.
 	const std::string text = read(dir + "/moved.ini");

@@ -254,3 +254,19 @@ TEST(CameraModel, AnOCamCalibPolynomialNeedHoldOnlyOverTheImagesPixels)
 	p.image_width = 1600, p.image_height = 1200, p.cx = 800, p.cy = 600;  // now 1000 px: past the turn
 	EXPECT_THROW(p.validate(), std::invalid_argument);
 }
+
+TEST(CameraModel, AnOCamCalibPolynomialIsCheckedOutToTheIdealRadiusOfTheImagesCorners)
+{
+	// z = -96 + rho^2 / 384 - 2e-6 rho^3 turns theta back at about 701 px. On
+	// a 1024 x 768 image centred on the axis the farthest corner is 640 px
+	// away in pixels; with c = 0.6 (rows squeezed) it is about 820 px away as
+	// the model's ideal radius, past the turn.
+	CameraParams p;
+	p.mirror_model = MirrorModel::OCamCalib;
+	p.image_width = 1024, p.image_height = 768, p.cx = 512, p.cy = 384;
+	p.ocam_poly = {-96, 0, 1 / 384.0, -2e-6};
+	p.ocam_affine = {1, 0, 0};
+	EXPECT_NO_THROW(p.validate());
+	p.ocam_affine = {0.6, 0, 0};
+	EXPECT_THROW(p.validate(), std::invalid_argument);
+}

@@ -165,6 +165,17 @@ TEST(OptionsTable, KeysAreWrittenOnlyIntoAnIniEveryProgramReads)
 		EXPECT_EQ(why.rfind(path + ": ", 0), 0u) << why;
 		EXPECT_NE(why.find(bad.substr(0, bad.find(' '))), std::string::npos) << why;
 	}
+	// An ini whose base does not load (missing, a loop, no file) is read by no program.
+	const std::string base = path + ".base.ini";
+	std::ofstream(base) << "[rangefinder]\nh = 0.9\n";
+	EXPECT_EQ(refusal("base = " + base + "\n[rangefinder]\nthreshold = 0.1\n"), "");
+	for (const std::string& bad : {base + ".missing", path, std::string("/dev/zero")})
+	{
+		const std::string why = refusal("base = " + bad + "\n[rangefinder]\nthreshold = 0.1\n");
+		EXPECT_NE(why, "") << bad;
+		EXPECT_NE(why.find(path), std::string::npos) << why;
+	}
+	std::filesystem::remove(base);
 	std::filesystem::remove(path);
 	EXPECT_NO_THROW(RangefinderParams::requireWritable(path, "rangefinder"));  // a new file
 }

@@ -272,8 +272,9 @@ void TunerSession::requireSaveAllowed(const std::string& ini)
 		}
 	};
 	const bool own = key == fs::absolute(o_.ini, ec).lexically_normal().string();
-	keys_when_opened_.emplace(key, own ? std::max(1, keysIn()) : keysIn());  // the -c ini was read with its keys
-	const int then = keys_when_opened_.at(key), now = keysIn();
+	const std::string leads_to = fs::weakly_canonical(ini, ec).string();
+	save_targets_.emplace(key, SaveTarget{own ? std::max(1, keysIn()) : keysIn(), leads_to});  // -c: read with its keys
+	const int then = save_targets_.at(key).keys, now = keysIn();
 	if (then >= 0 && now < 0)
 		throw std::runtime_error("'" + ini + "' was moved or removed since the window opened: a new one would hold " +
 								 "none of its other keys; put it back, then save");
@@ -283,6 +284,10 @@ void TunerSession::requireSaveAllowed(const std::string& ini)
 	std::vector<std::string> inputs{o_.rawlog, o_.histogram};
 	inputs.insert(inputs.end(), bases_.begin(), bases_.end());
 	requireOutputAllowed(ini, OutputKind::Ini, "omnirange-tuner", inputs);
+	// Made a link to another file meanwhile (another camera's ini, a user's notes): that file was never given.
+	if (const std::string& was = save_targets_.at(key).leads_to; leads_to != was)
+		throw std::runtime_error("'" + ini + "' now leads to '" + leads_to + "', not to '" + was +
+								 "' as when the window opened: nothing was saved (open the window again on it)");
 	RangefinderParams::requireWritable(ini, o_.section);
 }
 

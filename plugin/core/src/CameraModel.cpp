@@ -54,11 +54,23 @@ double meiUndistorted(const CameraParams& p, double rd)
 	return r;
 }
 
-/** [px] The image's farthest pixel from the centre: no radius is sought, and
- * no model need hold, beyond it. */
+/** [px] The image's farthest pixel from the centre, as the model's radius (OCamCalib's ideal one, through
+ * its affine terms): no radius is sought, and no model need hold, beyond it. */
 double farthestPixelRadius(const CameraParams& p)
 {
-	return std::hypot(std::max(p.cx, p.image_width - p.cx), std::max(p.cy, p.image_height - p.cy));
+	if (p.mirror_model != MirrorModel::OCamCalib || p.ocam_affine.size() != 3)
+		return std::hypot(std::max(p.cx, p.image_width - p.cx), std::max(p.cy, p.image_height - p.cy));
+	// The ideal radius is a norm of a linear map of the pixel: largest at a corner.
+	const auto& A = p.ocam_affine;
+	const double det = A[0] - A[1] * A[2];
+	double farthest = 0;
+	for (const double u : {0.0, static_cast<double>(p.image_width)})
+		for (const double v : {0.0, static_cast<double>(p.image_height)})
+		{
+			const double du = u - p.cx, dv = v - p.cy;
+			farthest = std::max(farthest, std::hypot((dv - A[1] * du) / det, (A[0] * du - A[2] * dv) / det));
+		}
+	return farthest;
 }
 }  // namespace
 

@@ -92,6 +92,9 @@ void RangefinderParams::requireWritable(const std::string& path, const std::stri
 	try
 	{
 		if (requireWellFormedIni(path) == 0) return;  // an empty file waits for its first keys
+		// Its bases too: keys saved into an ini that does not load would be read by nothing, and its camera is
+		// unknown to whoever checks the keys against it.
+		if (!iniBaseOf(path).empty()) (void)readLayeredIni(path);
 		const mrpt::config::CConfigFile ini(path);  // its own keys: the section written is in it
 		RangefinderParams p;
 		if (ini.sectionExists(section)) table().load(p, ini, section);

@@ -144,11 +144,10 @@ cv::Mat readBoardImage(const std::string& file, const CheckerboardOptions& o, cv
 	return gray;
 }
 
-/** The board's corners in `gray` by the first detector that finds them; with
- * `check_larger`, whether the same detector also finds a board one corner
- * wider or taller (a miscounted board). */
-CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o, bool check_larger,
-							  std::vector<cv::Point2f>& corners)
+/** The board's corners in `gray` by the first detector that finds them, and
+ * whether the same detector also finds a board one corner wider or taller (a
+ * miscounted board). */
+CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o, std::vector<cv::Point2f>& corners)
 {
 	const cv::Size pattern(o.columns, o.rows);
 	CheckerboardImage info;
@@ -157,9 +156,8 @@ CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o,
 		{
 			info.found = true, info.detector = detector;
 			std::vector<cv::Point2f> more;
-			if (check_larger)
-				for (const cv::Size larger : {cv::Size(pattern.width + 1, pattern.height), cv::Size(pattern.width, pattern.height + 1)})
-					info.part_of_larger = info.part_of_larger || findCheckerboardCorners(gray, larger, detector, more);
+			for (const cv::Size larger : {cv::Size(pattern.width + 1, pattern.height), cv::Size(pattern.width, pattern.height + 1)})
+				info.part_of_larger = info.part_of_larger || findCheckerboardCorners(gray, larger, detector, more);
 			break;
 		}
 	return info;
@@ -222,8 +220,8 @@ CheckerboardCalibration calibrateFromCheckerboards(const std::vector<std::string
 	{
 		const cv::Mat gray = readBoardImage(file, o, out.image_size);
 		std::vector<cv::Point2f> corners;
-		// A miscount is checked on the first three boards found: enough to tell, at a third of the cost.
-		CheckerboardImage info = detectBoard(gray, o, object.size() < 3, corners);
+		// A miscount is checked on every board: one that shows its whole grid is enough to tell, and any may be it.
+		CheckerboardImage info = detectBoard(gray, o, corners);
 		info.file = file;
 		if (info.found)
 			if (const int same = sameView(corners, image); same >= 0) info.same_view_as = out.images[which[same]].file;

@@ -134,7 +134,13 @@ class TunerSession
    private:
 	void checkImages();
 	std::vector<std::string> bases_;  ///< the ini's bases when it was read: never saved into
-	std::map<std::string, int> keys_when_opened_;  ///< the keys each ini saved into held when first checked (-1: none there)
+	/** Each ini saved into, as it was when first checked (at the start, for the -c and --save-to ones). */
+	struct SaveTarget
+	{
+		int keys;              ///< the keys it held (-1: none there)
+		std::string leads_to;  ///< the file it named, links resolved
+	};
+	std::map<std::string, SaveTarget> save_targets_;
 
 	SessionOptions o_;
 	std::vector<Frame> frames_;
