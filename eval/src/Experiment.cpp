@@ -33,6 +33,7 @@ namespace omnirange::eval
 namespace
 {
 constexpr const char* kProgram = "omnirange-experiment";
+constexpr const char* kFailedRun = "failed run";  // in the marker of the partial output a failed run kept
 /** The report's copy of the sensor's icp-slam ini (Experiment::mrptIni()), which the guarded matcher reads too. */
 std::string icpIniOf(const SensorMaps& s) { return "icp-slam_" + s.tag + ".ini"; }
 constexpr unsigned long long kFullDisk = 1 << 20;  // [bytes] free: too few for any stage's output
@@ -148,12 +149,19 @@ Metrics Experiment::run()
 		try
 		{
 			listOutputFolder(staging);
+			noteInMarker(staging, kFailedRun, false);
 		}
 		catch (const std::exception&)  // not listed (its marker cannot be written): the first error is the one to say
 		{
 		}
+		// Only a failed run's folder, whole, is replaced there: a report a user ran into that name is a report.
+		const auto failedRunsAlone = [&] {
+			const auto lines = markerLines(failed);
+			return isOutputFolderOf(failed, kProgram) && firstUnlistedIn(failed).empty() &&
+				   std::find(lines.begin(), lines.end(), kFailedRun) != lines.end();
+		};
 		std::error_code ec;
-		if (fs::exists(failed) && (!isOutputFolderOf(failed, kProgram) || !firstUnlistedIn(failed).empty()))
+		if (fs::exists(fs::symlink_status(failed, ec)) && !failedRunsAlone())
 			failed = staging;
 		else if (fs::remove_all(failed, ec), fs::rename(staging, failed, ec); ec)
 			failed = staging;  // it cannot be moved (made read-only meanwhile): said where it is, the error kept

@@ -70,7 +70,8 @@ struct KeyRange
 };
 constexpr double kNoEnd = std::numeric_limits<double>::infinity();
 constexpr KeyRange kKeyRanges[] = {
-	{"alfa", 0, 1, false, true, "must be within [0, 1)"},
+	// Closer to 1, ICP shrinks its thresholds so slowly that it seems to hang (0.999999: two minutes for 20 scans).
+	{"alfa", 0, 0.99, false, false, "must be within [0, 0.99] (MRPT asserts below 1; nearer 1 a match takes minutes)"},
 	{"corresponding_points_decimation", 1, kNoEnd, false, false, "must be >= 1"},
 	{"resolution", 0.005, 10, false, false, "must be within [0.005, 10] m"},
 	{"min_x", -1000, 1000, false, false, "must be within [-1000, 1000] m"},
@@ -139,10 +140,16 @@ void requireLikeMrptsDefault(const std::string& key, const std::string& model, c
 		}
 	else
 		v = parseDouble(value);
-	if (model.find_first_of(".eE") == std::string::npos && v != std::floor(v))
-		throw std::invalid_argument("not a whole number");
+	// MRPT reads a whole number with atoi: '8e1' and '8.0' are 8 and 8 there, whatever they are here.
+	if (model.find_first_of(".eE") == std::string::npos &&
+		(value.find_first_not_of("-0123456789") != std::string::npos || value.find('-', 1) != std::string::npos))
+		throw std::invalid_argument("not a whole number written in digits (MRPT would read '" + value + "' as " +
+									std::to_string(std::atoi(value.c_str())) + ")");
+	// As MRPT keeps most of its options, a float: 0.99999999999 is 1 there, and so is each bound compared.
+	const auto f = [](double x) { return static_cast<double>(static_cast<float>(x)); };
 	for (const auto& r : kKeyRanges)
-		if (k == r.key && !((r.lo_open ? v > r.lo : v >= r.lo) && (r.hi_open ? v < r.hi : v <= r.hi)))
+		if (k == r.key &&
+			!((r.lo_open ? f(v) > f(r.lo) : f(v) >= f(r.lo)) && (r.hi_open ? f(v) < f(r.hi) : f(v) <= f(r.hi))))
 			throw std::invalid_argument(r.says);
 	if (isMapCount(k) && !(v >= 0 && v <= 16)) throw std::invalid_argument("must be within [0, 16]");
 	if (bounds.keep_sign && model[0] != '-' && v < 0) throw std::invalid_argument("must be >= 0");

@@ -98,6 +98,14 @@ TEST(IcpSlamIni, TheIcpSectionIsReadStrictlyNamingFileSectionAndKey)
 		EXPECT_NE(why.find("[ICP] " + bad.substr(0, bad.find(' '))), std::string::npos) << bad << ": " << why;
 	}
 	EXPECT_NE(refusal("[ICP]\nmaxIterations = 80\nmaxIterations = 90\n").find("repeats"), std::string::npos);
+	// What MRPT reads otherwise than it reads here: a whole number by atoi ('8e1' is 8 there), a float rounded
+	// (0.99999999999 is 1, which MRPT asserts against), and an ALFA near 1, which makes a match take minutes.
+	for (const std::string bad : {"maxIterations = 8e1", "maxIterations = 80.0", "corresponding_points_decimation = 0.1e1",
+								  "ALFA = 0.99999999999", "ALFA = 0.999"})
+		EXPECT_NE(refusal("[ICP]\n" + bad + "\n").find("[ICP] " + bad.substr(0, bad.find(' '))), std::string::npos) << bad;
+	EXPECT_EQ(refusal("[ICP]\nALFA = 0.99\nmaxIterations = -0\n"), "");
+	EXPECT_EQ(refusal("[MappingApplication]\npointsMap_count = 1\n"), "");
+	EXPECT_NE(refusal("[MappingApplication]\npointsMap_count = 0.1e1\n").find("written in digits"), std::string::npos);
 	// [MappingApplication]: the keys icp-slam and its map builder read, and a
 	// count per map kind MRPT knows; a misspelt key would keep its default.
 	EXPECT_EQ(refusal("[MappingApplication]\nlogOutput_dir = out\npointsMap_count = 1\nCSimplePointsMap_count = 0\n"
@@ -136,7 +144,7 @@ TEST(IcpSlamIni, TheMapSectionsAreHeldToTheKeysMrptReadsAsItReadsThem)
 		EXPECT_NE(why.find(expected), std::string::npos) << text << ": " << why;
 		EXPECT_NE(why.find("omnirange_icp_keys.ini"), std::string::npos) << why;
 	}
-	EXPECT_NE(refusal("[MappingApplication]\npointsMap_count = 1e9\n").find("within [0, 16]"), std::string::npos);
+	EXPECT_NE(refusal("[MappingApplication]\npointsMap_count = 1000000000\n").find("within [0, 16]"), std::string::npos);
 	// icp-slam empties its logOutput_dir first: only a plain name, made where it runs.
 	for (const std::string dir : {"..", ".", "/tmp/someones", "../other"})
 		EXPECT_NE(refusal("[MappingApplication]\nlogOutput_dir = " + dir + "\n").find("plain folder name"),

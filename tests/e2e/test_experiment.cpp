@@ -239,4 +239,16 @@ TEST(Experiment, AFailedRunLeavesTheOldReportAsItWas)
 	EXPECT_TRUE(fs::exists(report + ".failed/dataset/maze.rawlog"));  // what the failed run made, for a look
 	for (const auto& e : fs::directory_iterator(dir))
 		EXPECT_EQ(e.path().string().find(".staging-"), std::string::npos) << e.path();
+	// A whole report a user keeps under that name (run with -o report.failed, or copied there) is no failed
+	// run's: the next failure leaves it as it was and keeps its partial output where it was made.
+	fs::remove_all(report + ".failed");
+	fs::copy(report, report + ".failed", fs::copy_options::recursive);
+	r = run("sed '/^\\[experiment\\]$/a map_omni_ini = " + dir + "/nogrid.ini' " + q(kSource + "/ini/maze.ini") +
+			" > " + q(ini));
+	ASSERT_EQ(r.code, 0);
+	r = run(app("omnirange-experiment") + " -q " + q(ini) + " -n 30 -o " + q(report));
+	fs::remove(ini);
+	EXPECT_EQ(r.code, 1) << r.out;
+	EXPECT_NE(r.out.find(".staging-"), std::string::npos) << r.out;  // named where it is
+	EXPECT_EQ(run("md5sum < " + q(report + ".failed/report.md")).out, run("md5sum < " + q(report + "/report.md")).out);
 }
