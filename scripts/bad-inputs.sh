@@ -206,7 +206,8 @@ kept() {  # kept FILE...: each still holds "mine"
 run_case "experiment: -o names a folder of the user's" error none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o users_folder
 run_case "experiment: -o names a file of the user's" error none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o users_file.txt
 run_case "experiment: -o names the worlds folder it reads" error none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o exp/worlds/
-run_case "scan: an output whose NAME_Images is the input's" error none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o s.rawlog.gz
+run_case "scan: an output whose NAME_Images is the input's" error s -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o s
+run_case "scan: an output MRPT's programs would read other images of (NAME.rawlog.gz)" "error:not named NAME.rawlog" s2.rawlog.gz -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o s2.rawlog.gz
 run_case "scan: an output onto a text file of the user's" error none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o users_file.txt
 run_case "calibrate: --save-to the colour model it reads" error none.out -- "$apps/omnirange-calibrate" -q -i s.rawlog -c f.ini -H floor.hist --save-to floor.hist
 run_case "import: an output inside its images folder" error none.out -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv -o imp/out.rawlog

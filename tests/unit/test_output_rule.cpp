@@ -862,15 +862,15 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 		w.write(mrpt::obs::CObservationOdometry());
 		w.commit();
 	};
+	// (A program's output is named NAME.rawlog, the one name MRPT's programs and these read the same images of.)
 	try
 	{
 		requireRawlogOutputAllowed(d + "/log.rawlog.gz", "omnirange-test", {}, false);
-		ADD_FAILURE() << "another rawlog's images were to be replaced";
+		ADD_FAILURE() << "an output MRPT's programs would read other images of was allowed";
 	}
 	catch (const std::runtime_error& e)
 	{
-		EXPECT_NE(std::string(e.what()).find("'" + d + "/log.rawlog' reads '" + d + "/log_Images' too"), std::string::npos)
-			<< e.what();
+		EXPECT_NE(std::string(e.what()).find("log.rawlog_Images"), std::string::npos) << e.what();
 	}
 	EXPECT_THROW(writeGz(), std::runtime_error);
 	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0), cv::Vec3b(1, 2, 3));
@@ -881,13 +881,12 @@ TEST(OutputRule, ARawlogWriterReplacesOnlyImagesFoldersItMade)
 	writeGz();
 	EXPECT_EQ(cv::imread(d + "/log_Images/0.png").at<cv::Vec3b>(0, 0), cv::Vec3b(9, 9, 9));
 	// Their marker names log.rawlog.gz; a copy of the folder under another stem is that copy's.
-	fs::copy(d + "/log.rawlog.gz", d + "/copy.rawlog.gz");
 	fs::copy(d + "/log_Images", d + "/copy_Images", fs::copy_options::recursive);
-	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/copy.rawlog.gz", "omnirange-test", {}, false));
+	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/copy.rawlog", "omnirange-test", {}, false));
 	// The marker's rawlog, there, of the same stem, holds them against another name.
 	try
 	{
-		requireRawlogOutputAllowed(d + "/log", "omnirange-test", {}, false);
+		requireRawlogOutputAllowed(d + "/log.rawlog", "omnirange-test", {}, false);
 		ADD_FAILURE() << "log.rawlog.gz's images were to be replaced";
 	}
 	catch (const std::runtime_error& e)

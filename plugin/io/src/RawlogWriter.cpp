@@ -91,12 +91,29 @@ void requireImagesOf(const std::string& images, const std::string& rawlog)
 										 "' would take over (give the output another name)");
 		}
 }
+
+/** The output `rawlog` is named as MRPT's programs read its images where they go. */
+void requireRawlogName(const std::string& rawlog)
+{
+	// MRPT's programs read NAME.EXT's images from NAME_Images (the name without its last extension), ours
+	// from the name without .rawlog or .rawlog.gz: only NAME.rawlog is read with the same images by both.
+	const std::string name = fs::path(outputPath(rawlog)).filename().string(), ext = ".rawlog";
+	if (name.find('.') == std::string::npos) return;  // NAME: NAME_Images for both
+	if (name.size() > ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0) return;
+	const std::string dot = name.substr(0, name.rfind('.'));
+	throw std::runtime_error("the output '" + rawlog + "' is not named NAME.rawlog: MRPT's programs (RawLogViewer, " +
+							 "rawlog-edit) would look for its images in '" + dot + "_Images', not in '" +
+							 fs::path(imagesDirFor(rawlog)).filename().string() + "' where they go; name it " +
+							 rawlogStem(name) + ".rawlog");
+}
+
 }  // namespace
 
 void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& program,
 								const std::vector<std::string>& inputs, bool force)
 {
 	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
+	requireRawlogName(rawlog);
 	if (!force) requireNotAnothersPart(rawlog, program);
 	// The images go beside the file written (through a link, the file it names).
 	const std::string file = replacedFileOf(outputPath(rawlog)), images = imagesDirFor(file);
