@@ -1,6 +1,7 @@
 #include "omnirange_eval/ExternalProgram.h"
 
 #include <omnirange/io/MemoryLimit.h>
+#include <omnirange/config/ErrorText.h>
 #include <omnirange/config/Temporaries.h>
 
 #include <fcntl.h>
@@ -12,19 +13,33 @@
 #include <csignal>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <stdexcept>
 
 namespace omnirange::eval
 {
 namespace
 {
+/** What a failed program's log says of its failure: the messages of MRPT's exception block, else the
+ * last line that is neither the closing prompt ("Press any key to continue...") nor a frame of a call
+ * stack ("[9 ]     0x5613cbfae321"). */
 std::string lastLine(const std::string& file)
 {
 	std::ifstream f(file);
+	const std::string text((std::istreambuf_iterator<char>(f)), {});
+	if (text.find("==== MRPT exception ====") != std::string::npos)
+		if (const std::string m = mrptMessages(text); !m.empty()) return m;
+	std::istringstream in(text);
 	std::string line, last;
-	// MRPT's programs end a failure with "Press any key to continue...": the cause is the line before.
-	while (std::getline(f, line))
-		if (line.find_first_not_of(" \t\r") != std::string::npos && line.rfind("Press any key", 0) != 0) last = line;
+	const auto frame = [](const std::string& l) {
+		const auto close = l.find(']');
+		return !l.empty() && l[0] == '[' && close != std::string::npos && l.find_first_not_of("0123456789 ", 1) == close;
+	};
+	while (std::getline(in, line))
+		if (line.find_first_not_of(" \t\r") != std::string::npos && line.rfind("Press any key", 0) != 0 &&
+			line.rfind("Call stack", 0) != 0 && !frame(line))
+			last = line;
 	return last;
 }
 

@@ -808,6 +808,18 @@ TEST(AppClasses, OpenCVsAndMRPTsErrorsAreOneLineWithoutPathsOrCallStacks)
 		const std::runtime_error said("stage 'icp-slam' failed: " + errorInOneLine(e.what()) + " (the disk is full)");
 		EXPECT_EQ(errorText(said), "stage 'icp-slam' failed: MRPT: the sensor 'X' is unknown (the disk is full)");
 	}
+	// An assertion's message goes on over lines of its own (the values compared): all of it, no stack.
+	try
+	{
+		const int decimation = 0;
+		ASSERT_GT_(decimation, 0);
+	}
+	catch (const std::exception& e)
+	{
+		const std::string text = errorText(e);
+		EXPECT_NE(text.find("ASSERT_GT_(decimation,0) failed with decimation=0"), std::string::npos) << text;
+		EXPECT_EQ(text.find("Call stack"), std::string::npos) << text;
+	}
 	EXPECT_EQ(errorText(std::runtime_error("two\nlines")), "two lines");
 	// A class name read from a damaged rawlog: its byte that is no text shows as '?', a name in UTF-8 as itself.
 	EXPECT_EQ(errorText(std::runtime_error("class 'CObservation2DRa\xffgeScan' in 'r\xc3\xa9sum\xc3\xa9.rawlog'")),

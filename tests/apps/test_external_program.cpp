@@ -11,8 +11,8 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
-#include <thread>
 #include <fstream>
+#include <thread>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -59,6 +59,22 @@ TEST(ExternalProgram, FailureNamesTheProgramAndTheLogsLastLine)
 	catch (const std::runtime_error& e)
 	{
 		EXPECT_NE(std::string(e.what()).find("): cannot write map.gz"), std::string::npos) << e.what();
+	}
+	// An MRPT exception: its message, not the last frame of the call stack printed after it.
+	const std::string mrpt_block = "==== MRPT exception ====\nMessage:  ASSERT_GT_(decimation,0) failed with\ndecimation=0\n\n"
+								   "Location: CPointsMap.cpp:289\nCall stack backtrace:\n[0 ]     0x7f22ffe9184c \n"
+								   "[9 ]     0x5613cbfae321 \nPress any key to continue...\n";
+	std::ofstream(dir / "block.txt") << mrpt_block;
+	try
+	{
+		runProgram({"sh", "-c", "cat block.txt; exit 255"}, dir.string(), "mrpt-block.log");
+		FAIL() << "a failing program must throw";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("): ASSERT_GT_(decimation,0) failed with decimation=0"), std::string::npos)
+			<< e.what();
+		EXPECT_EQ(std::string(e.what()).find("0x"), std::string::npos) << e.what();
 	}
 	// A log that cannot be made is said as such, and the program is not started.
 	try

@@ -38,15 +38,25 @@ std::string mrptMessages(const std::string& text)
 {
 	std::istringstream in(text);
 	std::string messages, location;
+	bool in_message = false;  // a message goes on over the lines after its tag, up to a blank one
 	for (std::string line; std::getline(in, line);)
+	{
+		if (!line.empty() && line.back() == '\r') line.pop_back();
+		const auto from = line.find_first_not_of(' ');
+		if (from == std::string::npos || line.rfind("Location:", 0) == 0 || line.rfind("Call stack", 0) == 0)
+			in_message = false;
+		else if (in_message)
+			messages += " " + line.substr(from);
 		for (const std::string tag : {"Message:", "Location:"})
 			if (line.rfind(tag, 0) == 0)
 			{
-				const auto from = line.find_first_not_of(' ', tag.size());
-				if (from == std::string::npos) continue;
+				const auto start = line.find_first_not_of(' ', tag.size());
+				if (start == std::string::npos) continue;
 				std::string& to = tag == "Message:" ? messages : location;
-				to += (to.empty() ? "" : "; ") + line.substr(from);
+				to += (to.empty() ? "" : "; ") + line.substr(start);
+				in_message = tag == "Message:";
 			}
+	}
 	// Some of MRPT's errors carry their text in the location line only.
 	return messages.empty() ? location : messages;
 }
