@@ -1323,10 +1323,13 @@ TEST(OutputRule, AnOutputOfSeveralFilesGoesInAllOrNoneAndAKilledRunsHalfIsUndone
 	write(d + "/b.txt", "killed run's b"), write(d + "/d.txt", "killed run's d");
 	write(d + "/.d.txt.commit-999983", "run 999983 1\n" + d + "/b.txt\t" + d + "/.b.txt.old-999983\t" + inode("b.txt") +
 										   "\n" + d + "/d.txt\t\t" + inode("d.txt") + "\n");
+	// What is left of another journal of the set, one it was killed writing, goes with the set's settling.
+	write(d + "/..d.txt.commit-999983.tmp-999983", "run 999983 1\n");
 	EXPECT_THROW(requireWholeSet(d + "/b.txt"), std::runtime_error);  // d's journal names it: not settled yet
 	testing::internal::CaptureStderr();
 	recoverLeftoversOf(d + "/b.txt", OutputKind::Text);  // a run writing b alone settles the set it is in
 	EXPECT_FALSE(fs::exists(d + "/.d.txt.commit-999983"));
+	EXPECT_FALSE(fs::exists(d + "/..d.txt.commit-999983.tmp-999983"));
 	EXPECT_NE(testing::internal::GetCapturedStderr().find("and 1 other file(s) in place: its new files stay"),
 			  std::string::npos);
 	EXPECT_EQ(read(d + "/b.txt"), "killed run's b");

@@ -429,12 +429,21 @@ void recoverSetOf(const std::string& path)
 		throw std::runtime_error("'" + path + "' is being put in place by another run (" + pid + ") now");
 	std::error_code ec;
 	const auto set = setIn(journal);
+	// Each member's journal, and what is left of one the run was killed writing (its temporary).
+	const auto removeJournals = [&] {
+		for (const auto& f : set)
+		{
+			const std::string own = besideAs(f.target, "commit", pid), cut = besideAs(own, "tmp", pid);
+			fs::remove(own, ec);
+			if (fs::is_regular_file(fs::symlink_status(cut, ec))) fs::remove(cut, ec);
+		}
+	};
 	// Every new file in: it was killed finishing (its journals going, then its old files), and the set is the new one.
 	const bool all_in = std::all_of(set.begin(), set.end(),
 									[](const SetFile& f) { return !f.inode.empty() && inodeOf(f.target) == f.inode; });
 	if (all_in)
 	{
-		for (const auto& f : set) fs::remove(besideAs(f.target, "commit", pid), ec);
+		removeJournals();
 		for (const auto& f : set)
 			if (!f.aside.empty()) fs::remove(f.aside, ec);
 		temporaries::warn("a run (" + pid + ") was killed while it finished putting '" + path + "'" +
@@ -461,7 +470,7 @@ void recoverSetOf(const std::string& path)
 									 "it was killed: " + (f.aside.empty() ? "" : "the old one is in '" + f.aside + "'; ") +
 									 failed.message());
 	}
-	for (const auto& f : set) fs::remove(besideAs(f.target, "commit", pid), ec);
+	removeJournals();
 	temporaries::warn("a run (" + pid + ") was killed while it put '" + path + "'" +
 					  (set.size() > 1 ? " and " + std::to_string(set.size() - 1) + " other file(s)" : "") +
 					  " in place: what was there before is back");
