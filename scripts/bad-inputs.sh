@@ -206,7 +206,7 @@ kept() {  # kept FILE...: each still holds "mine"
 run_case "experiment: -o names a folder of the user's" error none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o users_folder
 run_case "experiment: -o names a file of the user's" error none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o users_file.txt
 run_case "experiment: -o names the worlds folder it reads" error none.out -- "$apps/omnirange-experiment" -q exp/ini/factory.ini -n 5 -o exp/worlds/
-run_case "scan: an output whose NAME_Images is the input's" error s -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o s
+run_case "scan: an output whose NAME_Images is the input's" error none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o s
 run_case "scan: an output MRPT's programs would read other images of (NAME.rawlog.gz)" "error:not named NAME.rawlog" s2.rawlog.gz -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o s2.rawlog.gz
 run_case "scan: an output onto a text file of the user's" error none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o users_file.txt
 run_case "calibrate: --save-to the colour model it reads" error none.out -- "$apps/omnirange-calibrate" -q -i s.rawlog -c f.ini -H floor.hist --save-to floor.hist
@@ -328,7 +328,7 @@ run_case "scan: a line break in the output's name (a marker would list another f
 run_case "accuracy: a prefix of 250 characters (names each output it would make)" "error:_pairs.csv' is 260 characters" none.out -- "$apps/omnirange-accuracy" -q -i scanned.rawlog -o "$(printf 'c%.0s' $(seq 250))"
 # Sparse files: large to a reader, nothing on the disk.
 cp floor.hist big.hist && truncate -s 1G big.hist
-run_case "scan: -H a 1 GB file that begins as a histogram" "error:more than the" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H big.hist -o none.out
+run_case "scan: -H a 1 GB file that begins as a histogram" "error:more than the" none.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H big.hist -o none.rawlog
 truncate -s 1G big.md
 run_case "summary: --fill a 1 GB file" "error:more than a page of tables" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill big.md
 printf '# my notes\n' > notable.md
@@ -503,6 +503,16 @@ one=$(cd resim_scan_Images && ls | head -1)
   { echo "| | PROBLEM: a scan whose input was simulated again lost the images it was made from |"; problems=$((problems + 1)); }
 cp resim_scan.rawlog resim_scan.bak && "$apps/omnirange-scan" -q -i resim.rawlog -c f.ini -H floor.hist -o resim_scan.rawlog && cp resim_scan.bak resim_scan.rawlog
 train "train: a scan's backup put back over a newer scan (whose images it would read)" "error:is not the rawlog" rs.hist -i resim_scan.rawlog -c f.ini -o rs.hist
+# What MRPT reads otherwise than a check would, an ini whose base is gone, a link that leads back to itself.
+sed 's/^maxIterations *=.*/maxIterations = 8e1/' "$src/ini/icp-slam-omniscan.ini" > icp_exp.ini
+run_case "slam: [ICP] maxIterations = 8e1 (MRPT's atoi reads 8)" "error:written in digits" slam_out -- "$apps/omnirange-slam" -q -i s.rawlog -c icp_exp.ini -o slam_out
+sed 's/^ALFA *=.*/ALFA = 0.999999/' "$src/ini/icp-slam-omniscan.ini" > icp_slow.ini
+run_case "slam: [ICP] ALFA = 0.999999 (a match would take minutes)" "error:ALFA" slam_out -- "$apps/omnirange-slam" -q -i s.rawlog -c icp_slow.ini -o slam_out
+mkdir -p nobase && printf 'base = experiment-base.ini\n[rangefinder]\nthreshold = 0.1\n' > nobase/cam.ini && cp nobase/cam.ini nobase/cam.orig
+run_case "calibrate: --save-to an ini whose base is missing" "error:experiment-base.ini" none.out -- "$apps/omnirange-calibrate" -q --rim "s_Images/$(ls s_Images | head -1)" --save-to nobase/cam.ini
+cmp -s nobase/cam.ini nobase/cam.orig || { echo "| | PROBLEM: an ini whose base is missing was written |"; problems=$((problems + 1)); }
+mkdir -p imp_loop && cp imp/100.0.jpg imp_loop/ && ln -sfn 100.4.jpg imp_loop/100.4.jpg
+run_case "import: an image that is a link to itself" "error:leads back to itself" il.rawlog -- "$apps/omnirange-import" -q --images imp_loop --laser imp_laser.csv -o il.rawlog
 [ -L usr_Images ] && [ "$(cat usr_Images/p.txt)" = mine ] || { echo "| | PROBLEM: the user's link usr_Images was replaced |"; problems=$((problems + 1)); }
 kept users_folder/note.txt users_file.txt
 [ -n "$(ls s_Images)" ] || { echo "| | PROBLEM: the input's images were removed |"; problems=$((problems + 1)); }

@@ -76,7 +76,9 @@ void resolvePaths(ExperimentConfig& c, const LayeredIni& layers)
 		const std::string from = layers.originOf("experiment", key);
 		const fs::path dir = iniFolderOf(from.empty() ? layers.files.back() : from);
 		v = fs::path(v).is_absolute() ? v : (dir / v).lexically_normal().string();
-		if (must_exist && !fs::is_regular_file(v)) throw std::invalid_argument("[experiment] " + key + ": no file '" + v + "'");
+		if (must_exist && !fs::is_regular_file(v))
+			throw std::invalid_argument("[experiment] " + key + ": " + (fs::exists(v) ? "not a regular file" : "no file") +
+										" '" + v + "'");
 	};
 	resolve(c.world, "world", true), resolve(c.route, "route", true), resolve(c.robot, "robot", true);
 	resolve(c.output, "output", false);

@@ -92,9 +92,12 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 			requireTimeAfter(previous, t);
 			previous = t;
 			const fs::path file = base / f[1];
-			if (!fs::is_regular_file(file))
-				throw std::invalid_argument((fs::exists(file) ? "'" + file.string() + "' is not a regular file"
-															  : "no image file '" + file.string() + "'"));
+			std::error_code ec;
+			if (!fs::is_regular_file(file, ec))
+				throw std::invalid_argument(ec == std::errc::too_many_symbolic_link_levels
+												? "'" + file.string() + "' is a link that leads back to itself"
+											: fs::exists(fs::symlink_status(file, ec)) ? "'" + file.string() + "' is not a regular file"
+																					   : "no image file '" + file.string() + "'");
 			images.push_back({t, file.string(), ""});
 		});
 		return images;
@@ -104,8 +107,12 @@ std::vector<TimedImage> listImages(const std::string& dir, const std::string& li
 	{
 		if (!isImageFileName(entry.path().string())) continue;
 		// Named as an image but a folder, a FIFO or a device: skipping it would lose a frame (and a FIFO would block).
-		if (!entry.is_regular_file())
-			throw std::runtime_error("'" + entry.path().string() + "' is named as an image but is not a regular file");
+		std::error_code ec;
+		if (!entry.is_regular_file(ec))
+			throw std::runtime_error("'" + entry.path().string() + "' is named as an image but is " +
+									 (ec == std::errc::too_many_symbolic_link_levels
+										  ? "a link that leads back to itself, or one of more than 40 in a row"
+										  : "not a regular file"));
 		const std::string stem = entry.path().stem().string();
 		try
 		{
