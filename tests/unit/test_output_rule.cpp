@@ -1442,3 +1442,30 @@ TEST(OutputRule, AFileAUserAddedToAnOutputFolderIsNotReplacedWithIt)
 	write(d + "/report/." + std::string(kOutputMarker) + ".tmp-999983", "omnirange-test\n");
 	EXPECT_EQ(refusal(d + "/report", OutputKind::Folder), "");
 }
+
+TEST(OutputRule, ARawlogOutputIsNamedAsMrptReadsItsImagesThroughALinkToo)
+{
+	const std::string d = fresh("rawlog_names");
+	for (const std::string bad : {"f.rawlog.gz", "d.dat", "E.RAWLOG"})
+		EXPECT_THROW(requireRawlogOutputAllowed(d + "/" + bad, "omnirange-test", {}, false), std::runtime_error) << bad;
+	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/log.rawlog", "omnirange-test", {}, false));
+	EXPECT_NO_THROW(requireRawlogOutputAllowed(d + "/log", "omnirange-test", {}, false));
+	// A link named NAME.rawlog to a file of another name: the images would go beside that file, where MRPT reads
+	// that file's from another folder.
+	{
+		RawlogWriter w(d + "/real.rawlog", "omnirange-test");
+		w.write(mrpt::obs::CObservationOdometry());
+		w.commit();
+	}
+	fs::copy_file(d + "/real.rawlog", d + "/t.dat");  // a rawlog the output may replace, but under another name
+	fs::create_symlink("t.dat", d + "/out.rawlog");
+	try
+	{
+		requireRawlogOutputAllowed(d + "/out.rawlog", "omnirange-test", {}, false);
+		ADD_FAILURE() << "a link to t.dat was taken as a NAME.rawlog";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("t.dat' is not named NAME.rawlog"), std::string::npos) << e.what();
+	}
+}

@@ -113,10 +113,11 @@ void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& pr
 								const std::vector<std::string>& inputs, bool force)
 {
 	requireOutputAllowed(rawlog, OutputKind::Rawlog, "", inputs, force);
-	requireRawlogName(rawlog);
 	if (!force) requireNotAnothersPart(rawlog, program);
-	// The images go beside the file written (through a link, the file it names).
+	// The images go beside the file written (through a link, the file it names): both names are read by MRPT.
 	const std::string file = replacedFileOf(outputPath(rawlog)), images = imagesDirFor(file);
+	requireRawlogName(rawlog);
+	if (file != outputPath(rawlog)) requireRawlogName(file);
 	// Only a scan writes such a link: another program's output does not replace it unasked.
 	requireOutputAllowed(images, OutputKind::Folder, program, inputs,
 						 force || (program == kScanProgram && imagesLinkOf(file, images)));
