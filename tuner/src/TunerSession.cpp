@@ -272,7 +272,7 @@ void TunerSession::requireSaveAllowed(const std::string& ini)
 		}
 	};
 	const bool own = key == fs::absolute(o_.ini, ec).lexically_normal().string();
-	const std::string leads_to = fs::weakly_canonical(ini, ec).string();
+	const std::string leads_to = fileLedTo(ini);
 	save_targets_.emplace(key, SaveTarget{own ? std::max(1, keysIn()) : keysIn(), leads_to});  // -c: read with its keys
 	const int then = save_targets_.at(key).keys, now = keysIn();
 	if (then >= 0 && now < 0)
@@ -285,9 +285,7 @@ void TunerSession::requireSaveAllowed(const std::string& ini)
 	inputs.insert(inputs.end(), bases_.begin(), bases_.end());
 	requireOutputAllowed(ini, OutputKind::Ini, "omnirange-tuner", inputs);
 	// Made a link to another file meanwhile (another camera's ini, a user's notes): that file was never given.
-	if (const std::string& was = save_targets_.at(key).leads_to; leads_to != was)
-		throw std::runtime_error("'" + ini + "' now leads to '" + leads_to + "', not to '" + was +
-								 "' as when the window opened: nothing was saved (open the window again on it)");
+	requireStillLeadsTo(ini, save_targets_.at(key).leads_to, "the window opened");
 	RangefinderParams::requireWritable(ini, o_.section);
 }
 

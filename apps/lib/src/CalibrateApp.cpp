@@ -130,8 +130,7 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 	requireOutputsAllowed({{o_.save_to, OutputKind::Ini}, {o_.intrinsics_output, OutputKind::Text, kOpenCvYamlBegins}},
 						  "omnirange-calibrate", inputs_);
 	if (!o_.save_to.empty()) RangefinderParams::requireWritable(o_.save_to, o_.section);
-	std::error_code ec;
-	save_to_file_ = std::filesystem::weakly_canonical(o_.save_to, ec).string();
+	save_to_file_ = fileLedTo(o_.save_to);
 }
 
 void CalibrateApp::saveCameraKeys(const CameraParams& cam, const std::vector<std::string>& model_keys,
@@ -147,10 +146,7 @@ void CalibrateApp::saveKeys(const std::vector<std::pair<std::string, std::string
 {
 	// An ini replaced meanwhile by a link (to its base, to another camera's ini) is not written through; the
 	// whole check would take the -o YAML, staged by now, for a leftover.
-	std::error_code ec;
-	if (const std::string now = std::filesystem::weakly_canonical(o_.save_to, ec).string(); now != save_to_file_)
-		throw std::runtime_error("'" + o_.save_to + "' now leads to '" + now + "', not to the file it was when the run " +
-								 "began: nothing was saved (run again)");
+	requireStillLeadsTo(o_.save_to, save_to_file_, "the run began");
 	requireApartFromInputs(outputPath(o_.save_to), OutputKind::Ini, inputs_);
 	writeIniSection(o_.save_to, o_.section, keys, RangefinderParams::table().comments(), with);
 }

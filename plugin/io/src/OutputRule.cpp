@@ -41,6 +41,19 @@ std::string outputPath(const std::string& path)
 	return p;
 }
 
+std::string fileLedTo(const std::string& path)
+{
+	std::error_code ec;
+	return fs::weakly_canonical(path, ec).string();
+}
+
+void requireStillLeadsTo(const std::string& path, const std::string& was, const std::string& since)
+{
+	if (const std::string now = fileLedTo(path); now != was)
+		throw std::runtime_error("'" + path + "' now leads to '" + now + "', not to '" + was + "' as when " + since +
+								 ": nothing was saved (run again)");
+}
+
 std::vector<std::string> markerLines(const std::string& dir)
 {
 	// Only a file of ours: a FIFO there would block, a link to /dev/zero never end.

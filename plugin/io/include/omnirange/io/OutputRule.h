@@ -34,6 +34,11 @@ bool isOfKind(const std::string& path, OutputKind kind);
 
 /** `path` as a user means it: no trailing '/', "." resolved; "" stays "". */
 std::string outputPath(const std::string& path);
+/** The file `path` leads to, links resolved (what a save into it would write). */
+std::string fileLedTo(const std::string& path);
+/** `path` leads to `was` (its fileLedTo() when `since` began) still: a save made a link to another file
+ * meanwhile would write that file, never given. Throws std::runtime_error naming both otherwise. */
+void requireStillLeadsTo(const std::string& path, const std::string& was, const std::string& since);
 
 /** Throws std::runtime_error, before any work, naming `output` when the rule
  * above forbids `program` to write it. With `force`, an existing file or
