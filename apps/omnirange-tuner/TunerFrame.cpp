@@ -139,12 +139,13 @@ TunerFrame::TunerFrame(tuner::TunerSession& session, std::string save_to, int fi
 	// The middle column: the error plot, the scan from above, the bird's-eye view and the colours.
 	auto* middle = new wxBoxSizer(wxVERTICAL);
 	error_plot_ = new wxGenericStaticBitmap(panel, wxID_ANY, wxBitmap(kPlotSize, kErrorPlotHeight));
-	error_plot_->SetToolTip("each frame's mean error over the whole log: laser cyan, truth white; click to go to that frame");
+	error_plot_->SetToolTip("each frame's mean error over the whole log: laser cyan, truth white; its share of unsure "
+							"rays as a pink bar; click to go to that frame");
 	middle->Add(new wxStaticText(panel, wxID_ANY, "error per frame (click to go there)"), 0, wxALL, 2);
 	middle->Add(error_plot_, 0, wxALL, 2);
 	plot_ = new wxStaticBitmap(panel, wxID_ANY, wxBitmap(kPlotSize, kPlotSize));
 	plot_->SetToolTip("the scan from above, forward up, 1 m circles, the max range grey: omnicam hit green, no hit "
-					  "yellow, too close red, outlier magenta; laser cyan; truth white");
+					  "yellow, too close red, outlier magenta, unsure pink (at its confident extent); laser cyan; truth white");
 	middle->Add(new wxStaticText(panel, wxID_ANY, "scan from above (laser cyan, truth white)"), 0, wxALL, 2);
 	middle->Add(plot_, 0, wxALL, 2);
 	auto* smalls = new wxBoxSizer(wxHORIZONTAL);
@@ -408,7 +409,7 @@ void TunerFrame::refresh()
 	drawErrorPlot();
 	const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	const int hits = scan.scan.count(RayStatus::Hit), rays = static_cast<int>(scan.scan.rays.size());
-	wxString score = wxString::Format("hits %d of %d rays", hits, rays);
+	wxString score = wxString::Format("hits %d, unsure %d of %d rays", hits, scan.scan.count(RayStatus::Unsure), rays);
 	if (!scan.laser_pairs.empty())
 	{
 		const auto a = tuner::agreementOf(scan.laser_pairs);

@@ -10,11 +10,18 @@ namespace omnirange::eval
 {
 void AccuracyStats::add(const RangePair& p)
 {
+	if (p.status != PairStatus::LaserBeyondMaxRange)
+	{
+		// The laser sees the floor end within range: is it claimed free past there?
+		++laser_in_range;
+		laser_false_free += p.status == PairStatus::OmniRejected || p.omni > p.laser + kFalseFreeMargin;
+	}
 	switch (p.status)
 	{
 		case PairStatus::LaserBeyondMaxRange: ++laser_beyond; return;
 		case PairStatus::TooDifferent: ++too_different; return;
 		case PairStatus::OmniRejected: ++omni_rejected; return;
+		case PairStatus::OmniUnsure: ++omni_unsure; return;
 		case PairStatus::Compared: break;
 	}
 	++compared;
@@ -68,8 +75,10 @@ AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions
 	if (r.frames == 0)
 		throw std::runtime_error("all " + std::to_string(seen) + " scan pairs of '" + rawlog + "' come before first = " +
 								 std::to_string(o.first));
-	// A mean over no ray would read 0.0000 m, the best score there is.
-	if (r.stats.compared == 0)
+	// A mean over no ray would read 0.0000 m, the best score there is. A scan
+	// unsure on every ray the laser sees says so, and is a result: its means
+	// are left out (AccuracyResult::table, metricsOf).
+	if (r.stats.compared == 0 && r.stats.omni_unsure == 0)
 		throw std::runtime_error("no ray of '" + rawlog + "' could be compared with the laser (" +
 								 std::to_string(r.stats.total()) +
 								 " pairs, none within the max difference): are the sensors' poses right?");
@@ -80,15 +89,23 @@ std::string AccuracyResult::table(double max_difference) const
 {
 	const auto& s = stats;
 	const double n = static_cast<double>(std::max<std::size_t>(1, s.total()));
+	char means[3][32] = {"-", "-", "-"};  // no ray compared: no mean
+	if (s.compared > 0)
+	{
+		std::snprintf(means[0], sizeof means[0], "%.4f m", s.meanAbs());
+		std::snprintf(means[1], sizeof means[1], "%.3f %%", s.meanPercent());
+		std::snprintf(means[2], sizeof means[2], "%+.4f m", s.meanSigned());
+	}
 	char row[512];
 	std::snprintf(row, sizeof row,
 				  " compared | excluded: laser beyond omni max range | excluded: difference > %.2f m "
-				  "| omni ray rejected | mean absolute difference | mean percentage difference | signed mean |\n"
-				  "|---|---|---|---|---|---|---|---|---|\n"
-				  "| %d | %zu | %zu | %zu (%.1f %%) | %zu (%.1f %%) | %zu | %.4f m | %.3f %% | %+.4f m |\n",
+				  "| omni ray rejected | omni ray unsure | mean absolute difference | mean percentage difference | signed mean "
+				  "| false free |\n"
+				  "|---|---|---|---|---|---|---|---|---|---|---|---|\n"
+				  "| %d | %zu | %zu | %zu (%.1f %%) | %zu (%.1f %%) | %zu | %zu (%.1f %%) | %s | %s | %s | %.1f %% |\n",
 				  max_difference, frames, s.total(), s.compared, s.laser_beyond, 100.0 * s.laser_beyond / n,
-				  s.too_different, 100.0 * s.too_different / n, s.omni_rejected, s.meanAbs(), s.meanPercent(),
-				  s.meanSigned());
+				  s.too_different, 100.0 * s.too_different / n, s.omni_rejected, s.omni_unsure,
+				  100.0 * s.omni_unsure / n, means[0], means[1], means[2], 100.0 * s.falseFree());
 	return kAccuracyTableBegins + std::string(row);
 }
 

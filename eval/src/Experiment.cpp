@@ -278,6 +278,7 @@ void Experiment::scan()
 	Progress progress("objects scanned");
 	const auto s = scanRawlog(rf, o, showsProgress() ? &progress : nullptr);
 	r_.omni_hit_fraction = double(s.hits) / std::max<std::size_t>(1, s.rays);
+	r_.separation = colourSeparation(histogram_data_, rf.classifier(), c_.rangefinder.histogram_smoothing);
 }
 
 // 4. The accuracy test (Table II, Fig. 9).

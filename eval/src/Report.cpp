@@ -61,11 +61,18 @@ Metrics metricsOf(const ExperimentResults& r)
 	m["training_pairs"] = r.training_pairs;
 	m["training_until"] = r.training_until;
 	m["omni_hit_fraction"] = r.omni_hit_fraction;
-	m["accuracy_mean_abs"] = a.meanAbs();
-	m["accuracy_mean_percent"] = a.meanPercent();
-	m["accuracy_signed_mean"] = a.meanSigned();
+	m["colour_separation_auc"] = r.separation.auc;
+	m["colour_feet_read_free"] = r.separation.feet_read_free;
+	if (a.compared > 0)  // every ray the laser sees unsure: no mean to give
+	{
+		m["accuracy_mean_abs"] = a.meanAbs();
+		m["accuracy_mean_percent"] = a.meanPercent();
+		m["accuracy_signed_mean"] = a.meanSigned();
+	}
 	m["accuracy_compared"] = double(a.compared);
 	m["accuracy_excluded_fraction"] = a.excludedFraction();
+	m["laser_false_free"] = a.falseFree();
+	m["laser_unsure"] = a.unsure();
 	if (r.accuracy.truth.frames > 0)
 	{
 		const TruthBand t = r.accuracy.truth.all();
@@ -75,6 +82,9 @@ Metrics metricsOf(const ExperimentResults& r)
 		m["truth_mean_abs"] = t.meanAbs();
 		m["truth_median_abs"] = t.medianAbs();
 		m["truth_missed"] = t.missed() / n;
+		m["truth_false_free"] = t.false_free / n;
+		m["truth_unsure"] = double(r.accuracy.truth.allUnsure()) / std::max<std::size_t>(1, r.accuracy.truth.allRays());
+		m["truth_within_5cm_confident"] = t.within_5cm / std::max(1.0, n - t.unsure);
 		m["truth_false_obstacles"] =
 			double(r.accuracy.truth.false_obstacles) / std::max<std::size_t>(1, r.accuracy.truth.open_rays);
 	}
@@ -115,7 +125,7 @@ bool isMetricKey(const std::string& key)
 	// sensor labelled "L" that runs every engine.
 	static const Metrics every = [] {
 		ExperimentResults r;
-		r.accuracy.truth.frames = 1, r.has_check_region = true;
+		r.accuracy.truth.frames = 1, r.accuracy.stats.compared = 1, r.has_check_region = true;
 		r.sensors.resize(1), r.sensors[0].label = "L", r.sensors[0].rbpf_ini = "x";
 		return metricsOf(r);
 	}();
@@ -152,11 +162,15 @@ std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r
 	  << (r.simulated.frames - r.training_until) << " frames after them."
 	  << (r.learned.empty() ? "" : " Parameters learned against the laser: " + r.learned + ".")
 	  << " The whole run took " << fmt("%.0f", r.seconds) << " s. The robot: `" << c.robot << "`.\n\n"
+	  << "Training's own word on this room: " << separationLine(r.separation) << ".\n\n"
 	  << "## Accuracy: laser against omnicam (paper Table II, Fig. 9)\n\n"
 	  << r.accuracy.table(max_difference) << "\n![differences](accuracy_histogram.png)\n\n"
 	  << (r.accuracy.truth.frames > 0 ? "## Accuracy: omnicam against the true floor boundary\n\nEvery omnicam ray against "
 										 "where the simulator knows the floor really ends along its bearing (the TRUTH "
-										 "scans). Missed: the floor ends within the max range but the ray has no hit.\n\n" +
+										 "scans). Missed: the floor ends within the max range but the ray has no hit. Unsure: the ray claims free "
+										 "floor only to its range (docs/method.md, \"Doubt\"). False free: a ray not "
+										 "unsure that claims free floor more than 5 cm past the truth (no hit, or a hit "
+										 "beyond it), or an unsure one whose extent is.\n\n" +
 											r.accuracy.truth.table() + "\n"
 									  : std::string())
 	  << "All pairs: `accuracy_pairs.csv`. What the histogram learned from (paper Fig. 1): "

@@ -176,13 +176,16 @@ void table2(std::ostream& o, const Summary& s)
 
 void truth(std::ostream& o, const Summary& s)
 {
-	o << "| world | group | within 2 cm | within 5 cm | missed | false obstacles | mean abs. vs truth | mean abs. vs "
-		 "laser |\n|---|---|---|---|---|---|---|---|\n";
+	o << "| world | group | within 2 cm | within 5 cm | within 5 cm, confident rays | false free | unsure | missed | "
+		 "false obstacles | mean abs. vs truth | mean abs. vs laser | colour separation (AUC) |\n"
+		 "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 	for (const auto& r : s)
 		o << "| " << r.name << " | " << r.group << " | " << percent(r.get("truth_within_2cm")) << " | "
-		  << percent(r.get("truth_within_5cm")) << " | " << percent(r.get("truth_missed")) << " | "
-		  << percent(r.get("truth_false_obstacles")) << " | " << metres(r.get("truth_mean_abs")) << " | "
-		  << metres(r.get("accuracy_mean_abs")) << " |\n";
+		  << percent(r.get("truth_within_5cm")) << " | " << percent(r.get("truth_within_5cm_confident")) << " | "
+		  << percent(r.get("truth_false_free")) << " | " << percent(r.get("truth_unsure")) << " | "
+		  << percent(r.get("truth_missed")) << " | " << percent(r.get("truth_false_obstacles")) << " | "
+		  << metres(r.get("truth_mean_abs")) << " | " << metres(r.get("accuracy_mean_abs")) << " | "
+		  << fmt("%.2f", r.get("colour_separation_auc")) << " |\n";
 }
 
 void maps(std::ostream& o, const Summary& s)
@@ -230,8 +233,9 @@ double median(std::vector<double> v)
 
 void shortTable(std::ostream& o, const Summary& s)
 {
-	o << "| world | mean abs. vs laser (paper) | within 5 cm of the truth | missed | guarded path ATE, omnicam |\n"
-	  << "|---|---|---|---|---|\n";
+	o << "| world | mean abs. vs laser (paper) | within 5 cm of the truth | false free | unsure | guarded path ATE, "
+		 "omnicam |\n"
+	  << "|---|---|---|---|---|---|\n";
 	std::map<std::string, std::vector<const SummaryRow*>> groups;
 	for (const auto& r : s)
 	{
@@ -240,8 +244,8 @@ void shortTable(std::ostream& o, const Summary& s)
 		{
 			o << "| " << r.name << " | " << metres(r.get("accuracy_mean_abs"))
 			  << (paper != kPaperTableII.end() ? " (" + metres(paper->second.first) + ")" : "") << " | "
-			  << percent(r.get("truth_within_5cm")) << " | " << percent(r.get("truth_missed")) << " | "
-			  << metres(r.get("guarded_OMNISCAN_ate_rmse")) << " |\n";
+			  << percent(r.get("truth_within_5cm")) << " | " << percent(r.get("truth_false_free")) << " | "
+			  << percent(r.get("truth_unsure")) << " | " << metres(r.get("guarded_OMNISCAN_ate_rmse")) << " |\n";
 			continue;
 		}
 		groups[r.group].push_back(&r);
@@ -254,8 +258,8 @@ void shortTable(std::ostream& o, const Summary& s)
 			return median(v);
 		};
 		o << "| " << rows.size() << " held-out rooms, median | " << metres(med("accuracy_mean_abs")) << " | "
-		  << percent(med("truth_within_5cm")) << " | " << percent(med("truth_missed")) << " | "
-		  << metres(med("guarded_OMNISCAN_ate_rmse")) << " |\n";
+		  << percent(med("truth_within_5cm")) << " | " << percent(med("truth_false_free")) << " | "
+		  << percent(med("truth_unsure")) << " | " << metres(med("guarded_OMNISCAN_ate_rmse")) << " |\n";
 	}
 }
 

@@ -1,5 +1,8 @@
 #include "omnirange_eval/TruthComparison.h"
 
+#include <omnirange/core/Rangefinder.h>
+#include <omnirange/train/LaserComparison.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -29,6 +32,7 @@ TruthBand TruthStats::all() const
 	{
 		a.rays += b.rays, a.within_2cm += b.within_2cm, a.within_5cm += b.within_5cm;
 		a.missed_no_hit += b.missed_no_hit, a.missed_rejected += b.missed_rejected;
+		a.unsure += b.unsure, a.false_free += b.false_free;
 		a.sum_signed += b.sum_signed;
 		a.abs_errors.insert(a.abs_errors.end(), b.abs_errors.begin(), b.abs_errors.end());
 	}
@@ -49,24 +53,35 @@ void TruthStats::add(const mrpt::obs::CObservation2DRangeScan& truth, const mrpt
 	{
 		const double bearing = -0.5 * omni.aperture + i * omni.aperture / (n - 1);
 		const int k = ((static_cast<int>(std::lround((bearing + 0.5 * truth.aperture) / step)) % S) + S) % S;
-		const bool hit = omni.getScanRangeValidity(i);
+		const bool unsure = rayIsUnsure(omni, i);
+		const bool hit = omni.getScanRangeValidity(i) && !unsure;
 		const double range = omni.getScanRange(i);
 		const double true_d = truth.getScanRange(k);
 		if (!truth.getScanRangeValidity(k) || true_d > omni.maxRange)
 		{
 			++open_rays;
+			open_unsure += unsure;
 			false_obstacles += hit && range < omni.maxRange - 0.05 ? 1 : 0;
 			continue;
 		}
 		TruthBand& b = *std::find_if(bands.begin(), bands.end(), [&](const TruthBand& x) { return true_d < x.hi; });
 		++b.rays;
+		if (unsure)
+		{
+			// Free only up to its extent: false free when that extent is past the truth.
+			++b.unsure;
+			b.false_free += range > true_d + kFalseFreeMargin;
+			continue;
+		}
 		if (!hit)
 		{
 			const bool no_hit = range >= omni.maxRange - 1e-4;
 			++(no_hit ? b.missed_no_hit : b.missed_rejected);
+			++b.false_free;
 			continue;
 		}
 		const double e = std::abs(range - true_d);
+		b.false_free += range > true_d + kFalseFreeMargin;
 		b.abs_errors.push_back(e);
 		b.sum_signed += range - true_d;
 		b.within_2cm += e <= 0.02;
@@ -79,13 +94,15 @@ std::string TruthStats::table() const
 {
 	std::string out = std::string(kTruthTableBegins) +
 		" within 2 cm | within 5 cm | mean abs error | median abs error | signed mean | "
-		"missed: no hit | missed: rejected |\n|---|---|---|---|---|---|---|---|---|\n";
+		"missed: no hit | missed: rejected | unsure | false free |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
 	const auto row = [&](const std::string& name, const TruthBand& b) {
 		const double n = static_cast<double>(std::max<std::size_t>(1, b.rays));
 		char line[400];
-		std::snprintf(line, sizeof line, "| %s | %zu | %.1f %% | %.1f %% | %.4f m | %.4f m | %+.4f m | %.1f %% | %.1f %% |\n",
+		std::snprintf(line, sizeof line,
+					  "| %s | %zu | %.1f %% | %.1f %% | %.4f m | %.4f m | %+.4f m | %.1f %% | %.1f %% | %.1f %% | %.1f %% |\n",
 					  name.c_str(), b.rays, 100.0 * b.within_2cm / n, 100.0 * b.within_5cm / n, b.meanAbs(),
-					  b.medianAbs(), b.meanSigned(), 100.0 * b.missed_no_hit / n, 100.0 * b.missed_rejected / n);
+					  b.medianAbs(), b.meanSigned(), 100.0 * b.missed_no_hit / n, 100.0 * b.missed_rejected / n,
+					  100.0 * b.unsure / n, 100.0 * b.false_free / n);
 		out += line;
 	};
 	row("all", all());
@@ -98,8 +115,9 @@ std::string TruthStats::table() const
 	char tail[300];
 	std::snprintf(tail, sizeof tail,
 				  "\nRays whose floor goes on past the max range: %zu; of them with a hit (false obstacles): %zu "
-				  "(%.1f %%). %d scan pairs.\n",
-				  open_rays, false_obstacles, 100.0 * false_obstacles / std::max<std::size_t>(1, open_rays), frames);
+				  "(%.1f %%), unsure: %zu. %d scan pairs.\n",
+				  open_rays, false_obstacles, 100.0 * false_obstacles / std::max<std::size_t>(1, open_rays), open_unsure,
+				  frames);
 	return out + tail;
 }
 

@@ -1,6 +1,7 @@
 #include "omnirange_slam/GuardedIcp.h"
 #include "omnirange_slam/IcpSlamIni.h"
 
+#include <omnirange/core/Rangefinder.h>
 #include <omnirange/io/RawlogProcessor.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -281,7 +282,11 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 		if (const auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(object))
 			if (const auto move = actions->getBestMovementEstimation()) matcher.onOdometry(move->rawOdometryIncrementReading);
 	});
-	loop.on<CObservation2DRangeScan>(scan_label, [&](const CObservation2DRangeScan::Ptr& scan) { matcher.onScan(scan); });
+	loop.on<CObservation2DRangeScan>(scan_label, [&](const CObservation2DRangeScan::Ptr& scan) {
+		// An unsure ray (written as an obstacle for a navigator) is neither a wall to match nor free floor to clear.
+		invalidateUnsureRays(*scan);
+		matcher.onScan(scan);
+	});
 	loop.run();
 	if (matcher.scansSeen() == 0)
 		throw std::runtime_error("no " + scan_label + " scan in '" + rawlog + "' (" + loop.describeLabels() + ")");

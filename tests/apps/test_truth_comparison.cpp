@@ -6,6 +6,7 @@
 #include <omnirange_sim/RobotParams.h>
 
 #include <omnirange/core/PolarScanner.h>
+#include <omnirange/core/Rangefinder.h>
 
 #include <gtest/gtest.h>
 
@@ -55,6 +56,31 @@ TEST(TruthComparison, EachRayLandsInItsBandAndOutcome)
 	EXPECT_EQ(t.open_rays, 2u);
 	EXPECT_EQ(t.false_obstacles, 1u);
 	EXPECT_NE(t.table().find("| all | 6 | 33.3 % | 50.0 % |"), std::string::npos) << t.table();
+}
+
+TEST(TruthComparison, UnsureRaysAreNeitherHitsNorFalseFreeUnlessTheirExtentIsPastTheTruth)
+{
+	// Six rays, the truth 2.0 m on each but the last (open). The omnicam: a
+	// hit 20 cm past the truth (false free), no hit (false free), unsure at
+	// 1.2 m (short of the truth: safe), unsure at 2.5 m (past it: false free),
+	// an exact hit, and an unsure open ray.
+	const auto truth = scan("TRUTH", {2, 2, 2, 2, 2, 10}, {true, true, true, true, true, false}, 10);
+	auto omni = scan("OMNISCAN", {2.2f, 3.8f, 1.2f, 2.5f, 2.0f, 1.0f}, {true, false, true, true, true, true}, 3.8f);
+	omni.setScanHasIntensity(true);
+	for (std::size_t i = 0; i < 6; ++i) omni.setScanIntensity(i, kFullConfidence);
+	omni.setScanIntensity(2, 60), omni.setScanIntensity(3, 65), omni.setScanIntensity(5, 26);
+	eval::TruthStats t;
+	t.add(truth, omni);
+	const auto all = t.all();
+	EXPECT_EQ(all.rays, 5u);
+	EXPECT_EQ(all.unsure, 2u);
+	EXPECT_EQ(all.false_free, 3u);  // 2.2 m, no hit, unsure to 2.5 m
+	EXPECT_EQ(all.within_5cm, 1u);  // the exact hit; an unsure ray is never within
+	EXPECT_EQ(all.missed_no_hit, 1u);
+	EXPECT_EQ(t.open_unsure, 1u);
+	EXPECT_EQ(t.false_obstacles, 0u);  // an unsure ray is no obstacle
+	EXPECT_EQ(t.allUnsure(), 3u);
+	EXPECT_EQ(t.allRays(), 6u);
 }
 
 TEST(TruthComparison, ScansFromDifferentPosesAreRefused)

@@ -484,3 +484,28 @@ TEST(ParameterLearning, EachLaserRaysErrorAndWhetherTheOmnicamReadNearer)
 	EXPECT_EQ(e.error, 1.25);
 	EXPECT_FALSE(e.nearer);
 }
+
+TEST(ParameterLearning, TheDoubtIsLearnedForTheWinnerAndNeverEntersTheCandidatesScores)
+{
+	RangefinderParams rp;
+	const RawlogTrainingOptions o = samplePairs(12);
+	const LearningOptions lo = oneCandidate();
+	const LearningResult r = learnParameters(rp, o, lo);
+	// A start ini that doubts hard (an earlier learning's, or a user's) scores the grid as one that does not.
+	rp.sure_floor_share = 0.5, rp.scanner.sure_run = 5;
+	const LearningResult hard = learnParameters(rp, o, lo);
+	ASSERT_EQ(r.tried.size(), 1u);
+	EXPECT_EQ(hard.tried[0].score, r.tried[0].score);
+	// The doubt chosen is the same from either start, and the parameters and the ini carry it.
+	EXPECT_EQ(hard.doubt.sure_floor_share, r.doubt.sure_floor_share);
+	EXPECT_EQ(hard.doubt.sure_run, r.doubt.sure_run);
+	EXPECT_EQ(r.params.sure_floor_share, r.doubt.sure_floor_share);
+	EXPECT_EQ(r.params.sure_obstacle_ratio, r.doubt.sure_obstacle_ratio);
+	EXPECT_EQ(r.params.scanner.sure_run, r.doubt.sure_run);
+	EXPECT_GE(r.doubt.unsure, 0.0);
+	EXPECT_LE(r.doubt.unsure, 1.0);
+	const std::string ini = learnedIni(r);
+	EXPECT_NE(ini.find("; Doubt (docs/method.md): sure_floor_share "), std::string::npos) << ini;
+	EXPECT_NE(ini.find("colour separates floor from obstacles"), std::string::npos) << ini;
+	EXPECT_NE(ini.find("\nsure_run = " + std::to_string(r.doubt.sure_run) + "\n"), std::string::npos) << ini;
+}

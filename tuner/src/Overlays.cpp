@@ -21,6 +21,7 @@ cv::Scalar statusColour(RayStatus s)
 		case RayStatus::NoHit: return colour::kNoHit;
 		case RayStatus::TooClose: return colour::kTooClose;
 		case RayStatus::Outlier: return colour::kOutlier;
+		case RayStatus::Unsure: return colour::kUnsure;
 	}
 	return colour::kHit;
 }
@@ -34,6 +35,7 @@ double endRho(const Ray& r, const Rangefinder& rf)
 		case RayStatus::Outlier: return r.hit_rho;
 		case RayStatus::NoHit: return rf.scanner().maxRangeRho();
 		case RayStatus::TooClose: return rf.params().scanner.base_radius;
+		case RayStatus::Unsure: return rf.camera().rhoFromDistance(r.range);
 	}
 	return r.hit_rho;
 }
@@ -78,7 +80,8 @@ void drawLegend(cv::Mat& img, const OverlayOptions& o)
 	std::vector<std::pair<std::string, cv::Scalar>> items;
 	if (o.rays)
 		items.insert(items.end(), {{"hit", colour::kHit}, {"no hit (max range)", colour::kNoHit},
-								   {"too close (base)", colour::kTooClose}, {"outlier", colour::kOutlier}});
+								   {"too close (base)", colour::kTooClose}, {"outlier", colour::kOutlier},
+								   {"unsure (free to here)", colour::kUnsure}});
 	if (o.candidates) items.push_back({"K-rejected", colour::kRejectedCandidate});
 	if (o.laser) items.push_back({"laser", colour::kLaser});
 	if (o.truth) items.push_back({"truth", colour::kTruth});
@@ -188,6 +191,11 @@ cv::Mat drawErrorPlot(const LogScore& score, int current, cv::Size size)
 	const auto x = [&](int k) { return n == 1 ? size.width / 2 : k * (size.width - 1) / (n - 1); };
 	const auto y = [&](double e) { return size.height - 1 - static_cast<int>(std::lround(std::min(e, top) / top * (size.height - 14))); };
 	cv::line(img, {x(current), 0}, {x(current), size.height - 1}, cv::Scalar(110, 110, 110), 1);
+	// Each frame's unsure share as a bar up from the bottom, full height at every ray unsure.
+	for (int k = 0; k < static_cast<int>(score.unsure_by_frame.size()) && k < n; ++k)
+		if (const double u = score.unsure_by_frame[static_cast<std::size_t>(k)]; std::isfinite(u) && u > 0)
+			cv::line(img, {x(k), size.height - 1}, {x(k), size.height - 1 - static_cast<int>(std::lround(u * (size.height - 14)))},
+					 colour::kUnsure, 1);
 	for (const auto& [v, c] : {std::pair{&score.truth_by_frame, colour::kTruth}, std::pair{&score.laser_by_frame, colour::kLaser}})
 		for (int k = 0; k < n; ++k)
 			if (std::isfinite((*v)[static_cast<std::size_t>(k)]))

@@ -203,6 +203,7 @@ LogScore TunerSession::scoreAll(const std::function<void(int, int)>& progress)
 	const double none = std::numeric_limits<double>::quiet_NaN();
 	all.laser_by_frame.assign(static_cast<std::size_t>(frames()), none);
 	all.truth_by_frame.assign(static_cast<std::size_t>(frames()), none);
+	all.unsure_by_frame.assign(static_cast<std::size_t>(frames()), none);
 	double sum = 0;
 	for (int k = 0; k < frames(); ++k)
 	{
@@ -218,6 +219,8 @@ LogScore TunerSession::scoreAll(const std::function<void(int, int)>& progress)
 			all.unreadable += frames_[k].laser != nullptr;
 			continue;
 		}
+		all.unsure_by_frame[static_cast<std::size_t>(k)] =
+			static_cast<double>(one.scan.count(RayStatus::Unsure)) / std::max<std::size_t>(1, one.scan.rays.size());
 		if (const Agreement t = agreementOf(one.truth_pairs); t.compared > 0)
 			all.truth_by_frame[static_cast<std::size_t>(k)] = t.mean_abs;
 		if (!frames_[k].laser) continue;

@@ -47,8 +47,12 @@ eval::Metrics ExperimentApp::run()
 	e.setMinLoggingLevel(o_.verbosity);
 	e.setCandidateStudy(o_.study_candidates);
 	const auto m = e.run();
-	e.logFmt(mrpt::system::LVL_INFO, "report: %s/report.md (accuracy: mean absolute difference %.4f m over %.0f pairs)",
-			 config.output.c_str(), m.at("accuracy_mean_abs"), m.at("accuracy_compared"));
+	if (const auto mean = m.find("accuracy_mean_abs"); mean != m.end())
+		e.logFmt(mrpt::system::LVL_INFO, "report: %s/report.md (accuracy: mean absolute difference %.4f m over %.0f pairs)",
+				 config.output.c_str(), mean->second, m.at("accuracy_compared"));
+	else  // every ray the laser sees is unsure
+		e.logFmt(mrpt::system::LVL_INFO, "report: %s/report.md (accuracy: no ray compared, every one unsure)",
+				 config.output.c_str());
 	return m;
 }
 

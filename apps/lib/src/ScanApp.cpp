@@ -73,10 +73,11 @@ RawlogScanSummary ScanApp::run()
 						  "file system, or links not allowed there)",
 						  s.images_copied);
 	const auto share = [&](std::size_t n) { return shareOf(n, s); };
-	MRPT_LOG_INFO_FMT("%zu images scanned: %.1f %% of rays hit, %.1f %% free to max range, %.1f %% too close, "
-					  "%.1f %% rejected as outliers; %zu objects -> %s",
-					  s.images, share(s.hits), share(s.no_hit), share(s.too_close), share(s.outliers), s.objects,
-					  o_.scan.output.c_str());
+	MRPT_LOG_INFO_FMT("%zu images scanned: %.1f %% of rays hit, %.1f %% free to max range, %.1f %% unsure (free "
+					  "only to where the floor's colour stops being sure), %.1f %% too close, %.1f %% rejected as "
+					  "outliers; %zu objects -> %s",
+					  s.images, share(s.hits), share(s.no_hit), share(s.unsure), share(s.too_close), share(s.outliers),
+					  s.objects, o_.scan.output.c_str());
 	for (const auto& w : scanWarnings(s, o_.histogram, colours.trainedOnColour())) MRPT_LOG_WARN(w);
 	return s;
 }

@@ -104,7 +104,15 @@ RawlogTrainingResult TrainApp::run()
 	commitAll(pointersTo(files));
 	MRPT_LOG_INFO_FMT("trained on %d image/scan pairs (of %d), %zu floor and %zu obstacle pixels -> %s", r.used,
 					  r.pairs, r.pixels, r.obstacle_pixels, o_.output.c_str());
+	logSeparation(colourSeparation(r.model, Rangefinder(params, r.model).classifier(), params.histogram_smoothing));
 	return r;
+}
+
+void TrainApp::logSeparation(const ColourSeparation& s)
+{
+	// A room colour cannot see in is the user's first thing to know: a warning, not an aside.
+	if (s.known && s.auc < kPoorlySeparated) MRPT_LOG_WARN(separationLine(s));
+	else MRPT_LOG_INFO(separationLine(s));
 }
 
 RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
@@ -130,6 +138,12 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 		MRPT_LOG_INFO_FMT("edge bias (by the hit's contrast): mean error %.4f m with it, %s", l.edge_bias_score,
 						  l.params.scanner.edge_bias.empty() ? "not kept" : "kept");
 	if (const std::string warning = poorLearningWarning(l); !warning.empty()) MRPT_LOG_WARN(warning);
+	MRPT_LOG_INFO_FMT("doubt: sure_floor_share %g, sure_obstacle_ratio %g, sure_run %d: read free more than 25 cm past %.1f "
+					  "%% of the laser's returns within max range on the held-aside pairs (%.1f %% without doubt), %.1f %% of rays "
+					  "unsure",
+					  l.doubt.sure_floor_share, l.doubt.sure_obstacle_ratio, l.doubt.sure_run, 100 * l.doubt.false_free,
+					  100 * l.doubt.false_free_without, 100 * l.doubt.unsure);
+	logSeparation(l.separation);
 	RawlogTrainingResult r;
 	r.model = l.model;
 	r.used = l.refit_pairs > 0 ? l.refit_pairs : l.training_pairs;

@@ -26,12 +26,20 @@ inline constexpr char kAccuracyTableBegins[] = "| frames | pairs |";
 
 struct AccuracyStats
 {
-	std::size_t compared{0}, laser_beyond{0}, too_different{0}, omni_rejected{0};
+	std::size_t compared{0}, laser_beyond{0}, too_different{0}, omni_rejected{0}, omni_unsure{0};
 	double sum_abs{0}, sum_pct{0}, sum_signed{0};
 	std::vector<double> differences;  ///< of the compared pairs
 
+	/** Of the pairs whose laser return is within the omnicam's max range, those
+	 * the omnicam claims free past it by more than kFalseFreeMargin: a ray not
+	 * unsure that reads farther (or nothing), or an unsure one whose extent is
+	 * farther. */
+	std::size_t laser_in_range{0}, laser_false_free{0};
+
 	void add(const RangePair& p);
-	std::size_t total() const { return compared + laser_beyond + too_different + omni_rejected; }
+	double falseFree() const { return laser_in_range ? double(laser_false_free) / laser_in_range : 0; }
+	double unsure() const { return total() ? double(omni_unsure) / total() : 0; }
+	std::size_t total() const { return compared + laser_beyond + too_different + omni_rejected + omni_unsure; }
 	double meanAbs() const { return compared ? sum_abs / compared : 0; }
 	double meanPercent() const { return compared ? sum_pct / compared : 0; }
 	double meanSigned() const { return compared ? sum_signed / compared : 0; }

@@ -51,6 +51,7 @@ struct ExperimentResults
 	 * camera (what reads them) gives otherwise; empty: the two agree. */
 	std::vector<std::string> camera_mismatch;
 	double omni_hit_fraction{0};
+	ColourSeparation separation;  ///< of the colour model the scans ran with (ColourSeparation.h)
 	AccuracyResult accuracy;
 	std::vector<SensorMaps> sensors;  ///< the laser, then the omnicam
 	PathError odometry_path;  ///< dead reckoning alone: what a scan matcher must beat

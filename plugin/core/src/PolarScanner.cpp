@@ -30,6 +30,7 @@ std::string toString(RayStatus s)
 		case RayStatus::NoHit: return "no_hit";
 		case RayStatus::TooClose: return "too_close";
 		case RayStatus::Outlier: return "outlier";
+		case RayStatus::Unsure: return "unsure";
 	}
 	throw std::logic_error("unknown RayStatus");
 }
@@ -96,7 +97,13 @@ void addStepKeys(OptionsTable<PolarScannerParams>& t)
 			 "the darkened floor before an obstacle's foot, learned against the laser by omnirange-train --learn "
 			 "(docs/method.md); empty: none",
 			 [](P& p) -> auto& { return p.edge_bias; })
-		.within(Range::closed(-kMaxEdgeBias, kMaxEdgeBias));
+		.within(Range::closed(-kMaxEdgeBias, kMaxEdgeBias))
+		.add("sure_run", "px",
+			 "doubtful pixels in a row (colours outside the floor's sure_floor_share; runs of at most K sure ones "
+			 "negated) that end the stretch a ray claims free: the ray is unsure, free only up to where they start "
+			 "(0: every ray hit or free, the paper's; omnirange-train --learn chooses it)",
+			 [](P& p) -> auto& { return p.sure_run; })
+		.within(Range::closed(0, 10000));
 }
 }  // namespace
 
@@ -239,19 +246,21 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 		const Scanline& line = lines_[s];
 		const std::int32_t* pix = pixel_.data() + line.first;
 		int classified = 0;  // pixels [0, classified) of this scanline are in `free`
-		const auto is_free = [&](int k) {
+		const auto class_of = [&](int k) {
 			while (k >= classified)
 			{
 				const int n = std::min(kClassifyRun, line.count - classified);
 				classifier.classify(data, pix + classified, n, free.data() + classified);
 				classified += n;
 			}
-			return free[k] != 0;
+			return free[k];
 		};
+		const auto is_free = [&](int k) { return class_of(k) != kNotFree; };
 		Ray& ray = rays[s];
 		ray.bearing = line.bearing;
 		searchColour(line, is_free, ray);
 		const int hit = endOfFloor(line, data, pix, ray);
+		findDoubt(line, class_of, hit < 0 ? line.last_candidate + 1 : hit, ray);
 		if (hit < 0)
 		{
 			ray.status = RayStatus::NoHit;
@@ -316,6 +325,21 @@ void PolarScanner::placeHit(const Scanline& line, const std::uint8_t* bgr, const
 	const bool too_close = hit == 0 || range < p_.min_range;
 	ray.status = too_close ? RayStatus::TooClose : RayStatus::Hit;
 	ray.range = too_close ? static_cast<float>(p_.min_range) : range;
+}
+
+template <class ClassOf>
+void PolarScanner::findDoubt(const Scanline& line, ClassOf& class_of, int end, Ray& ray) const
+{
+	// The paper's N/K search again, on sure floor against the rest and only
+	// inside the free stretch: a few doubtful pixels at the blurred edge of
+	// the floor's end never reach sure_run.
+	const int from = ray.past_base;
+	if (p_.sure_run <= 0 || end <= from) return;
+	const auto sure = [&](int k) { return class_of(from + k) == kFree; };
+	const HitSearch doubt = findHit(sure, end - from, end - from - 1, HitFilterParams{p_.sure_run, p_.filter.K});
+	if (doubt.status != HitSearch::Status::Hit) return;
+	ray.sure_end = from + doubt.index;
+	ray.sure_range = mid_range_[line.first + ray.sure_end];
 }
 
 template <class IsFree>

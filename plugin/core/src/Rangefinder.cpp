@@ -13,6 +13,15 @@
 
 namespace omnirange
 {
+std::string toString(UnsureRays u) { return u == UnsureRays::Obstacle ? "obstacle" : "invalid"; }
+
+UnsureRays unsureRaysFromString(const std::string& name)
+{
+	if (name == "obstacle") return UnsureRays::Obstacle;
+	if (name == "invalid") return UnsureRays::Invalid;
+	throw std::invalid_argument("unsure_rays must be 'obstacle' or 'invalid', not '" + name + "'");
+}
+
 const OptionsTable<RangefinderParams>& RangefinderParams::table()
 {
 	using P = RangefinderParams;
@@ -37,6 +46,22 @@ const OptionsTable<RangefinderParams>& RangefinderParams::table()
 			 "as trained",
 			 [](P& p) -> auto& { return p.shadow_depth; })
 		.within(kShadowDepthRange)
+		.add("sure_floor_share", "-",
+			 "the floor's most common colours that together hold this share of its training pixels are sure floor; "
+			 "a free stretch crossing sure_run pixels of the others makes a ray unsure (1: every free colour is sure)",
+			 [](P& p) -> auto& { return p.sure_floor_share; })
+		.within(kSureShareRange)
+		.add("sure_obstacle_ratio", "-",
+			 "with obstacle colours in the histogram file, a free colour is sure floor only when also P(c|floor) >= "
+			 "sure_obstacle_ratio * P(c|obstacle) (0: off)",
+			 [](P& p) -> auto& { return p.sure_obstacle_ratio; })
+		.within(kObstacleRatioRange)
+		.addEnum("unsure_rays",
+				 "how an unsure ray is written into the scan: obstacle (a valid return at its confident extent: a "
+				 "navigator stops there) or invalid (its range that extent; a map with "
+				 "considerInvalidRangesAsFreeSpace = false neither clears nor marks it)",
+				 [](P& p) -> auto& { return p.unsure_rays; }, unsureRaysFromString,
+				 {UnsureRays::Obstacle, UnsureRays::Invalid})
 		.include(OutlierFilterParams::table(), [](P& p) -> auto& { return p.outliers; })
 		.include(WallFitParams::table(), [](P& p) -> auto& { return p.walls; })
 		.add("exposure_compensation", "bool",
@@ -160,7 +185,8 @@ double floorBeyondBase(const OmniCameraModel& camera, const PolarScannerParams& 
 Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& colours)
 	: p_((params.validate(), params)),
 	  camera_(p_.camera),
-	  classifier_(colours, p_.threshold, p_.obstacle_ratio, p_.histogram_smoothing, p_.shadow_depth),
+	  classifier_(colours, p_.threshold, p_.obstacle_ratio, p_.histogram_smoothing, p_.shadow_depth,
+				  p_.sure_floor_share, p_.sure_obstacle_ratio),
 	  scanner_(camera_, p_.scanner),
 	  reference_(colours.reference),
 	  compensate_(p_.exposure_compensation && colours.hasReference()),
@@ -216,7 +242,20 @@ RangeScan Rangefinder::process(const cv::Mat& bgr, const PixelClassifier* adapte
 	// 5. Thin walls: hits on one straight wall onto its fitted line.
 	out.wall_fitted = fitWalls(out.rays, camera_, p_.walls, p_.scanner.min_range, p_.scanner.max_range);
 	lap(&StageTimes::walls);
+	// 6. Doubt (beyond the paper, which §VI names the limit): a ray whose
+	//    free stretch crosses colours the floor rarely shows claims free
+	//    floor only up to where they start.
+	for (Ray& ray : out.rays) markUnsure(ray, p_.scanner.min_range);
 	return out;
+}
+
+void markUnsure(Ray& ray, double min_range)
+{
+	if (ray.sure_end < 0 || (ray.status != RayStatus::Hit && ray.status != RayStatus::NoHit)) return;
+	const float extent = std::max(ray.sure_range, static_cast<float>(min_range));
+	ray.confidence = std::clamp(extent / std::max(ray.range, 1e-3f), 0.0f, 0.99f);
+	ray.status = RayStatus::Unsure;
+	ray.range = extent;
 }
 
 mrpt::obs::CObservation2DRangeScan::Ptr Rangefinder::toObservation(
@@ -234,9 +273,13 @@ mrpt::obs::CObservation2DRangeScan::Ptr Rangefinder::toObservation(
 	obs->resizeScan(S);
 	for (int i = 0; i < S; ++i)
 	{
-		obs->setScanRange(i, scan.rays[i].range);
-		obs->setScanRangeValidity(i, scan.rays[i].status == RayStatus::Hit);
+		const Ray& ray = scan.rays[i];
+		obs->setScanRange(i, ray.range);
+		obs->setScanRangeValidity(
+			i, ray.status == RayStatus::Hit || (ray.status == RayStatus::Unsure && p_.unsure_rays == UnsureRays::Obstacle));
+		obs->setScanIntensity(i, static_cast<int32_t>(std::lround(kFullConfidence * ray.confidence)));
 	}
+	obs->setScanHasIntensity(true);
 	return obs;
 }
 

@@ -29,7 +29,7 @@ struct Batch
 	std::vector<std::size_t> after;  // per image: the index of the object that holds it
 	std::vector<mrpt::obs::CObservationImage::Ptr> images;
 	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;  // one per image
-	std::vector<std::array<int, 4>> statuses;  // per image: its rays by RayStatus (Hit, NoHit, TooClose, Outlier)
+	std::vector<std::array<int, 5>> statuses;  // per image: its rays by RayStatus (Hit, NoHit, TooClose, Outlier, Unsure)
 	std::vector<char> grey;  // per image: its three channels equal
 	std::vector<std::exception_ptr> errors;
 };
@@ -50,7 +50,7 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 {
 	const int n = static_cast<int>(b.images.size());
 	b.scans.assign(n, nullptr);
-	b.statuses.assign(n, {0, 0, 0, 0});
+	b.statuses.assign(n, {0, 0, 0, 0, 0});
 	b.errors.assign(n, nullptr);
 	b.grey.assign(n, 0);
 	std::vector<cv::Mat> decoded(n);
@@ -129,6 +129,7 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 			const auto of = [&](RayStatus s) { return static_cast<std::size_t>(n[static_cast<std::size_t>(s)]); };
 			sum.hits += of(RayStatus::Hit), sum.no_hit += of(RayStatus::NoHit);
 			sum.too_close += of(RayStatus::TooClose), sum.outliers += of(RayStatus::Outlier);
+			sum.unsure += of(RayStatus::Unsure);
 			sum.rays += b.scans[k]->getScanSize();
 			sum.grey_images += b.grey[k];
 			scans.push_back(b.scans[k]);

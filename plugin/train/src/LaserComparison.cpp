@@ -1,5 +1,7 @@
 #include "omnirange/train/LaserComparison.h"
 
+#include <omnirange/core/Rangefinder.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -13,6 +15,7 @@ std::string toString(PairStatus s)
 		case PairStatus::LaserBeyondMaxRange: return "laser_beyond_max_range";
 		case PairStatus::TooDifferent: return "too_different";
 		case PairStatus::OmniRejected: return "omni_rejected";
+		case PairStatus::OmniUnsure: return "omni_unsure";
 	}
 	throw std::logic_error("unknown PairStatus");
 }
@@ -39,6 +42,8 @@ std::vector<RangePair> pairScans(const mrpt::obs::CObservation2DRangeScan& laser
 		const bool no_hit = !omni.getScanRangeValidity(k) && rp.omni >= omni.maxRange - 1e-4;
 		if (rp.laser > omni.maxRange)
 			rp.status = PairStatus::LaserBeyondMaxRange;
+		else if (rayIsUnsure(omni, k))
+			rp.status = PairStatus::OmniUnsure;
 		else if (!omni.getScanRangeValidity(k) && !no_hit)
 			rp.status = PairStatus::OmniRejected;
 		else if (std::abs(rp.difference()) > max_diff)

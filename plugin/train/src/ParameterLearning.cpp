@@ -123,6 +123,41 @@ double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& 
 	return n ? sum / n : cap;
 }
 
+/** The doubt grid: shares of the floor's training pixels whose colours are
+ * sure floor (1: all free colours), and runs of pixels not sure floor
+ * (doubtful or not free) that end a ray's claim. */
+constexpr double kSureShares[] = {1.0, 0.995, 0.99, 0.98, 0.95, 0.9, 0.8, 0.7, 0.6, 0.5};
+constexpr int kSureRuns[] = {5, 10, 20, 40};
+/** ...and how much likelier the floor than the obstacles' feet must show a colour (0: no matter). */
+constexpr double kSureRatios[] = {0, 1, 2, 4, 8};
+
+/** `rf`'s doubt on the validation pairs against the laser: the share of the
+ * laser's returns within max range seen through (read free more than
+ * kSeenThroughMargin past them), the share of rays unsure, and the cost that
+ * weighs the two (kFalseFreeCost). */
+DoubtChoice scoreDoubt(const std::vector<Rangefinder>& rf, const std::vector<Validation>& validation, double& cost)
+{
+	std::size_t rays = 0, in_range = 0, false_free = 0, unsure = 0;
+	for (const auto& v : validation)
+	{
+		const Rangefinder& by = rf[v.block];
+		const auto omni = by.toObservation(by.process(v.image), v.laser->timestamp);
+		for (const RangePair& p : pairScans(*v.laser, *omni))
+		{
+			++rays;
+			unsure += rayIsUnsure(*omni, p.omni_ray);
+			if (p.status == PairStatus::LaserBeyondMaxRange) continue;
+			++in_range;
+			false_free += p.status == PairStatus::OmniRejected || p.omni > p.laser + kSeenThroughMargin;
+		}
+	}
+	DoubtChoice d;
+	d.false_free = in_range ? double(false_free) / in_range : 0;
+	d.unsure = rays ? double(unsure) / rays : 0;
+	cost = rays ? (kFalseFreeCost * false_free + unsure) / rays : 0;
+	return d;
+}
+
 /** The hits of `rf` on every pair `o` selects that a laser ray sees too,
  * with their contrast (EdgeBiasLearning.h). */
 std::vector<EdgeSample> edgeSamples(const Rangefinder& rf, const RawlogTrainingOptions& o)
@@ -236,10 +271,11 @@ struct Learning
 
 	/** One rangefinder per block's histograms, scored on the classifier's own
 	 * ranges: the wall fit smooths over the very errors learning must see. */
-	std::vector<Rangefinder> rangefinders(const RangefinderParams& p, const HistogramKey& key) const
+	std::vector<Rangefinder> rangefinders(const RangefinderParams& p, const HistogramKey& key, bool doubt = false) const
 	{
 		RangefinderParams scored = p;
 		scored.walls.wall_fit = false;
+		if (!doubt) scored.scanner.sure_run = 0;  // the doubt is learned for the winner (learnDoubt)
 		std::vector<Rangefinder> rf;
 		for (const ColourModel& m : models.at(key)) rf.emplace_back(scored, m);
 		return rf;
@@ -351,6 +387,7 @@ struct Learning
 	{
 		RangefinderParams unfitted = r.params;
 		unfitted.walls.wall_fit = false;
+		unfitted.scanner.sure_run = 0;
 		r.edge_bias = learnEdgeBias(edgeSamples(Rangefinder(unfitted, r.model), o), lo.edge_bias_min_samples);
 		if (r.edge_bias.empty()) return;
 		RangefinderParams with = r.params;
@@ -358,6 +395,36 @@ struct Learning
 		std::vector<double> frame_errors, frame_shortfalls;
 		r.edge_bias_score = score(rangefinders(with, histogramKeyOf(r.best)), validation, frame_errors, frame_shortfalls);
 		if (r.edge_bias_score < r.best.score) r.params = with;
+	}
+
+	/** The winner's doubt: the share and run of kSureShares x kSureRuns
+	 * whose false free and unsure rays on the held-aside pairs cost least,
+	 * the fewest unsure on a tie (the grid runs from the mildest). */
+	void learnDoubt()
+	{
+		double best = 0;
+		RangefinderParams p = r.params;
+		p.sure_floor_share = 1.0, p.sure_obstacle_ratio = 0, p.scanner.sure_run = 0;
+		r.doubt = scoreDoubt(rangefinders(p, histogramKeyOf(r.best), true), validation, best);
+		r.doubt.false_free_without = r.doubt.false_free;
+		const bool feet = r.model.hasObstacles();
+		for (const double ratio : kSureRatios)
+			for (const double share : kSureShares)
+				for (const int run : kSureRuns)
+				{
+					if (ratio > 0 && !feet) continue;  // no feet seen: the ratio doubts nothing
+					// share 1 still doubts a run of non-free pixels shorter than N: a thin or far obstacle.
+					p.sure_floor_share = share, p.sure_obstacle_ratio = ratio, p.scanner.sure_run = run;
+					double cost = 0;
+					DoubtChoice d = scoreDoubt(rangefinders(p, histogramKeyOf(r.best), true), validation, cost);
+					if (cost >= best) continue;
+					best = cost;
+					d.sure_floor_share = share, d.sure_obstacle_ratio = ratio, d.sure_run = run;
+					d.false_free_without = r.doubt.false_free_without;
+					r.doubt = d;
+				}
+		r.params.sure_floor_share = r.doubt.sure_floor_share, r.params.sure_obstacle_ratio = r.doubt.sure_obstacle_ratio;
+		r.params.scanner.sure_run = r.doubt.sure_run;
 	}
 };
 }  // namespace
@@ -384,6 +451,8 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	}
 	l.refit();
 	if (lo.edge_bias) l.fitEdgeBias();
+	l.learnDoubt();
+	l.r.separation = colourSeparation(l.r.model, Rangefinder(l.r.params, l.r.model).classifier(), l.r.params.histogram_smoothing);
 	return l.r;
 }
 
@@ -394,7 +463,8 @@ RayError learningError(const RangePair& p, bool hit, double max_range)
 	{
 		case PairStatus::Compared: return {std::min(cap, std::abs(p.difference())), p.difference() > 0};
 		case PairStatus::TooDifferent: return {cap, p.difference() > 0};
-		case PairStatus::OmniRejected: return {cap, false};  // no answer is as bad as a wrong one
+		case PairStatus::OmniRejected:
+		case PairStatus::OmniUnsure: return {cap, false};  // no answer is as bad as a wrong one
 		case PairStatus::LaserBeyondMaxRange: return {hit ? std::min(cap, max_range - p.omni) : 0.0, true};
 	}
 	return {};
@@ -650,6 +720,17 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 		other_space += line;
 	}
 	other_space += rivalsComment(r);
+	{
+		char line[700];
+		std::snprintf(line, sizeof line,
+					  "; Doubt (docs/method.md): sure_floor_share %g, sure_obstacle_ratio %g, sure_run %d, chosen on the\n"
+					  "; held-aside pairs; there the scan read free more than 25 cm past %.1f %% of the laser's returns\n"
+					  "; within max range (%.1f %% without doubt), with %.1f %% of its rays unsure.\n; %s.\n",
+					  r.doubt.sure_floor_share, r.doubt.sure_obstacle_ratio, r.doubt.sure_run, 100 * r.doubt.false_free,
+					  100 * r.doubt.false_free_without,
+					  100 * r.doubt.unsure, separationLine(r.separation).c_str());
+		other_space += line;
+	}
 	const std::string warning = poorLearningWarning(r);
 	return head + other_space + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" +
 		   r.params.asIni();

@@ -31,7 +31,7 @@ namespace colour
 inline const cv::Scalar kHit{0, 255, 0}, kNoHit{0, 255, 255}, kTooClose{0, 0, 255}, kOutlier{255, 0, 255},
 	kRejectedCandidate{0, 165, 255}, kLaser{255, 255, 0}, kTruth{255, 255, 255}, kFree{255, 0, 0},
 	kForward{255, 255, 255}, kCircle{200, 200, 200}, kMaxRange{160, 160, 160}, kByStep{0, 90, 0},
-	kPlaceholder{40, 40, 90}, kLegend{20, 20, 20};
+	kPlaceholder{40, 40, 90}, kLegend{20, 20, 20}, kUnsure{147, 20, 255};
 }
 
 /** What is shown instead of a frame that cannot be: `size`, filled with

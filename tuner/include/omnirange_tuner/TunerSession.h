@@ -65,10 +65,11 @@ Agreement agreementOf(const std::vector<RangePair>& pairs);
 
 /** The whole rawlog scored: the agreement over all frames with a laser, and
  * each frame's own mean absolute difference against its laser and its truth
- * (NaN where the frame has none, or its image could not be read). */
+ * (NaN where the frame has none, or its image could not be read), and its
+ * share of unsure rays (NaN where its image could not be read). */
 struct LogScore : Agreement
 {
-	std::vector<double> laser_by_frame, truth_by_frame;
+	std::vector<double> laser_by_frame, truth_by_frame, unsure_by_frame;
 };
 
 class TunerSession

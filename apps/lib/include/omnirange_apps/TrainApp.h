@@ -34,6 +34,7 @@ class TrainApp : public mrpt::system::COutputLogger
 
    private:
 	RawlogTrainingResult learn(const RangefinderParams& params);
+	void logSeparation(const ColourSeparation& s);
 
 	Options o_;
 };

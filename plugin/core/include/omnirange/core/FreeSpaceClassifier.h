@@ -22,6 +22,7 @@ namespace omnirange
 inline constexpr Range kThresholdRange = Range::closed(0, 1);
 inline constexpr Range kObstacleRatioRange = Range::closed(0, 1000);
 inline constexpr Range kShadowDepthRange = Range::closed(0, 0.9);
+inline constexpr Range kSureShareRange = Range::openLow(0, 1);
 
 class FreeSpaceClassifier final : public PixelClassifier
 {
@@ -34,25 +35,35 @@ class FreeSpaceClassifier final : public PixelClassifier
 	 * colour is also free when it is a floor colour in light down to
 	 * 1 - shadow_depth times as strong that passes the same test (its
 	 * P(colour | floor) is then the largest of the colours it darkens from)
-	 * and that training never saw on an obstacle: the floor in shadow. Throws
+	 * and that training never saw on an obstacle: the floor in shadow. A
+	 * free colour is sure floor (kFree) when it is among the floor's most
+	 * common colours that together hold `sure_share` of its training pixels,
+	 * and, with obstacle colours in the model, P(colour | floor) >=
+	 * sure_ratio * P(colour | obstacle); else doubtful (kDoubtfulFree).
+	 * sure_share 1 and sure_ratio 0: every free colour is sure. Throws
 	 * std::invalid_argument if the floor histogram is empty or a parameter
 	 * is out of range. */
 	FreeSpaceClassifier(const ColourModel& model, double threshold, double obstacle_ratio = 0.0,
-						double smoothing = 0.0, double shadow_depth = 0.0);
+						double smoothing = 0.0, double shadow_depth = 0.0, double sure_share = 1.0,
+						double sure_ratio = 0.0);
 
 	const ColourBinner& binner() const { return binner_; }
 
 	/** true when the B, G, R pixel is free floor. */
 	bool isFree(const std::uint8_t* bgr) const
 	{
-		return free_[binner_.binOf(bgr)] != 0;
+		return free_[binner_.binOf(bgr)] != kNotFree;
 	}
+	/** kNotFree, kFree or kDoubtfulFree for the B, G, R pixel. */
+	std::uint8_t classOf(const std::uint8_t* bgr) const { return free_[binner_.binOf(bgr)]; }
 
 	void classify(const std::uint8_t* bgr, const std::int32_t* pixels, int count, std::uint8_t* out) const override
 	{
 		for (int k = 0; k < count; ++k) out[k] = free_[binner_.binOf(bgr + 3 * static_cast<std::size_t>(pixels[k]))];
 	}
 
+	/** Whether colour bin `bin` is free floor. */
+	bool isFreeBin(std::uint32_t bin) const { return free_.at(bin) != kNotFree; }
 	/** Number of bins classified free. */
 	std::size_t freeBinCount() const;
 
@@ -63,7 +74,7 @@ class FreeSpaceClassifier final : public PixelClassifier
 
    private:
 	ColourBinner binner_;
-	std::vector<std::uint8_t> free_;  // per bin: 1 free, 0 not
+	std::vector<std::uint8_t> free_;  // per bin: kNotFree, kFree or kDoubtfulFree
 	std::vector<float> needed_;  // per bin: the P(colour | floor) it takes to be free
 };
 

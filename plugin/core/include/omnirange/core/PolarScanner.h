@@ -27,7 +27,10 @@ enum class RayStatus : std::uint8_t
 	Hit,  ///< the floor ends here: a measured range
 	NoHit,  ///< free up to the max-range radius: reports max range
 	TooClose,  ///< the floor ends inside min range: reports min range
-	Outlier  ///< rejected by the outlier filter (range kept, not valid)
+	Outlier,  ///< rejected by the outlier filter (range kept, not valid)
+	/** The free stretch crosses colours the floor rarely shows: free only up
+	 * to where they start (range: that confident extent). */
+	Unsure
 };
 std::string toString(RayStatus s);
 std::string toString(BoundaryModel m);
@@ -52,6 +55,14 @@ struct Ray
 	/** The hit pixel's contrast with the floor before it (EdgeBias.h); NaN
 	 * without a hit or too near the base to tell. */
 	float edge_contrast{std::numeric_limits<float>::quiet_NaN()};
+	/** Where the sure floor ends before the ray's end (sure_run doubtful
+	 * pixels start there), as a pixel index and a range [m]; -1 when the
+	 * evidence carries the whole free stretch. */
+	int sure_end{-1};
+	float sure_range{0};
+	/** [0, 1] the share of the range the ray claims free that sure floor
+	 * supports: 1 for a hit or free ray, below 1 for an unsure one. */
+	float confidence{1};
 };
 
 /** Bearing [rad] of scanline i of S: MRPT's angle of ray i in a scan of S
@@ -92,6 +103,10 @@ struct PolarScannerParams
 	 * of the darkened floor before an obstacle's foot, learned against the
 	 * laser by omnirange-train --learn; empty: none (the paper's). */
 	std::vector<double> edge_bias{};
+	/** [px] doubtful pixels (colours the floor rarely shows, sure_floor_share)
+	 * in a row, runs of at most K sure ones negated, that end the stretch a
+	 * ray may claim free; 0: no doubt, every ray hit or free (the paper's). */
+	int sure_run{20};
 
 	static const OptionsTable<PolarScannerParams>& table();
 	/** Throws std::invalid_argument naming the key; the camera bounds the radii. */
@@ -147,6 +162,10 @@ class PolarScanner
 	/** The ray's range, status and contrast from the pixel `hit` that ends it:
 	 * the boundary model, the edge bias, too close. */
 	void placeHit(const Scanline& line, const std::uint8_t* bgr, const std::int32_t* pix, int hit, Ray& ray) const;
+	/** Where sure floor ends before pixel `end`, the ray's claimed end:
+	 * fills ray.sure_end and ray.sure_range. */
+	template <class ClassOf>
+	void findDoubt(const Scanline& line, ClassOf& class_of, int end, Ray& ray) const;
 
 	PolarScannerParams p_;
 	int width_, height_;

@@ -26,6 +26,38 @@ class Mat;
 
 namespace omnirange
 {
+/** How an unsure ray goes into the MRPT scan (toObservation). */
+enum class UnsureRays
+{
+	/** a valid return at its confident extent: a navigator stops there */
+	Obstacle,
+	/** invalid, its range the confident extent: a map built with
+	 * considerInvalidRangesAsFreeSpace = false neither clears nor marks it */
+	Invalid
+};
+std::string toString(UnsureRays u);
+UnsureRays unsureRaysFromString(const std::string& name);
+
+/** [-] A scan's intensity channel carries each ray's confidence times this:
+ * kFullConfidence for a hit or free ray, less for an unsure one. */
+inline constexpr int kFullConfidence = 100;
+
+/** Whether ray i of an MRPT scan is unsure: its intensity, when it has one,
+ * below kFullConfidence (a laser's scan, or one without intensity, has none). */
+inline bool rayIsUnsure(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t i)
+{
+	return scan.hasIntensity() && scan.getScanIntensity(i) < kFullConfidence;
+}
+
+/** Makes every unsure ray of `scan` invalid (its range, the confident extent,
+ * kept): what a map or a scan matcher takes from a scan written with
+ * unsure_rays = obstacle. */
+inline void invalidateUnsureRays(mrpt::obs::CObservation2DRangeScan& scan)
+{
+	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
+		if (rayIsUnsure(scan, i)) scan.setScanRangeValidity(i, false);
+}
+
 /** Every parameter of the rangefinder, read from one ini section whose keys
  * equal the member names (docs/parameters.md lists them; ini/maze.ini is a
  * commented example). */
@@ -52,6 +84,17 @@ struct RangefinderParams
 	 * after a short training the darker colours let obstacles through
 	 * (docs/results.md). 0: the colours as trained. */
 	double shadow_depth{0.0};
+	/** [-] the floor's most common colours that together hold this share of
+	 * its training pixels are sure floor; a free stretch that crosses
+	 * scanner.sure_run pixels of the rest makes a ray unsure (1: every free
+	 * colour is sure). omnirange-train --learn chooses it. */
+	double sure_floor_share{0.98};
+	/** [-] with obstacle colours in the model, a free colour is sure floor
+	 * only when also P(c | floor) >= sure_obstacle_ratio * P(c | obstacle):
+	 * the obstacles' feet show it rarely; 0: off. --learn chooses it. */
+	double sure_obstacle_ratio{0.0};
+	/** How unsure rays are written into the MRPT scan. */
+	UnsureRays unsure_rays{UnsureRays::Obstacle};
 	/** Bring each image's floor, just beyond the base, back to the colour it
 	 * had in training before classifying (ExposureCompensation.h); only with
 	 * a histogram file that records that colour. On by default: cameras'
@@ -131,6 +174,11 @@ inline constexpr double kExposureCheckShare = 0.9;
  * from here and exposure compensation reads its ring here. */
 double floorBeyondBase(const OmniCameraModel& camera, const PolarScannerParams& scanner);
 
+/** Step 6 of Rangefinder::process: a hit or free ray whose sure floor ends
+ * before its end (Ray::sure_end) becomes Unsure at that extent (at least
+ * min_range), its confidence the share of its claimed range that is left. */
+void markUnsure(Ray& ray, double min_range);
+
 class Rangefinder
 {
    public:
@@ -159,7 +207,9 @@ class Rangefinder
 						   const std::function<void(const PixelClassifier&)>& use) const;
 
 	/** The scan as an MRPT observation: S rays over 2 pi (S-1)/S, ray i at
-	 * scanline i's bearing, valid only where status is Hit. */
+	 * scanline i's bearing, valid where status is Hit (and Unsure, with
+	 * unsure_rays = obstacle); the intensity channel is each ray's
+	 * confidence times kFullConfidence (kFullConfidence: hit or free). */
 	mrpt::obs::CObservation2DRangeScan::Ptr toObservation(
 		const RangeScan& scan, mrpt::Clock::time_point stamp) const;
 

@@ -37,10 +37,11 @@ struct RawlogScanSummary
 {
 	std::size_t images{0};  ///< images scanned (or decoded)
 	std::size_t objects{0};  ///< objects written
-	std::size_t rays{0}, hits{0};  ///< rays produced, and of them valid
+	std::size_t rays{0}, hits{0};  ///< rays produced, and of them hits
 	/** Of the rays, those without a hit: free to the max range (no_hit), ended
 	 * at once or inside min range (too_close), rejected by the outlier filter. */
 	std::size_t no_hit{0}, too_close{0}, outliers{0};
+	std::size_t unsure{0};  ///< of the rays, those free only up to their confident extent (valid with unsure_rays = obstacle)
 	std::size_t skipped{0};  ///< bad images skipped (skip_bad_images only)
 	std::size_t images_copied{0};  ///< the input's image files copied, not hard-linked (another file system)
 	std::size_t grey_images{0};  ///< of the images scanned, those whose three channels are equal (a grey camera's)

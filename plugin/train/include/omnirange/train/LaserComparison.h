@@ -15,12 +15,17 @@ constexpr double kDefaultMaxDifference = 1.25;
 /** [m] The largest max_difference taken. */
 constexpr double kMaxRangeDifference = 100.0;
 
+/** [m] A ray reads free floor past the truth (or the laser) when it claims
+ * free floor this far beyond it: the margin of "within 5 cm". */
+inline constexpr double kFalseFreeMargin = 0.05;
+
 enum class PairStatus
 {
 	Compared,
 	LaserBeyondMaxRange,  ///< excluded: the laser reads beyond the omni's max range
 	TooDifferent,  ///< excluded: |difference| > max_difference
-	OmniRejected  ///< not compared: the omni ray is invalid but not a no-hit (too close, outlier)
+	OmniRejected,  ///< not compared: the omni ray is invalid but not a no-hit (too close, outlier)
+	OmniUnsure  ///< not compared: the omni ray is unsure, free only to its range (rayIsUnsure)
 };
 std::string toString(PairStatus s);
 
