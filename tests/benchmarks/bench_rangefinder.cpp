@@ -63,14 +63,15 @@ const Scene& scene(bool open)
 /** Times rf on the scene's frame, counting the last scan's hits. */
 void timeScans(benchmark::State& state, const Rangefinder& rf, const Scene& scene)
 {
-	int hits = 0;
+	int hits = 0, unsure = 0;
 	for (auto _ : state)
 	{
 		const RangeScan scan = rf.process(scene.frame);
-		hits = scan.count(RayStatus::Hit);
+		hits = scan.count(RayStatus::Hit), unsure = scan.count(RayStatus::Unsure);
 		benchmark::DoNotOptimize(scan.rays.data());
 	}
 	state.counters["hit_rays"] = hits;
+	state.counters["unsure_rays"] = unsure;
 }
 
 void BM_FrameToScan(benchmark::State& state)
@@ -80,6 +81,17 @@ void BM_FrameToScan(benchmark::State& state)
 }
 // Arg 0: the room; arg 1: open floor, every ray to max range.
 BENCHMARK(BM_FrameToScan)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+/** The same without the doubt (sure_run = 0, the paper's two outcomes): what
+ * the second search along each ray's free stretch costs. */
+void BM_FrameToScanWithoutDoubt(benchmark::State& state)
+{
+	const Scene& scene = ::scene(state.range(0) != 0);
+	RangefinderParams p = scene.params;
+	p.scanner.sure_run = 0;
+	timeScans(state, Rangefinder(p, scene.histogram), scene);
+}
+BENCHMARK(BM_FrameToScanWithoutDoubt)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_FrameToObservation(benchmark::State& state)
 {

@@ -260,7 +260,9 @@ std::vector<Ray> PolarScanner::scan(const cv::Mat& image, const PixelClassifier&
 		ray.bearing = line.bearing;
 		searchColour(line, is_free, ray);
 		const int hit = endOfFloor(line, data, pix, ray);
-		findDoubt(line, class_of, hit < 0 ? line.last_candidate + 1 : hit, ray);
+		const int end = hit < 0 ? line.last_candidate + 1 : hit;  // the stretch the ray claims free
+		if (end > 0) class_of(end - 1);  // classified up to there (the search has read them)
+		findDoubt(line, free.data(), end, ray);
 		if (hit < 0)
 		{
 			ray.status = RayStatus::NoHit;
@@ -327,18 +329,24 @@ void PolarScanner::placeHit(const Scanline& line, const std::uint8_t* bgr, const
 	ray.range = too_close ? static_cast<float>(p_.min_range) : range;
 }
 
-template <class ClassOf>
-void PolarScanner::findDoubt(const Scanline& line, ClassOf& class_of, int end, Ray& ray) const
+void PolarScanner::findDoubt(const Scanline& line, const std::uint8_t* classes, int end, Ray& ray) const
 {
 	// The paper's N/K search again, on sure floor against the rest and only
 	// inside the free stretch: a few doubtful pixels at the blurred edge of
-	// the floor's end never reach sure_run.
+	// the floor's end never reach sure_run. It starts at the stretch's first
+	// pixel that is not sure floor (the search's first candidate).
 	const int from = ray.past_base;
 	if (p_.sure_run <= 0 || end <= from) return;
-	const auto sure = [&](int k) { return class_of(from + k) == kFree; };
-	const HitSearch doubt = findHit(sure, end - from, end - from - 1, HitFilterParams{p_.sure_run, p_.filter.K});
+	const std::uint8_t* c = classes + from;
+	const int n = end - from;
+	// A confirmed run holds at least 1 + sure_run / (K + 1) pixels not sure floor (each negated run of at
+	// most K sure ones is followed by one that is not): most stretches have fewer.
+	if (n - std::count(c, c + n, kFree) < 1 + p_.sure_run / (p_.filter.K + 1)) return;
+	const int first = static_cast<int>(std::find_if(c, c + n, [](std::uint8_t v) { return v != kFree; }) - c);
+	const auto sure = [&](int k) { return c[first + k] == kFree; };
+	const HitSearch doubt = findHit(sure, n - first, n - first - 1, HitFilterParams{p_.sure_run, p_.filter.K});
 	if (doubt.status != HitSearch::Status::Hit) return;
-	ray.sure_end = from + doubt.index;
+	ray.sure_end = from + first + doubt.index;
 	ray.sure_range = mid_range_[line.first + ray.sure_end];
 }
 

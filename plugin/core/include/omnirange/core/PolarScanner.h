@@ -162,10 +162,10 @@ class PolarScanner
 	/** The ray's range, status and contrast from the pixel `hit` that ends it:
 	 * the boundary model, the edge bias, too close. */
 	void placeHit(const Scanline& line, const std::uint8_t* bgr, const std::int32_t* pix, int hit, Ray& ray) const;
-	/** Where sure floor ends before pixel `end`, the ray's claimed end:
-	 * fills ray.sure_end and ray.sure_range. */
-	template <class ClassOf>
-	void findDoubt(const Scanline& line, ClassOf& class_of, int end, Ray& ray) const;
+	/** Where sure floor ends before pixel `end`, the ray's claimed end,
+	 * from the scanline's classes (kNotFree, kFree, kDoubtfulFree) up to
+	 * there: fills ray.sure_end and ray.sure_range. */
+	void findDoubt(const Scanline& line, const std::uint8_t* classes, int end, Ray& ray) const;
 
 	PolarScannerParams p_;
 	int width_, height_;
