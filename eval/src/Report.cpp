@@ -61,8 +61,11 @@ Metrics metricsOf(const ExperimentResults& r)
 	m["training_pairs"] = r.training_pairs;
 	m["training_until"] = r.training_until;
 	m["omni_hit_fraction"] = r.omni_hit_fraction;
-	m["colour_separation_auc"] = r.separation.auc;
-	m["colour_feet_read_free"] = r.separation.feet_read_free;
+	if (r.separation.known)  // training saw no obstacle's feet: nothing measured
+	{
+		m["colour_separation_auc"] = r.separation.auc;
+		m["colour_feet_read_free"] = r.separation.feet_read_free;
+	}
 	if (a.compared > 0)  // every ray the laser sees unsure: no mean to give
 	{
 		m["accuracy_mean_abs"] = a.meanAbs();
@@ -125,7 +128,8 @@ bool isMetricKey(const std::string& key)
 	// sensor labelled "L" that runs every engine.
 	static const Metrics every = [] {
 		ExperimentResults r;
-		r.accuracy.truth.frames = 1, r.accuracy.stats.compared = 1, r.has_check_region = true;
+		r.accuracy.truth.frames = 1, r.accuracy.stats.compared = 1, r.separation.known = true;
+		r.has_check_region = true;
 		r.sensors.resize(1), r.sensors[0].label = "L", r.sensors[0].rbpf_ini = "x";
 		return metricsOf(r);
 	}();

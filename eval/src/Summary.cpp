@@ -226,6 +226,7 @@ void clocks(std::ostream& o, const Summary& s)
 
 double median(std::vector<double> v)
 {
+	v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }), v.end());  // not measured
 	if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
 	std::sort(v.begin(), v.end());
 	return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);

@@ -136,3 +136,28 @@ TEST(Doubt, SeparationIsOneForDisjointColoursAndOneHalfForTheSame)
 
 	EXPECT_FALSE(colourSeparation(ColourModel(floor), FreeSpaceClassifier(ColourModel(floor), 0.05), 0).known);
 }
+
+TEST(Doubt, AHitAlreadyWithinTheConfidentExtentStaysAHit)
+{
+	// The edge bias or the wall fit can move a hit in past where the doubt starts: it then claims no doubtful floor.
+	Ray moved_in;
+	moved_in.status = RayStatus::Hit, moved_in.range = 1.9f, moved_in.sure_end = 40, moved_in.sure_range = 2.0f;
+	markUnsure(moved_in, 0.4);
+	EXPECT_EQ(moved_in.status, RayStatus::Hit);
+	EXPECT_FLOAT_EQ(moved_in.range, 1.9f);
+	EXPECT_FLOAT_EQ(moved_in.confidence, 1.0f);
+
+	Ray past;
+	past.status = RayStatus::Hit, past.range = 3.0f, past.sure_end = 40, past.sure_range = 1.5f;
+	markUnsure(past, 0.4);
+	EXPECT_EQ(past.status, RayStatus::Unsure);
+	EXPECT_FLOAT_EQ(past.range, 1.5f);
+	EXPECT_FLOAT_EQ(past.confidence, 0.5f);
+
+	Ray free_near_base;  // its sure floor ends inside min range: unsure at min range
+	free_near_base.status = RayStatus::NoHit, free_near_base.range = 3.8f, free_near_base.sure_end = 0;
+	free_near_base.sure_range = 0.2f;
+	markUnsure(free_near_base, 0.4);
+	EXPECT_EQ(free_near_base.status, RayStatus::Unsure);
+	EXPECT_FLOAT_EQ(free_near_base.range, 0.4f);
+}

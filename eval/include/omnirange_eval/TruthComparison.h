@@ -29,8 +29,10 @@ struct TruthBand
 	std::size_t missed_no_hit{0};  ///< of them, rays that report no hit
 	std::size_t missed_rejected{0};  ///< of them, rays rejected (too close, outlier filter)
 	std::size_t unsure{0};  ///< of them, rays free only to their confident extent
-	/** of them, rays not unsure that claim free floor past the truth: no hit,
-	 * or a hit more than 5 cm beyond it (the error a robot collides by) */
+	/** of them, rays that claim free floor more than 5 cm past the truth (the
+	 * error a robot collides by): no valid hit (no hit, too close or rejected,
+	 * all invalid in the MRPT scan), a hit beyond it, or an unsure ray whose
+	 * confident extent is beyond it */
 	std::size_t false_free{0};
 	std::vector<double> abs_errors;  ///< [m] of the hits
 	double sum_signed{0};  ///< [m] sum of omnicam minus truth over the hits

@@ -98,8 +98,8 @@ FreeSpaceClassifier FreeSpaceClassifier::alsoFreeUnder(const std::vector<double>
 		throw std::invalid_argument("alsoFreeUnder: one probability per bin is needed");
 	FreeSpaceClassifier out(*this);
 	for (std::size_t b = 0; b < free_.size(); ++b)
-		if (free_[b] == kNotFree && floor_probability[b] > 0 && floor_probability[b] >= needed_[b])
-			out.free_[b] = kFree;  // the floor's colour now, seen around the base
+		if (floor_probability[b] > 0 && floor_probability[b] >= needed_[b])
+			out.free_[b] = kFree;  // the floor's colour now, seen around the base: sure
 	return out;
 }
 

@@ -253,6 +253,8 @@ void markUnsure(Ray& ray, double min_range)
 {
 	if (ray.sure_end < 0 || (ray.status != RayStatus::Hit && ray.status != RayStatus::NoHit)) return;
 	const float extent = std::max(ray.sure_range, static_cast<float>(min_range));
+	// A hit the edge bias or the wall fit moved in to the doubt's start claims no doubtful floor.
+	if (ray.status == RayStatus::Hit && extent >= ray.range) return;
 	ray.confidence = std::clamp(extent / std::max(ray.range, 1e-3f), 0.0f, 0.99f);
 	ray.status = RayStatus::Unsure;
 	ray.range = extent;

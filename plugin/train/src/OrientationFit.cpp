@@ -29,6 +29,7 @@ CObservation2DRangeScan turned(const CObservation2DRangeScan& scan, int sign, in
 		const int m = ((sign > 0 ? j - k : S - 1 + k - j) % S + S) % S;
 		out.setScanRange(j, scan.getScanRange(m));
 		out.setScanRangeValidity(j, scan.getScanRangeValidity(m));
+		if (scan.hasIntensity()) out.setScanIntensity(j, scan.getScanIntensity(m));  // each ray's confidence with it
 	}
 	return out;
 }

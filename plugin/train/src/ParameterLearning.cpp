@@ -397,9 +397,10 @@ struct Learning
 		if (r.edge_bias_score < r.best.score) r.params = with;
 	}
 
-	/** The winner's doubt: the share and run of kSureShares x kSureRuns
-	 * whose false free and unsure rays on the held-aside pairs cost least,
-	 * the fewest unsure on a tie (the grid runs from the mildest). */
+	/** The winner's doubt: the ratio, share and run of kSureRatios x
+	 * kSureShares x kSureRuns whose seen-through and unsure rays on the
+	 * held-aside pairs cost least; no doubt unless one costs less than none,
+	 * and of equal costs the first in the grid's order. */
 	void learnDoubt()
 	{
 		double best = 0;

@@ -176,7 +176,8 @@ double floorBeyondBase(const OmniCameraModel& camera, const PolarScannerParams& 
 
 /** Step 6 of Rangefinder::process: a hit or free ray whose sure floor ends
  * before its end (Ray::sure_end) becomes Unsure at that extent (at least
- * min_range), its confidence the share of its claimed range that is left. */
+ * min_range), its confidence the share of its claimed range that is left;
+ * a hit whose range is already within that extent stays a hit. */
 void markUnsure(Ray& ray, double min_range);
 
 class Rangefinder
