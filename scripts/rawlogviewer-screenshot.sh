@@ -6,10 +6,10 @@
 set -euo pipefail
 rawlog=$(realpath "$1"); out=$(realpath -m "$2")
 plugin=$(realpath "$(dirname "$0")/../build/plugin/libomnirange.so")
-export DISPLAY=:97
-Xvfb :97 -screen 0 1600x1000x24 >/dev/null 2>&1 & xvfb=$!
+. "$(dirname "$0")/xvfb.sh"
+viewer=""
+start_xvfb 1600x1000x24
 trap 'kill $xvfb $viewer 2>/dev/null || true' EXIT
-sleep 2
 # MRPT 2.5.8 finds external images only when started from the rawlog's folder.
 (cd "$(dirname "$rawlog")" && RawLogViewer -l "$plugin" "$(basename "$rawlog")" </dev/null >/dev/null 2>&1) & viewer=$!
 sleep 6

@@ -9,11 +9,10 @@ set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"; apps="$src/build/apps"; run="$src/results/factory"
 out=$(realpath -m "${1:-$src/docs/img/readme.png}")
 work=$(mktemp -d)
-export DISPLAY=:95
-Xvfb :95 -screen 0 1600x1000x24 >/dev/null 2>&1 & xvfb=$!
-tuner=""
+. "$src/scripts/xvfb.sh"
+tuner=""; xvfb=""
 trap 'kill $tuner $xvfb 2>/dev/null || true; rm -rf "$work"' EXIT
-sleep 2
+start_xvfb 1600x1000x24
 "$apps/omnirange-tuner" -i "$run/dataset/factory.rawlog" -c "$run/learned.ini" -H "$run/floor.hist" -f "${FRAME:-40}" \
   </dev/null >/dev/null 2>&1 & tuner=$!
 win=$(timeout 30 xdotool search --sync --onlyvisible --name "omnirange-tuner" | head -1)

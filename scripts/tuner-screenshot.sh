@@ -8,11 +8,10 @@ set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"; apps="$src/build/apps"; out=$(realpath -m "$1")
 work=$(mktemp -d)
 "$apps/omnirange-train" -q -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -o "$work/f.hist"
-export DISPLAY=:96
-Xvfb :96 -screen 0 1280x720x24 >/dev/null 2>&1 & xvfb=$!
-tuner=""
+. "$src/scripts/xvfb.sh"
+tuner=""; xvfb=""
 trap 'kill $tuner $xvfb 2>/dev/null || true; rm -rf "$work"' EXIT
-sleep 2
+start_xvfb 1280x720x24
 "$apps/omnirange-tuner" -i "$src/rawlogs/factory-sample.rawlog" -c "$src/ini/factory.ini" -H "$work/f.hist" -f 5 \
   </dev/null >/dev/null 2>&1 & tuner=$!
 win=$(timeout 30 xdotool search --sync --onlyvisible --name "omnirange-tuner" | head -1)

@@ -8,14 +8,13 @@
 #                            user.ini, a copy of ini/factory.ini beside its base
 #   check DESCRIPTION CMD... runs CMD and says ok or FAIL (FAIL sets $fail to 1)
 
+. "$(dirname "${BASH_SOURCE[0]}")/../../scripts/xvfb.sh"
+
 start_tuner() {
   local log=$1; shift
-  local display=:$(( 80 + RANDOM % 19 ))
-  Xvfb "$display" -screen 0 "${SCREEN:-1600x1000x24}" >/dev/null 2>&1 & xvfb=$!
   tuner=""
+  start_xvfb "${SCREEN:-1600x1000x24}"
   trap 'kill $tuner $xvfb 2>/dev/null || true' EXIT
-  export DISPLAY=$display
-  sleep 2
   "$apps/omnirange-tuner" "$@" </dev/null >"$log" 2>&1 & tuner=$!
   win=$(timeout 30 xdotool search --sync --onlyvisible --name "omnirange-tuner" | head -1)
   sleep 2
