@@ -9,6 +9,7 @@
 #include <omnirange/train/MirrorRim.h>
 
 #include "../common/FactorySample.h"
+#include "../common/RenderedCheckerboard.h"
 
 #include <gtest/gtest.h>
 
@@ -314,6 +315,96 @@ TEST(RealParaboloidMiscount, ABoardGivenOneCornerShortIsFoundAsPartOfTheLargerOn
 TEST_F(RealParaboloid, TheRightCountIsNotTakenForPartOfALargerBoard)
 {
 	for (const auto& i : calibration_->images) EXPECT_FALSE(i.part_of_larger) << i.file;
+}
+
+namespace
+{
+/** Twelve views of a board of 9 x 7 squares (8 x 6 inner corners) with a
+ * white margin, rendered round a hyperbolic mirror (xi 0.9), the room's
+ * grey past the margin. */
+class RenderedHyperboloid : public ::testing::Test
+{
+   protected:
+	static void SetUpTestSuite()
+	{
+		const std::string dir = test::freshDir("omnirange_checkerboards", "hyperboloid");
+		const test::MirrorCamera camera;
+		const test::RenderedBoard board;
+		for (int k = 0; k < 12; ++k)
+		{
+			const test::BoardPose pose =
+				test::facingPose(board, k * M_PI / 6, (15 + 7 * (k % 3)) * M_PI / 180, 0.45 + 0.03 * (k % 2),
+								 0.2 * ((k % 4) - 1.5), 0.12 * ((k % 5) - 2));
+			const std::string file = dir + "/board_" + std::to_string(10 + k) + ".png";
+			cv::imwrite(file, test::renderBoard(camera, board, pose));
+			files_.push_back(file);
+		}
+	}
+	static CheckerboardOptions board(int columns, int rows)
+	{
+		CheckerboardOptions o;
+		o.columns = columns, o.rows = rows, o.square = 0.04;
+		return o;
+	}
+	static std::vector<std::string> files_;
+};
+std::vector<std::string> RenderedHyperboloid::files_;
+}  // namespace
+
+TEST_F(RenderedHyperboloid, TheRightCountOnAWhiteMarginIsNotTakenForPartOfALargerBoard)
+{
+	// 8 x 6, the board's own count: each board is found and fits, and none
+	// is doubted, though a detector may complete a 9 x 6 or 8 x 7 grid with a
+	// row on the squares' outer edge, where the margin meets the room.
+	const CheckerboardCalibration c = calibrateFromCheckerboards(files_, board(8, 6));
+	EXPECT_GE(c.found(), 10);
+	EXPECT_LT(c.rms, 0.5);
+	EXPECT_NEAR(c.K(0, 2), 400.0, 3.0);
+	EXPECT_NEAR(c.K(1, 2), 400.0, 3.0);
+	for (const auto& i : c.images) EXPECT_FALSE(i.part_of_larger) << i.file << " (" << i.detector << ")";
+}
+
+TEST_F(RenderedHyperboloid, ARowOnTheBoardsEdgeIsNoGridOfCornersAndTheBoardsOwnGridIs)
+{
+	const cv::Mat gray = cv::imread(files_.front(), cv::IMREAD_GRAYSCALE);
+	const cv::Size pattern(8, 6);
+	std::vector<cv::Point2f> corners;
+	ASSERT_TRUE(findCheckerboardCorners(gray, pattern, "classic", corners) ||
+				findCheckerboardCorners(gray, pattern, "sector-based", corners));
+	const double contrast = saddleContrast(gray, pattern, corners);
+	EXPECT_GT(contrast, 50.0);  // ink 25, paper 235: the squares differ by far more
+	// The board's own grid: what a board given one corner short (7 x 6) finds as the larger one.
+	EXPECT_TRUE(isCheckerboardGrid(gray, pattern, corners, contrast));
+	// One column or row more, on the squares' outer edge where the margin
+	// begins: margin on both of its outer squares, no corner.
+	const auto at = [&](int c, int r) { return corners[static_cast<std::size_t>(r * pattern.width + c)]; };
+	std::vector<cv::Point2f> left, right, below = corners;
+	for (int r = 0; r < pattern.height; ++r)
+	{
+		left.push_back(2.f * at(0, r) - at(1, r));
+		for (int c = 0; c < pattern.width; ++c)
+		{
+			left.push_back(at(c, r));
+			right.push_back(at(c, r));
+		}
+		right.push_back(2.f * at(7, r) - at(6, r));
+	}
+	for (int c = 0; c < pattern.width; ++c) below.push_back(2.f * at(c, 5) - at(c, 4));
+	EXPECT_FALSE(isCheckerboardGrid(gray, {9, 6}, left, contrast));
+	EXPECT_FALSE(isCheckerboardGrid(gray, {9, 6}, right, contrast));
+	EXPECT_FALSE(isCheckerboardGrid(gray, {8, 7}, below, contrast));
+	// A grid of the wrong size is none at all.
+	EXPECT_FALSE(isCheckerboardGrid(gray, {9, 6}, corners, contrast));
+}
+
+TEST_F(RenderedHyperboloid, ABoardGivenOneCornerShortIsStillFoundAsPartOfTheLargerOne)
+{
+	// 7 x 5 for the 8 x 6 board, the white margin and all: the larger grid the
+	// detector finds inside the real board is all corners, and is told.
+	const CheckerboardCalibration c = calibrateFromCheckerboards(files_, board(7, 5));
+	int larger = 0;
+	for (const auto& i : c.images) larger += i.part_of_larger;
+	EXPECT_GE(larger, 1);
 }
 
 TEST(CheckerboardCalibration, ACheckerboardFolderGivesItsImagesInNameOrder)

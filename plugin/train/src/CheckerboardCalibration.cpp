@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <vector>
 
 namespace omnirange
 {
@@ -43,6 +44,64 @@ bool findCheckerboardCorners(const cv::Mat& gray, const cv::Size& pattern, const
 	}
 	throw std::invalid_argument("unknown corner detector '" + detector +
 								"' (classic, sector-based or mrpt-scaramuzza)");
+}
+
+namespace
+{
+/** [share of the way to the next corners] Where the four squares around a corner are sampled: well inside each. */
+constexpr float kSaddleReach = 0.35f;
+/** [share of a square's side] The side of the patch averaged at each sample. */
+constexpr double kSaddlePatch = 0.2;
+
+struct Saddle
+{
+	double contrast;  ///< [grey levels] between the two diagonal pairs of squares
+	double mismatch;  ///< [grey levels] the larger difference within a pair
+};
+
+/** The four squares around corner (r, c) of `grid`, along the directions to its neighbours in the grid. */
+Saddle saddleAt(const cv::Mat& gray, const cv::Size& pattern, const std::vector<cv::Point2f>& grid, int r, int c)
+{
+	const auto at = [&](int row, int col) { return grid[static_cast<std::size_t>(row * pattern.width + col)]; };
+	const cv::Point2f p = at(r, c);
+	// Towards the next corner along the row and down the column (from the one before at the grid's end).
+	const cv::Point2f du = c + 1 < pattern.width ? at(r, c + 1) - p : p - at(r, c - 1);
+	const cv::Point2f dv = r + 1 < pattern.height ? at(r + 1, c) - p : p - at(r - 1, c);
+	const double side = std::min(cv::norm(du), cv::norm(dv));
+	const int patch = std::max(1, static_cast<int>(side * kSaddlePatch)) | 1;
+	const auto level = [&](float su, float sv) {
+		cv::Mat px;
+		cv::getRectSubPix(gray, cv::Size(patch, patch), p + kSaddleReach * (su * du + sv * dv), px, CV_32F);
+		return cv::mean(px)[0];
+	};
+	const double pp = level(1, 1), mm = level(-1, -1), pm = level(1, -1), mp = level(-1, 1);
+	return {std::abs((pp + mm) - (pm + mp)) / 2, std::max(std::abs(pp - mm), std::abs(pm - mp))};
+}
+}  // namespace
+
+double saddleContrast(const cv::Mat& gray, const cv::Size& pattern, const std::vector<cv::Point2f>& grid)
+{
+	if (pattern.width < 2 || pattern.height < 2 || grid.size() != static_cast<std::size_t>(pattern.area())) return 0;
+	std::vector<double> contrast;
+	for (int r = 0; r < pattern.height; ++r)
+		for (int c = 0; c < pattern.width; ++c) contrast.push_back(saddleAt(gray, pattern, grid, r, c).contrast);
+	const auto middle = contrast.begin() + static_cast<std::ptrdiff_t>(contrast.size() / 2);
+	std::nth_element(contrast.begin(), middle, contrast.end());
+	return *middle;
+}
+
+bool isCheckerboardGrid(const cv::Mat& gray, const cv::Size& pattern, const std::vector<cv::Point2f>& grid,
+						double contrast)
+{
+	if (pattern.width < 2 || pattern.height < 2 || grid.size() != static_cast<std::size_t>(pattern.area())) return false;
+	for (int r = 0; r < pattern.height; ++r)
+		for (int c = 0; c < pattern.width; ++c)
+		{
+			const Saddle s = saddleAt(gray, pattern, grid, r, c);
+			if (s.contrast < kSaddleContrastShare * contrast || s.mismatch > kSaddleMismatchShare * s.contrast)
+				return false;
+		}
+	return true;
 }
 
 int CheckerboardCalibration::found() const
@@ -145,8 +204,8 @@ cv::Mat readBoardImage(const std::string& file, const CheckerboardOptions& o, cv
 }
 
 /** The board's corners in `gray` by the first detector that finds them, and
- * whether the same detector also finds a board one corner wider or taller (a
- * miscounted board). */
+ * whether the same detector also finds a board one corner wider or taller
+ * whose every corner is a checkerboard corner (a miscounted board). */
 CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o, std::vector<cv::Point2f>& corners)
 {
 	const cv::Size pattern(o.columns, o.rows);
@@ -155,9 +214,15 @@ CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o,
 		if (findCheckerboardCorners(gray, pattern, detector, corners))
 		{
 			info.found = true, info.detector = detector;
+			// A miscount means the real grid has more inner corners, each one a
+			// corner of four squares. A detector's "found" for the larger size is
+			// not that: MRPT's OCamCalib-based one can link a board's edge corners
+			// to dark blobs past a white margin and return a row on that edge.
+			const double contrast = saddleContrast(gray, pattern, corners);
 			std::vector<cv::Point2f> more;
 			for (const cv::Size larger : {cv::Size(pattern.width + 1, pattern.height), cv::Size(pattern.width, pattern.height + 1)})
-				info.part_of_larger = info.part_of_larger || findCheckerboardCorners(gray, larger, detector, more);
+				info.part_of_larger = info.part_of_larger || (findCheckerboardCorners(gray, larger, detector, more) &&
+															  isCheckerboardGrid(gray, larger, more, contrast));
 			break;
 		}
 	return info;

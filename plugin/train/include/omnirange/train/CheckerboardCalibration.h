@@ -38,9 +38,12 @@ struct CheckerboardImage
 	std::string detector;  ///< which of CheckerboardOptions::detectors found it
 	bool used{false};  ///< kept by the calibration (cv::omnidir drops some it cannot initialise)
 	double rms{0};  ///< [px] this image's reprojection error, when used
-	/** The same detector also finds a board one corner wider or taller: the
-	 * board given is likely miscounted (a part of the real one, its corners
-	 * then matched to the wrong squares). Checked on the first three boards found. */
+	/** The same detector also finds a board one corner wider or taller, and
+	 * every corner of that grid is a checkerboard corner (isCheckerboardGrid):
+	 * the board given is likely miscounted (a part of the real one, its corners
+	 * then matched to the wrong squares). Checked on every board found. A grid
+	 * a detector completes with a row on the board's outer edge, where a white
+	 * margin begins, does not count: there is no corner there. */
 	bool part_of_larger{false};
 	/** The board lies where it lay in this earlier image (its corners within
 	 * kSameViewPx on average): a copy or a still camera's burst adds no view,
@@ -73,6 +76,30 @@ struct CheckerboardCalibration
 	/** The result as OpenCV's YAML (the keys cv::omnidir users expect: camera_matrix, xi, distortion). */
 	std::string yaml() const;
 };
+
+/** Of the four squares around a true inner corner, the two on one diagonal
+ * differ from each other by at most this share of the difference between
+ * the diagonals. (On a board's outer edge, with white margin on both outer
+ * sides, they differ by twice that difference.) */
+inline constexpr double kSaddleMismatchShare = 0.5;
+/** A true inner corner's diagonals differ by at least this share of the
+ * board's own (saddleContrast). */
+inline constexpr double kSaddleContrastShare = 0.3;
+
+/** [grey levels] The median over `grid`'s corners (`pattern`: columns x rows,
+ * row by row, as findCheckerboardCorners gives them) of the difference
+ * between the two diagonal pairs of squares around each corner in `gray`:
+ * how far the board's dark and light squares differ there. */
+double saddleContrast(const cv::Mat& gray, const cv::Size& pattern, const std::vector<cv::Point2f>& grid);
+
+/** Whether every corner of `grid` is a checkerboard's inner corner in `gray`:
+ * of the four squares around it (sampled from its neighbours in the grid),
+ * the diagonal ones alike (kSaddleMismatchShare) and the diagonals apart by
+ * at least kSaddleContrastShare of `contrast` (saddleContrast of the board
+ * found). A miscounted board's larger grid passes, each of its corners a
+ * real one; a row on the board's edge, margin on its outer side, does not. */
+bool isCheckerboardGrid(const cv::Mat& gray, const cv::Size& pattern, const std::vector<cv::Point2f>& grid,
+						double contrast);
 
 /** A board's inner corners (`pattern`: columns x rows) in an 8-bit grey
  * image by one of CheckerboardOptions::detectors, row by row; false when that
