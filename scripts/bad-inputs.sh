@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the apps on a list of bad inputs, as a careless or hostile user would
 # give them, and prints a markdown table of what each did (docs/robustness.md
-# holds its last output). A case passes when the app ends within 60 s with
+# sums up its kinds). A case passes when the app ends within 60 s with
 # exit code 1 or 2, one line on stderr, no output file left and every input
 # unchanged, or, for the few inputs that are legal but odd, exit 0 with the
 # warning asked for. Exits 1 if any case does not pass.
