@@ -51,50 +51,6 @@ cv::Mat inChangedLight(const cv::Mat& bgr, int k, double v)
 	return withGain(bgr, k % 3 == 0 ? 1.0 : k % 3 == 1 ? 1.0 - v : 1.0 + v);
 }
 
-/** Counts every selected pair into the trainers of its block (with the
- * Blocks split; `blocks` holds one set of trainers per block) or into the
- * training set (blocks[0]) and, when held aside, into `aside` (for the
- * refit); keeps the images to validate on. `n`: how many pairs the
- * options select (countSelected). */
-void collect(const RangefinderParams& rp, const RawlogTrainingOptions& o, const LearningOptions& lo, int n,
-			 std::vector<Trainers>& blocks, Trainers& aside, std::vector<Validation>& validation, int& trained,
-			 int& set_aside, Progress* progress)
-{
-	const std::vector<PairRole> roles = splitPairs(lo, n);
-	const std::vector<int> block = blockOfPairs(lo, n);
-	const bool by_block = lo.split == ValidationSplit::Blocks;
-	RawlogProcessor loop(o.input);
-	int pairs = 0, selected = 0;
-	loop.onPair<CObservationImage, CObservation2DRangeScan>(
-		o.omni_label, o.laser_label, o.max_dt,
-		[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& laser) {
-			if (!o.selects(pairs++)) return;
-			const int s = selected++;
-			if (s >= static_cast<int>(roles.size())) return;
-			const bool refit = lo.refit && !aside.empty();
-			if (roles[s] == PairRole::Unused && !refit) return;
-			const cv::Mat bgr = decodeImage(*image, rp.camera);
-			if (roles[s] == PairRole::Validate)
-				validation.push_back({inChangedLight(bgr, static_cast<int>(validation.size()), lo.validation_light_change),
-									  laser, block[s]});
-			if (by_block || roles[s] == PairRole::Train)
-			{
-				for (auto& [key, trainer] : blocks[block[s]]) trainer.add(bgr, *laser);
-				++trained;
-			}
-			else if (refit)
-			{
-				for (auto& [key, trainer] : aside) trainer.add(bgr, *laser);
-				++set_aside;
-			}
-		});
-	loop.run(progress);
-	if (pairs == 0) throw std::runtime_error(loop.describeNoPair() + "; learning needs both");
-	if (trained == 0 || validation.empty() || (by_block && blocks.size() < 2))
-		throw std::runtime_error("'" + o.input + "' has too few image/laser pairs to learn from (" +
-								 std::to_string(selected) + " selected; some are needed to train and some to validate)");
-}
-
 /** The candidate's error on the held-aside pairs, and per pair in
  * `frame_errors` (see LearnedCandidate::score). */
 double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& validation,
@@ -242,6 +198,47 @@ struct Learning
 					if (lo.refit && !by_block) aside.emplace(HistogramKey{space, b, light}, t);
 				}
 		blocks.assign(n_blocks, trainers);
+	}
+
+	/** Counts every selected pair into the trainers of its block (with the
+	 * Blocks split; `blocks` holds one set of trainers per block) or into the
+	 * training set (blocks[0]) and, when held aside, into `aside` (for the
+	 * refit); keeps the images to validate on. */
+	void collect(Progress* progress)
+	{
+		const std::vector<PairRole> roles = splitPairs(lo, selected);
+		const std::vector<int> block = blockOfPairs(lo, selected);
+		int& trained = r.training_pairs;
+		RawlogProcessor loop(o.input);
+		int pairs = 0, s = 0;
+		loop.onPair<CObservationImage, CObservation2DRangeScan>(
+			o.omni_label, o.laser_label, o.max_dt,
+			[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& laser) {
+				if (!o.selects(pairs++)) return;
+				const int k = s++;
+				if (k >= static_cast<int>(roles.size())) return;
+				const bool refit = lo.refit && !aside.empty();
+				if (roles[k] == PairRole::Unused && !refit) return;
+				const cv::Mat bgr = decodeImage(*image, start.camera);
+				if (roles[k] == PairRole::Validate)
+					validation.push_back(
+						{inChangedLight(bgr, static_cast<int>(validation.size()), lo.validation_light_change), laser, block[k]});
+				if (by_block || roles[k] == PairRole::Train)
+				{
+					for (auto& [key, trainer] : blocks[block[k]]) trainer.add(bgr, *laser);
+					++trained;
+				}
+				else if (refit)
+				{
+					for (auto& [key, trainer] : aside) trainer.add(bgr, *laser);
+					++set_aside;
+				}
+			});
+		loop.run(progress);
+		if (pairs == 0) throw std::runtime_error(loop.describeNoPair() + "; learning needs both");
+		if (trained == 0 || validation.empty() || (by_block && blocks.size() < 2))
+			throw std::runtime_error("'" + o.input + "' has too few image/laser pairs to learn from (" +
+									 std::to_string(s) + " selected; some are needed to train and some to validate)");
 	}
 
 	/** What the validation pairs are, as the learned ini says it. */
@@ -438,7 +435,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	validateLearning(lo);
 	Learning l(start, o, lo);
 	l.makeTrainers();
-	collect(start, o, lo, l.selected, l.blocks, l.aside, l.validation, l.r.training_pairs, l.set_aside, progress);
+	l.collect(progress);
 	l.r.validation_pairs = static_cast<int>(l.validation.size());
 	l.r.split = lo.split;
 	l.r.validation = l.describeValidation();
