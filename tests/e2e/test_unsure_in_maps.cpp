@@ -79,7 +79,9 @@ TEST(UnsureRaysInMaps, NoCellIsClearedPastAnUnsureRaysExtentNorMarkedAtIt)
 			const float p = grid.getPos(x, y);  // probability of free
 			EXPECT_GE(p, 0.45f) << "a wall where an unsure ray's extent ends, at (" << x << ", " << y << ")";
 			if (x > kBoxX0 - kShort + 0.05)
+			{
 				EXPECT_LE(p, 0.55f) << "cleared past an unsure extent at (" << x << ", " << y << ")";
+			}
 			++looked;
 		}
 	EXPECT_GT(looked, 20);

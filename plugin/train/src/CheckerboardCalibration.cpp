@@ -53,6 +53,12 @@ constexpr float kSaddleReach = 0.35f;
 /** [share of a square's side] The side of the patch averaged at each sample. */
 constexpr double kSaddlePatch = 0.2;
 
+/** Whether `grid` holds a corner for every place of `pattern`, with neighbours to sample from. */
+bool isGridOf(const cv::Size& pattern, const std::vector<cv::Point2f>& grid)
+{
+	return pattern.width >= 2 && pattern.height >= 2 && grid.size() == static_cast<std::size_t>(pattern.area());
+}
+
 struct Saddle
 {
 	double contrast;  ///< [grey levels] between the two diagonal pairs of squares
@@ -81,7 +87,7 @@ Saddle saddleAt(const cv::Mat& gray, const cv::Size& pattern, const std::vector<
 
 double saddleContrast(const cv::Mat& gray, const cv::Size& pattern, const std::vector<cv::Point2f>& grid)
 {
-	if (pattern.width < 2 || pattern.height < 2 || grid.size() != static_cast<std::size_t>(pattern.area())) return 0;
+	if (!isGridOf(pattern, grid)) return 0;
 	std::vector<double> contrast;
 	for (int r = 0; r < pattern.height; ++r)
 		for (int c = 0; c < pattern.width; ++c) contrast.push_back(saddleAt(gray, pattern, grid, r, c).contrast);
@@ -93,7 +99,7 @@ double saddleContrast(const cv::Mat& gray, const cv::Size& pattern, const std::v
 bool isCheckerboardGrid(const cv::Mat& gray, const cv::Size& pattern, const std::vector<cv::Point2f>& grid,
 						double contrast)
 {
-	if (pattern.width < 2 || pattern.height < 2 || grid.size() != static_cast<std::size_t>(pattern.area())) return false;
+	if (!isGridOf(pattern, grid)) return false;
 	for (int r = 0; r < pattern.height; ++r)
 		for (int c = 0; c < pattern.width; ++c)
 		{
@@ -218,11 +224,11 @@ CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o,
 			// corner of four squares. A detector's "found" for the larger size is
 			// not that: MRPT's OCamCalib-based one can link a board's edge corners
 			// to dark blobs past a white margin and return a row on that edge.
-			const double contrast = saddleContrast(gray, pattern, corners);
 			std::vector<cv::Point2f> more;
 			for (const cv::Size larger : {cv::Size(pattern.width + 1, pattern.height), cv::Size(pattern.width, pattern.height + 1)})
-				info.part_of_larger = info.part_of_larger || (findCheckerboardCorners(gray, larger, detector, more) &&
-															  isCheckerboardGrid(gray, larger, more, contrast));
+				info.part_of_larger = info.part_of_larger ||
+									  (findCheckerboardCorners(gray, larger, detector, more) &&
+									   isCheckerboardGrid(gray, larger, more, saddleContrast(gray, pattern, corners)));
 			break;
 		}
 	return info;
