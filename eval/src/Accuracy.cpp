@@ -1,5 +1,6 @@
 #include "omnirange_eval/Accuracy.h"
 
+#include <omnirange/core/ScanFusion.h>
 #include <omnirange/io/RawlogProcessor.h>
 
 #include <algorithm>
@@ -31,6 +32,54 @@ void AccuracyStats::add(const RangePair& p)
 	sum_pct += 100.0 * std::abs(d) / p.laser;
 	differences.push_back(d);
 }
+
+namespace
+{
+using mrpt::obs::CObservation2DRangeScan;
+
+/** One moment: an omnicam scan and the scans after it taken within max_dt
+ * of it (the simulator writes TRUTH, BODY, LASER and FUSED after OMNISCAN). */
+struct Moment
+{
+	CObservation2DRangeScan::Ptr omni, laser, fused, truth, body;
+};
+
+/** `laser` seen from the omnicam along the rays of `omni` (laserAlong()): a
+ * return valid at its range, no return invalid at the laser's max range; and
+ * which rays the laser sees. */
+CObservation2DRangeScan laserOnOmniRays(const CObservation2DRangeScan& laser, const CObservation2DRangeScan& omni,
+										std::vector<char>& seen)
+{
+	CObservation2DRangeScan s = omni;
+	s.sensorLabel = laser.sensorLabel;
+	s.setScanHasIntensity(false);
+	const auto along = laserAlong(laser, omni);
+	seen.assign(along.size(), 0);
+	for (std::size_t i = 0; i < along.size(); ++i)
+	{
+		const bool hit = along[i].kind == LaserReading::Kind::Return;
+		seen[i] = along[i].kind != LaserReading::Kind::Unseen;
+		s.setScanRange(i, static_cast<float>(hit ? along[i].range : laser.maxRange));
+		s.setScanRangeValidity(i, hit);
+	}
+	return s;
+}
+
+/** Scores the moment's laser, omnicam and fused scans on the rays the laser sees. */
+void scoreInView(const Moment& m, AccuracyResult& r)
+{
+	if (!m.omni || !m.laser || (!m.truth && !m.body)) return;
+	std::vector<char> seen;
+	const CObservation2DRangeScan laser = laserOnOmniRays(*m.laser, *m.omni, seen);
+	const double reach = m.omni->maxRange;
+	for (const auto& [truth, stats] : {std::pair{m.truth, &r.truth_in_view}, std::pair{m.body, &r.body_in_view}})
+	{
+		if (!truth) continue;
+		for (const CObservation2DRangeScan* scan : std::initializer_list<const CObservation2DRangeScan*>{&laser, m.omni.get(), m.fused.get()})
+			if (scan) (*stats)[scan->sensorLabel].add(*truth, *scan, seen, reach);
+	}
+}
+}  // namespace
 
 double AccuracyStats::excludedFraction() const
 {
@@ -70,7 +119,24 @@ AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions
 		[&](const CObservation2DRangeScan::Ptr& truth, const CObservation2DRangeScan::Ptr& omni) {
 			if (truth_seen++ >= o.first) r.truth.add(*truth, *omni);
 		});
+	// The scans in view, each moment scored when the next omnicam scan begins another.
+	Moment moment;
+	int moments = 0;
+	const auto score = [&] {
+		if (moment.omni && moment.laser && moments++ >= o.first) scoreInView(moment, r);
+	};
+	loop.on<CObservation2DRangeScan>("", [&](const CObservation2DRangeScan::Ptr& scan) {
+		const auto& l = scan->sensorLabel;
+		if (l == o.omni_label) score(), moment = Moment{}, moment.omni = scan;
+		const bool now = moment.omni && std::abs(mrpt::system::timeDifference(moment.omni->timestamp, scan->timestamp)) <= o.max_dt;
+		if (!now) return;
+		if (l == o.laser_label) moment.laser = scan;
+		if (l == o.fused_label) moment.fused = scan;
+		if (l == o.truth_label) moment.truth = scan;
+		if (l == o.body_label) moment.body = scan;
+	});
 	loop.run(progress);
+	score();
 	if (seen == 0) throw std::runtime_error(loop.describeNoPair());
 	if (r.frames == 0)
 		throw std::runtime_error("all " + std::to_string(seen) + " scan pairs of '" + rawlog + "' come before first = " +

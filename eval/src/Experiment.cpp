@@ -50,13 +50,20 @@ Experiment::Experiment(ExperimentConfig config)
 	setFolder(fs::absolute(c_.output).string());
 	r_.has_check_region = c_.hasCheckRegion();
 	// The laser's missing returns are free space; the omnicam's are not (emptyLike()).
-	r_.sensors.resize(2);
+	r_.sensors.resize(c_.fuses() ? 3 : 2);
 	auto& laser = r_.sensors[0];
 	laser.label = kLaserLabel, laser.tag = "laser", laser.map_ini = c_.map_laser_ini, laser.icp_ini = c_.icp_laser_ini;
 	laser.invalid_is_free = true, laser.rbpf_ini = c_.rbpf_laser_ini;
 	auto& omni = r_.sensors[1];
 	omni.label = c_.rangefinder.sensor_label, omni.tag = "omniscan", omni.map_ini = c_.map_omni_ini;
 	omni.icp_ini = c_.icp_omni_ini, omni.invalid_is_free = false, omni.rbpf_ini = c_.rbpf_omni_ini;
+	if (c_.fuses())
+	{
+		// Behind the laser a fused ray is the omnicam's: its missing returns are not free space either.
+		auto& fused = r_.sensors[2];
+		fused.label = kFusedLabel, fused.tag = "fused", fused.map_ini = c_.map_fused_ini;
+		fused.icp_ini = c_.icp_fused_ini, fused.invalid_is_free = false;
+	}
 	// MRPT's programs empty their logOutput_dir first: each run's must be its own folder of the
 	// report, the one its map is read from; another name could be the dataset or the other sensor's.
 	for (const auto& sensor : r_.sensors)
@@ -127,7 +134,7 @@ Metrics Experiment::run()
 	// new data beside an old report.
 	std::vector<std::string> inputs{c_.ini_file,      c_.world,         c_.route,          c_.robot,
 									c_.icp_laser_ini, c_.icp_omni_ini,  c_.map_laser_ini,  c_.map_omni_ini,
-									c_.rbpf_laser_ini, c_.rbpf_omni_ini};
+									c_.rbpf_laser_ini, c_.rbpf_omni_ini, c_.icp_fused_ini, c_.map_fused_ini};
 	inputs.insert(inputs.end(), c_.world_maps.begin(), c_.world_maps.end());
 	StagedFolder staged(fs::absolute(c_.output).string(), kProgram, inputs, force_);
 	const std::string report = staged.target();
@@ -275,6 +282,7 @@ void Experiment::scan()
 	RawlogScanOptions o;
 	o.input = dataset_;
 	o.output = scanned_;
+	if (c_.fuses()) o.fuse_with = kLaserLabel;
 	Progress progress("objects scanned");
 	const auto s = scanRawlog(rf, o, showsProgress() ? &progress : nullptr);
 	r_.omni_hit_fraction = double(s.hits) / std::max<std::size_t>(1, s.rays);

@@ -49,6 +49,10 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 			 [](C& c) -> auto& { return c.rbpf_omni_ini; })
 		.add("map_laser_ini", "file", "observations2map configuration for the laser", [](C& c) -> auto& { return c.map_laser_ini; })
 		.add("map_omni_ini", "file", "observations2map configuration for the omnicam", [](C& c) -> auto& { return c.map_omni_ini; })
+		.add("icp_fused_ini", "file", "icp-slam configuration for the FUSED scan (empty, with map_fused_ini: no FUSED scan)",
+			 [](C& c) -> auto& { return c.icp_fused_ini; })
+		.add("map_fused_ini", "file", "observations2map configuration for the FUSED scan",
+			 [](C& c) -> auto& { return c.map_fused_ini; })
 		.add("check_region", "m", "'x y w d': a box whose marked wall length the report gives", [](C& c) -> auto& { return c.check_region; })
 		.renamed("map_resolution", "remove it: the maps take the resolution of the world's true map");
 	return t;
@@ -84,6 +88,8 @@ void resolvePaths(ExperimentConfig& c, const LayeredIni& layers)
 	resolve(c.output, "output", false);
 	resolve(c.icp_laser_ini, "icp_laser_ini", true), resolve(c.icp_omni_ini, "icp_omni_ini", true);
 	resolve(c.map_laser_ini, "map_laser_ini", true), resolve(c.map_omni_ini, "map_omni_ini", true);
+	if (!c.icp_fused_ini.empty() || !c.map_fused_ini.empty())
+		resolve(c.icp_fused_ini, "icp_fused_ini", true), resolve(c.map_fused_ini, "map_fused_ini", true);
 	if (!c.rbpf_laser_ini.empty()) resolve(c.rbpf_laser_ini, "rbpf_laser_ini", true);
 	if (!c.rbpf_omni_ini.empty()) resolve(c.rbpf_omni_ini, "rbpf_omni_ini", true);
 }
@@ -181,12 +187,13 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 		table().load(c, cfg, "experiment");
 		resolvePaths(c, layers);
 		// What is checked is what the programs get: their inis' bytes, taken first (requireMrptInisAsChecked()).
-		for (const auto* mrpt_ini : {&c.icp_laser_ini, &c.icp_omni_ini, &c.map_laser_ini, &c.map_omni_ini,
-									 &c.rbpf_laser_ini, &c.rbpf_omni_ini})
+		for (const auto* mrpt_ini : {&c.icp_laser_ini, &c.icp_omni_ini, &c.icp_fused_ini, &c.map_laser_ini,
+									 &c.map_omni_ini, &c.map_fused_ini, &c.rbpf_laser_ini, &c.rbpf_omni_ini})
 			if (!mrpt_ini->empty()) c.mrpt_ini_text[*mrpt_ini] = textOf(*mrpt_ini);
 		// Every ini handed to an MRPT program read as strictly as MRPT's own keys allow, before any work.
 		slam::requireStrictIcpSection(c.icp_laser_ini), slam::requireStrictIcpSection(c.icp_omni_ini);
 		slam::requireStrictObservationsToMapIni(c.map_laser_ini), slam::requireStrictObservationsToMapIni(c.map_omni_ini);
+		if (c.fuses()) slam::requireStrictIcpSection(c.icp_fused_ini), slam::requireStrictObservationsToMapIni(c.map_fused_ini);
 		for (const auto* rbpf : {&c.rbpf_laser_ini, &c.rbpf_omni_ini})
 			if (!rbpf->empty()) slam::requireStrictRbpfIni(*rbpf);
 		validate(c);

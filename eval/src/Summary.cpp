@@ -212,6 +212,27 @@ void paths(std::ostream& o, const Summary& s)
 		  << pathCell(r, "guarded_LASER") << " | " << pathCell(r, "guarded_OMNISCAN") << " |\n";
 }
 
+/** The fused scan beside the laser and the omnicam: against what the robot would strike, on the rays the
+ * laser sees (Report.cpp's in-view keys), and its maps and paths beside the laser's. */
+void fused(std::ostream& o, const Summary& s)
+{
+	o << "| world | missed: laser | missed: omnicam | missed: fused | false obstacles: laser | false obstacles: fused | "
+		 "recall, true poses: laser / fused | precision: laser / fused | guarded path ATE: laser / fused | icp-slam "
+		 "path ATE: laser / fused |\n|---|---|---|---|---|---|---|---|---|---|\n";
+	for (const auto& r : s)
+	{
+		const auto pair = [&](const std::string& prefix, const std::string& what, const auto& show) {
+			return show(r.get(prefix + "_LASER_" + what)) + " / " + show(r.get(prefix + "_FUSED_" + what));
+		};
+		const auto ratio = [](double x) { return fmt("%.3f", x); };
+		o << "| " << r.name << " | " << percent(r.get("body_LASER_missed")) << " | "
+		  << percent(r.get("body_OMNISCAN_missed")) << " | " << percent(r.get("body_FUSED_missed")) << " | "
+		  << percent(r.get("body_LASER_false_obstacles")) << " | " << percent(r.get("body_FUSED_false_obstacles"))
+		  << " | " << pair("gt", "recall", ratio) << " | " << pair("gt", "precision", ratio) << " | "
+		  << pair("guarded", "ate_rmse", metres) << " | " << pair("icp", "ate_rmse", metres) << " |\n";
+	}
+}
+
 void clocks(std::ostream& o, const Summary& s)
 {
 	o << "| world | frames | run |\n|---|---|---|\n";
@@ -268,7 +289,7 @@ using TableWriter = void (*)(std::ostream&, const Summary&);
 const std::vector<std::pair<std::string, TableWriter>>& writers()
 {
 	static const std::vector<std::pair<std::string, TableWriter>> w = {
-		{"table2", table2}, {"truth", truth}, {"maps", maps}, {"paths", paths}, {"time", clocks}, {"short", shortTable}};
+		{"table2", table2}, {"truth", truth}, {"maps", maps}, {"paths", paths}, {"fused", fused}, {"time", clocks}, {"short", shortTable}};
 	return w;
 }
 }  // namespace

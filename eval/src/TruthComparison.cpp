@@ -39,7 +39,8 @@ TruthBand TruthStats::all() const
 	return a;
 }
 
-void TruthStats::add(const mrpt::obs::CObservation2DRangeScan& truth, const mrpt::obs::CObservation2DRangeScan& omni)
+void TruthStats::add(const mrpt::obs::CObservation2DRangeScan& truth, const mrpt::obs::CObservation2DRangeScan& omni,
+					 const std::vector<char>& scored, double max_range)
 {
 	const mrpt::poses::CPose3D d = omni.sensorPose - truth.sensorPose;
 	if (d.norm() > 1e-3 || std::abs(d.yaw()) > 1e-3)
@@ -51,17 +52,18 @@ void TruthStats::add(const mrpt::obs::CObservation2DRangeScan& truth, const mrpt
 	const double step = truth.aperture / (S - 1);
 	for (int i = 0; i < n; ++i)
 	{
+		if (!scored.empty() && !scored[i]) continue;
 		const double bearing = -0.5 * omni.aperture + i * omni.aperture / (n - 1);
 		const int k = ((static_cast<int>(std::lround((bearing + 0.5 * truth.aperture) / step)) % S) + S) % S;
 		const bool unsure = rayIsUnsure(omni, i);
 		const bool hit = omni.getScanRangeValidity(i) && !unsure;
 		const double range = omni.getScanRange(i);
 		const double true_d = truth.getScanRange(k);
-		if (!truth.getScanRangeValidity(k) || true_d > omni.maxRange)
+		if (!truth.getScanRangeValidity(k) || true_d > max_range)
 		{
 			++open_rays;
 			open_unsure += unsure;
-			false_obstacles += hit && range < omni.maxRange - 0.05 ? 1 : 0;
+			false_obstacles += hit && range < max_range - 0.05 ? 1 : 0;
 			continue;
 		}
 		TruthBand& b = *std::find_if(bands.begin(), bands.end(), [&](const TruthBand& x) { return true_d < x.hi; });
@@ -75,7 +77,7 @@ void TruthStats::add(const mrpt::obs::CObservation2DRangeScan& truth, const mrpt
 		}
 		if (!hit)
 		{
-			const bool no_hit = range >= omni.maxRange - 1e-4;
+			const bool no_hit = range >= max_range - 1e-4;
 			++(no_hit ? b.missed_no_hit : b.missed_rejected);
 			++b.false_free;
 			continue;

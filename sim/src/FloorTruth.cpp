@@ -26,11 +26,28 @@ double hiddenFloorDistance(const World& world, const std::vector<SolidCrossing>&
 	return first;
 }
 
-mrpt::obs::CObservation2DRangeScan::Ptr floorTruth(const World& world, const OmnicamSimParams& cam,
-												   const Pose2& robot, int rays, double max_range)
+double struckDistance(const World& world, const std::vector<SolidCrossing>& crossings, double strike_height)
+{
+	double first = std::numeric_limits<double>::infinity();
+	for (const auto& c : crossings)
+	{
+		const Solid& s = world.solids[c.solid];
+		if (s.z0 < strike_height && s.z1 > 0) first = std::min(first, c.crossing.t_in);
+	}
+	return first;
+}
+
+namespace
+{
+/** A scan labelled `label` from the omnicam's foot, ray i at scanlineBearing(i, rays),
+ * each ray `distance(crossings)` [m] over the solids it crosses within `max_range`. */
+template <class Distance>
+mrpt::obs::CObservation2DRangeScan::Ptr truthScan(const char* label, const World& world, const OmnicamSimParams& cam,
+												  const Pose2& robot, int rays, double max_range,
+												  const Distance& distance)
 {
 	auto obs = mrpt::obs::CObservation2DRangeScan::Create();
-	obs->sensorLabel = kTruthLabel;
+	obs->sensorLabel = label;
 	obs->sensorPose = cam.pose;
 	obs->aperture = static_cast<float>(scanAperture(rays));
 	obs->rightToLeft = true;
@@ -39,20 +56,33 @@ mrpt::obs::CObservation2DRangeScan::Ptr floorTruth(const World& world, const Omn
 	obs->resizeScan(rays);
 	const double c = std::cos(robot.yaw), s = std::sin(robot.yaw);
 	const Vec2 foot{robot.x + c * cam.pose.x() - s * cam.pose.y(), robot.y + s * cam.pose.x() + c * cam.pose.y()};
-	const double h = cam.camera.h;
-	// A solid hides nothing nearer than its entry, so nothing beyond max_range matters.
-	const double reach = max_range;
 	std::vector<SolidCrossing> crossings;
 	for (int i = 0; i < rays; ++i)
 	{
 		const double a = robot.yaw + cam.pose.yaw() + scanlineBearing(i, rays);
-		world.castRay(foot, {std::cos(a), std::sin(a)}, reach, crossings);
-		const double d = hiddenFloorDistance(world, crossings, h);
+		// A solid hides or stops nothing nearer than its entry, so nothing beyond max_range matters.
+		world.castRay(foot, {std::cos(a), std::sin(a)}, max_range, crossings);
+		const double d = distance(crossings);
 		const bool valid = d <= max_range;
 		obs->setScanRange(i, static_cast<float>(valid ? d : max_range));
 		obs->setScanRangeValidity(i, valid);
 	}
 	return obs;
+}
+}  // namespace
+
+mrpt::obs::CObservation2DRangeScan::Ptr floorTruth(const World& world, const OmnicamSimParams& cam,
+												   const Pose2& robot, int rays, double max_range)
+{
+	return truthScan(kTruthLabel, world, cam, robot, rays, max_range,
+					 [&](const auto& crossings) { return hiddenFloorDistance(world, crossings, cam.camera.h); });
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr bodyTruth(const World& world, const OmnicamSimParams& cam, const Pose2& robot,
+												  int rays, double max_range, double strike_height)
+{
+	return truthScan(kBodyLabel, world, cam, robot, rays, max_range,
+					 [&](const auto& crossings) { return struckDistance(world, crossings, strike_height); });
 }
 
 }  // namespace omnirange::sim

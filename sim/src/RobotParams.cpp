@@ -72,6 +72,8 @@ const OptionsTable<RobotBodyParams>& RobotBodyParams::table()
 		.add("width", "m", "the body's width", [](P& p) -> auto& { return p.width; })
 		.add("height", "m", "top of the body", [](P& p) -> auto& { return p.height; })
 		.add("clearance", "m", "nearest a route may pass a solid", [](P& p) -> auto& { return p.clearance; })
+		.add("strike_height", "m", "the robot's full height: a solid with a part below it is struck (BODY)",
+			 [](P& p) -> auto& { return p.strike_height; })
 		.add("own_shadow", "bool", "the body casts the sun's shadow and darkens the floor at its foot",
 			 [](P& p) -> auto& { return p.own_shadow; })
 		.add("seed", "-", "all randomness derives from it", [](P& p) -> auto& { return p.seed; })
@@ -153,6 +155,7 @@ void RobotParams::validate() const
 			"[robot] the body's size must be within (0, 10] m");
 	require(r.height < o.camera.h, "[robot] the body must be lower than the omnicam's h");
 	require(r.clearance >= 0 && r.clearance <= 10, "[robot] clearance must be within [0, 10] m");
+	require(r.strike_height > 0 && r.strike_height <= 100, "[robot] strike_height must be within (0, 100] m");
 }
 
 }  // namespace omnirange::sim

@@ -127,7 +127,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	useThreads(o.threads);
 	const OmniRenderer renderer(in.world, robot);
 
-	// The frames: ODOMETRY, GT, OMNICAM, TRUTH, LASER at each pose.
+	// The frames: ODOMETRY, GT, OMNICAM, TRUTH, BODY, LASER at each pose.
 	RawlogWriter out(o.output, kProgram);
 	if (o.force) out.replaceAnyImagesFolder();
 	OdometrySimulator odometry(robot.odometry, robot.robot.seed * 31u + 1u);
@@ -146,6 +146,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 			odometry.step(pose), groundTruth(pose),
 			omnicamImage(cam, out, renderer.render(pose, robot.robot.seed * 1000003ull + k, static_cast<int>(k)), name.str()),
 			floorTruth(in.world, cam, pose, cam.truth_rays, cam.truth_max_range),
+			bodyTruth(in.world, cam, pose, cam.truth_rays, cam.truth_max_range, robot.robot.strike_height),
 			simulateLaser(in.world, robot.laser, pose, laser_rng)};
 		for (const auto& obs : frame) obs->timestamp = stamp, out.write(*obs);
 		if (progress) progress(static_cast<int>(k + 1), static_cast<int>(in.poses.size()));

@@ -284,8 +284,8 @@ GuardedIcpResult runGuardedIcp(const std::string& rawlog, const std::string& sca
 	});
 	loop.on<CObservation2DRangeScan>(scan_label, [&](const CObservation2DRangeScan::Ptr& scan) {
 		// An unsure ray (written as an obstacle for a navigator) is neither a wall to match nor free floor to
-		// clear. Only the omnicam's scans carry confidence: a laser's intensity is its return's strength.
-		if (scan->sensorLabel == kOmniscanLabel) invalidateUnsureRays(*scan);
+		// clear. Only the omnicam's and the fused scans carry confidence: a laser's intensity is its return's strength.
+		if (scan->sensorLabel == kOmniscanLabel || scan->sensorLabel == kFusedLabel) invalidateUnsureRays(*scan);
 		matcher.onScan(scan);
 	});
 	loop.run();

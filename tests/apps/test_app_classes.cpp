@@ -14,6 +14,8 @@
 #include <omnirange/config/LayeredIni.h>
 
 #include <omnirange/core/ColourModel.h>
+#include <omnirange/core/ScanFusion.h>
+#include <omnirange/io/RawlogProcessor.h>
 #include <omnirange/io/RawlogReader.h>
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/config/Temporaries.h>
@@ -893,4 +895,67 @@ TEST(AppClasses, ARimDiscPastTheImageOrFarFromRoundIsRefusedUnlessAccepted)
 	const std::string warned = testing::internal::GetCapturedStderr();
 	EXPECT_NE(warned.find("warning: the disc found"), std::string::npos) << warned;
 	EXPECT_NE(readText(o.save_to).find("cx = "), std::string::npos);
+}
+
+TEST(AppClasses, AFusedScanFollowsItsLaserAndIsNeverFartherThanIt)
+{
+	const std::string dir = workDir("fused");
+	ScanApp::Options s = scanOf(dir, kSample);
+	s.scan.fuse_with = kLaserLabel;
+	const RawlogScanSummary scanned = ScanApp(s).run();
+	EXPECT_EQ(scanned.fused, 20u);  // every image of the sample has its laser scan
+
+	// In the file: each FUSED scan right after the LASER scan of its moment, after the image's OMNISCAN.
+	RawlogProcessor loop(s.scan.output);
+	mrpt::obs::CObservation2DRangeScan::Ptr laser, omni;
+	std::string previous;
+	int fused = 0, from_omnicam = 0, checked = 0;
+	loop.on<mrpt::obs::CObservation2DRangeScan>("", [&](const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
+		if (scan->sensorLabel == kLaserLabel) laser = scan;
+		if (scan->sensorLabel == kOmniscanLabel) omni = scan;
+		if (scan->sensorLabel == kFusedLabel)
+		{
+			++fused;
+			EXPECT_EQ(previous, kLaserLabel);
+			ASSERT_TRUE(laser && omni);
+			EXPECT_EQ(scan->timestamp, omni->timestamp);
+			const auto along = laserAlong(*laser, *omni);
+			for (std::size_t i = 0; i < along.size(); ++i)
+			{
+				if (along[i].kind != LaserReading::Kind::Return) continue;
+				// Never past the laser's return; where it is nearer, the omnicam's sure hit.
+				ASSERT_TRUE(scan->getScanRangeValidity(i));
+				EXPECT_LE(scan->getScanRange(i), along[i].range + 1e-4);
+				if (scan->getScanIntensity(i) == static_cast<int>(FusedSource::Omnicam))
+				{
+					++from_omnicam;
+					EXPECT_FLOAT_EQ(scan->getScanRange(i), omni->getScanRange(i));
+				}
+				++checked;
+			}
+		}
+		previous = scan->sensorLabel;
+	});
+	loop.run();
+	EXPECT_EQ(fused, 20);
+	EXPECT_GT(checked, 20 * 100);
+	EXPECT_GT(from_omnicam, 0);  // the factory's cabinet body is above the laser's plane
+
+	// A label the rawlog does not hold: one line naming it, no output.
+	fs::remove(s.scan.output);
+	s.scan.fuse_with = "NOSUCH";
+	EXPECT_THROW(
+		{
+			try
+			{
+				ScanApp(s).run();
+			}
+			catch (const std::runtime_error& e)
+			{
+				EXPECT_NE(std::string(e.what()).find("NOSUCH"), std::string::npos) << e.what();
+				throw;
+			}
+		},
+		std::runtime_error);
+	EXPECT_FALSE(fs::exists(s.scan.output));
 }

@@ -17,7 +17,10 @@ namespace
 /** An ini file in the test's temporary folder, removed when it goes. */
 struct TempIni
 {
-	explicit TempIni(const std::string& text) : path(testing::TempDir() + "omnirange_icp_keys.ini")
+	// One file per test: ctest runs each test as its own process, two at a time.
+	explicit TempIni(const std::string& text)
+		: path(testing::TempDir() + "omnirange_icp_keys_" +
+			   testing::UnitTest::GetInstance()->current_test_info()->name() + ".ini")
 	{
 		std::ofstream(path) << text;
 	}
@@ -94,7 +97,7 @@ TEST(IcpSlamIni, TheIcpSectionIsReadStrictlyNamingFileSectionAndKey)
 								  "onlyUniqueRobust = maybe", "ICP_algorithm = 3 classic", "maxIteration = 80"})
 	{
 		const std::string why = refusal("[ICP]\n" + bad + "\n");
-		EXPECT_NE(why.find("omnirange_icp_keys.ini"), std::string::npos) << bad << ": " << why;
+		EXPECT_NE(why.find("omnirange_icp_keys_"), std::string::npos) << bad << ": " << why;
 		EXPECT_NE(why.find("[ICP] " + bad.substr(0, bad.find(' '))), std::string::npos) << bad << ": " << why;
 	}
 	EXPECT_NE(refusal("[ICP]\nmaxIterations = 80\nmaxIterations = 90\n").find("repeats"), std::string::npos);
@@ -142,7 +145,7 @@ TEST(IcpSlamIni, TheMapSectionsAreHeldToTheKeysMrptReadsAsItReadsThem)
 	{
 		const std::string why = refusal(maps + text);
 		EXPECT_NE(why.find(expected), std::string::npos) << text << ": " << why;
-		EXPECT_NE(why.find("omnirange_icp_keys.ini"), std::string::npos) << why;
+		EXPECT_NE(why.find("omnirange_icp_keys_"), std::string::npos) << why;
 	}
 	EXPECT_NE(refusal("[MappingApplication]\npointsMap_count = 1000000000\n").find("within [0, 16]"), std::string::npos);
 	// icp-slam empties its logOutput_dir first: only a plain name, made where it runs.

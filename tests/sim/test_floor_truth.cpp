@@ -75,3 +75,48 @@ TEST(FloorTruth, AFloatingBodyHidesTheFloorFromWhereTheSightLineGrazesIt)
 									  "omnirange-world 1\nbox x=1.5 y=0 w=1.0 d=1.0 z0=1.2 z1=1.8 material=cabinet_grey\n");
 	EXPECT_FALSE(floorTruth(loadWorld(high), cam, {0, 0, 0}, 360, 10.0)->getScanRangeValidity(rayAt(0)));
 }
+
+TEST(BodyTruth, AFloatingBodyIsStruckAtItsFaceNotWhereTheFloorHides)
+{
+	// The cabinet body of the test above (z 0.30 to 1.80 m, face 1.0 m ahead):
+	// the floor truth reads 1.4754 m, the robot strikes the face at 1.0 m.
+	const auto path = test::writeFile("float.world",
+									  "omnirange-world 1\n"
+									  "box x=1.5 y=0 w=1.0 d=1.0 z0=0.30 z1=1.8 material=cabinet_grey\n");
+	const World w = loadWorld(path);
+	OmnicamSimParams cam;
+	const auto body = bodyTruth(w, cam, {0, 0, 0}, 360, 10.0, 1.0);
+	EXPECT_EQ(body->sensorLabel, "BODY");
+	const int ahead = rayAt(0);
+	const double c = std::cos(omnirange::scanlineBearing(ahead, 360));
+	ASSERT_TRUE(body->getScanRangeValidity(ahead));
+	EXPECT_NEAR(body->getScanRange(ahead), 1.0 / c, 1e-4);
+	EXPECT_NEAR(floorTruth(w, cam, {0, 0, 0}, 360, 10.0)->getScanRange(ahead), 1.4754 / c, 1e-4);
+	// A robot 0.25 m tall passes under it: nothing struck ahead within 10 m.
+	EXPECT_FALSE(bodyTruth(w, cam, {0, 0, 0}, 360, 10.0, 0.25)->getScanRangeValidity(ahead));
+}
+
+TEST(BodyTruth, ARackWithAGapIsStruckAtItsLowestBoard)
+{
+	// A rack 1.0 m ahead: a board from z 0.05 to 0.10 m, a gap past the laser's
+	// plane (0.30 m), a board from 0.60 to 0.65 m; a wall 3.0 m ahead. The body
+	// truth is the rack's face; the floor truth where the sight line grazes the
+	// low board's underside, 1.0 * 0.931 / (0.931 - 0.05) = 1.0568 m.
+	const auto path = test::writeFile("rack.world",
+									  "omnirange-world 1\n"
+									  "box x=1.2 y=0 w=0.4 d=1.0 z0=0.05 z1=0.10 material=cabinet_grey\n"
+									  "box x=1.2 y=0 w=0.4 d=1.0 z0=0.60 z1=0.65 material=cabinet_grey\n"
+									  "box x=3.1 y=0 w=0.2 d=4.0 z1=2.0 material=cabinet_grey\n");
+	const World w = loadWorld(path);
+	OmnicamSimParams cam;
+	const int ahead = rayAt(0);
+	const double c = std::cos(omnirange::scanlineBearing(ahead, 360));
+	EXPECT_NEAR(bodyTruth(w, cam, {0, 0, 0}, 360, 10.0, 1.0)->getScanRange(ahead), 1.0 / c, 1e-4);
+	EXPECT_NEAR(floorTruth(w, cam, {0, 0, 0}, 360, 10.0)->getScanRange(ahead), 1.0568 / c, 1e-4);
+	// Only the board above the strike height is no longer struck: the wall is.
+	const auto upper = test::writeFile("upper.world",
+									   "omnirange-world 1\n"
+									   "box x=1.2 y=0 w=0.4 d=1.0 z0=1.10 z1=1.15 material=cabinet_grey\n"
+									   "box x=3.1 y=0 w=0.2 d=4.0 z1=2.0 material=cabinet_grey\n");
+	EXPECT_NEAR(bodyTruth(loadWorld(upper), cam, {0, 0, 0}, 360, 10.0, 1.0)->getScanRange(ahead), 3.0 / c, 1e-4);
+}

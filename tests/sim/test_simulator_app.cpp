@@ -46,14 +46,14 @@ TEST(SimulatorApp, RawlogPassesRawlogEditInfo)
 	EXPECT_TRUE(fs::exists(test::tempDir() + "/factory10_truemap.gridmap.gz"));
 
 	const std::string info = run("rawlog-edit --info -i '" + out + "'");
-	for (const std::string label : {"OMNICAM", "LASER", "ODOMETRY", "GT", "TRUTH"})
+	for (const std::string label : {"OMNICAM", "LASER", "ODOMETRY", "GT", "TRUTH", "BODY"})
 	{
 		const std::regex row(label + R"(\s*/\s*(\d+)\s*/)");
 		std::smatch m;
 		ASSERT_TRUE(std::regex_search(info, m, row)) << info;
 		EXPECT_EQ(m[1], "10") << label;
 	}
-	EXPECT_NE(info.find("Overall number of objects         : 50"), std::string::npos) << info;
+	EXPECT_NE(info.find("Overall number of objects         : 60"), std::string::npos) << info;
 	EXPECT_NE(info.find("Observations format               : Yes"), std::string::npos) << info;
 }
 

@@ -34,10 +34,17 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	TCLAP::SwitchArg skip_bad("", "skip-bad-images",
 							  "skip a missing, cut or undecodable image (no scan for it; each named, and counted) instead of stopping",
 							  cmd);
+	TCLAP::ValueArg<std::string> fuse("", "fuse-with",
+									  "label of a laser on the same robot: also write a FUSED scan, the nearer of the laser "
+									  "and a sure omnicam hit per ray (docs/users.md)",
+									  false, s.fuse_with, "LABEL", cmd);
+	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between an image and the laser scan fused with it [s]",
+								   false, s.max_dt, "S", cmd);
 	ForceArg force(cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	s.force = force.value();
+	s.fuse_with = fuse.getValue(), s.max_dt = max_dt.getValue();
 	o.ini = ini.getValue(), o.section = section.getValue(), o.histogram = hist.getValue();
 	s.input = in.getValue(), s.output = requiredPath(out), s.omni_label = omni.getValue();
 	s.threads = threads.getValue(), s.decode_only = decode_only.getValue();
@@ -78,6 +85,10 @@ RawlogScanSummary ScanApp::run()
 					  "outliers; %zu objects -> %s",
 					  s.images, share(s.hits), share(s.no_hit), share(s.unsure), share(s.too_close), share(s.outliers),
 					  s.objects, o_.scan.output.c_str());
+	if (!o_.scan.fuse_with.empty())
+		MRPT_LOG_INFO_FMT("%zu %s scans (%s with %s); %zu images had no %s scan within %g s", s.fused, kFusedLabel,
+						  rf.params().sensor_label.c_str(), o_.scan.fuse_with.c_str(), s.images - s.fused,
+						  o_.scan.fuse_with.c_str(), o_.scan.max_dt);
 	for (const auto& w : scanWarnings(s, o_.histogram, colours.trainedOnColour())) MRPT_LOG_WARN(w);
 	return s;
 }

@@ -8,6 +8,7 @@
 #include <omnirange/train/LaserComparison.h>
 #include <omnirange_eval/TruthComparison.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,8 @@ struct AccuracyOptions
 	std::string laser_label{kLaserLabel};
 	std::string omni_label{kOmniscanLabel};
 	std::string truth_label{kTruthLabel};  ///< the simulator's true boundary, where the rawlog has it
+	std::string body_label{kBodyLabel};  ///< what the robot would strike, where the rawlog has it
+	std::string fused_label{kFusedLabel};  ///< the fused scan, where the rawlog has it
 	double max_difference{kDefaultMaxDifference};  ///< [m] pairs differing by more are excluded
 	double max_dt{kDefaultMaxPairingDt};  ///< [s] largest time between paired scans
 	/** Score only from this laser/omnicam pair on (0: all): the frames after
@@ -65,6 +68,10 @@ struct AccuracyResult
 	int frames{0};  ///< scan pairs compared
 	std::string csv;  ///< every ray pair, with a header line
 	TruthStats truth;  ///< against the truth, when the rawlog holds it (truth.frames > 0)
+	/** The laser, the omnicam and the fused scan (by sensor label) scored on
+	 * the same rays, those the laser sees, out to the omnicam's max range:
+	 * against the truth, and against what the robot would strike (BODY). */
+	std::map<std::string, TruthStats> truth_in_view, body_in_view;
 	/** The Table II-style table, in Markdown. */
 	std::string table(double max_difference) const;
 };

@@ -24,6 +24,10 @@ struct ExperimentConfig
 	/** rbpf-slam configurations (a particle filter); empty: rbpf-slam is not run for that sensor. */
 	std::string rbpf_laser_ini, rbpf_omni_ini;
 	std::string map_laser_ini, map_omni_ini;  ///< observations2map configurations
+	/** The FUSED scan's icp-slam and observations2map configurations; both
+	 * empty: no FUSED scan is made (core/ScanFusion.h). */
+	std::string icp_fused_ini, map_fused_ini;
+	bool fuses() const { return !icp_fused_ini.empty(); }
 	int max_frames{0};  ///< 0: the whole route
 	int train_every{3};  ///< train on every N-th image/scan pair
 	/** Train on the route's first part, this fraction of its frames, and

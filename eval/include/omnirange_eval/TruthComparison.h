@@ -60,7 +60,15 @@ struct TruthStats
 	std::size_t allUnsure() const { return all().unsure + open_unsure; }
 	/** Adds one omnicam scan against the truth scan of the same moment. Throws
 	 * std::invalid_argument if the two were not taken from the same pose on the robot. */
-	void add(const mrpt::obs::CObservation2DRangeScan& truth, const mrpt::obs::CObservation2DRangeScan& omni);
+	void add(const mrpt::obs::CObservation2DRangeScan& truth, const mrpt::obs::CObservation2DRangeScan& omni)
+	{
+		add(truth, omni, {}, omni.maxRange);
+	}
+	/** Adds the rays i of `scan` with scored[i] (all when empty), scored out
+	 * to `max_range` [m] whatever the scan's own reach: two sensors compared on
+	 * the same rays and the same range. */
+	void add(const mrpt::obs::CObservation2DRangeScan& truth, const mrpt::obs::CObservation2DRangeScan& scan,
+			 const std::vector<char>& scored, double max_range);
 	/** The Markdown table: overall, then a row per band. */
 	std::string table() const;
 };

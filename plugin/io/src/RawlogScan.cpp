@@ -3,6 +3,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include "omnirange/core/FloorAdaptation.h"
+#include "omnirange/core/ScanFusion.h"
 #include "omnirange/config/AtomicWrite.h"
 #include "omnirange/config/Threads.h"
 #include "omnirange/io/ObservationImage.h"
@@ -29,6 +30,10 @@ struct Batch
 	std::vector<std::size_t> after;  // per image: the index of the object that holds it
 	std::vector<mrpt::obs::CObservationImage::Ptr> images;
 	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;  // one per image
+	// Fusing only, per image: the laser scan taken with it (or none) and the
+	// object after which the FUSED scan goes (the later of the two).
+	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> lasers, fused;
+	std::vector<std::size_t> fused_after;
 	std::vector<std::array<int, 5>> statuses;  // per image: its rays by RayStatus (Hit, NoHit, TooClose, Outlier, Unsure)
 	std::vector<char> grey;  // per image: its three channels equal
 	std::vector<std::exception_ptr> errors;
@@ -50,6 +55,8 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 {
 	const int n = static_cast<int>(b.images.size());
 	b.scans.assign(n, nullptr);
+	b.fused.assign(n, nullptr);
+	b.lasers.resize(n), b.fused_after.resize(n);
 	b.statuses.assign(n, {0, 0, 0, 0, 0});
 	b.errors.assign(n, nullptr);
 	b.grey.assign(n, 0);
@@ -59,6 +66,7 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 		const RangeScan scan = rf.process(decoded[k], classifier);
 		for (const Ray& ray : scan.rays) ++b.statuses[k][static_cast<std::size_t>(ray.status)];
 		b.scans[k] = rf.toObservation(scan, b.images[k]->timestamp);
+		if (b.lasers[k]) b.fused[k] = fuseScans(*b.scans[k], *b.lasers[k]);
 	};
 	cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& r) {
 		for (int k = r.start; k < r.end; ++k) try
@@ -110,7 +118,7 @@ std::string messageOf(const std::exception_ptr& error)
  * sensory frame, or right after the image in the observations-only format. */
 void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanSummary& sum)
 {
-	std::size_t k = 0;
+	std::size_t k = 0, f = 0;
 	for (std::size_t i = 0; i < b.objects.size(); ++i)
 	{
 		std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
@@ -134,6 +142,9 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 			sum.grey_images += b.grey[k];
 			scans.push_back(b.scans[k]);
 		}
+		// A fused scan's laser is never read before its image's: f never passes k.
+		for (; f < k && (!b.lasers[f] || b.fused_after[f] <= i); ++f)
+			if (b.fused[f]) scans.push_back(b.fused[f]), ++sum.fused;
 		if (!writer) continue;
 		if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(b.objects[i]))
 		{
@@ -144,6 +155,14 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 		writer->write(*b.objects[i]);
 		for (const auto& scan : scans) writer->write(*scan);
 	}
+}
+
+/** Whether `obj` is an image labelled `label`, or a sensory frame holding one. */
+bool holdsImage(const mrpt::serialization::CSerializable::Ptr& obj, const std::string& label)
+{
+	if (auto image = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(obj)) return image->sensorLabel == label;
+	auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj);
+	return sf && sf->getObservationBySensorLabel(label) != nullptr;
 }
 }  // namespace
 
@@ -172,15 +191,32 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 		writeBatch(b, writer ? &*writer : nullptr, o.skip_bad_images, sum);
 		b = Batch{};
 	};
-	// A batch ends only between objects: a sensory frame may hold several images.
+	const bool fusing = !o.fuse_with.empty() && !o.decode_only;
+	// A batch ends only between objects: a sensory frame may hold several
+	// images. When fusing, only before an image: the last one's laser scan
+	// may still come, and once the next image is read it cannot (ObservationPairer).
 	loop.onObject([&](const mrpt::serialization::CSerializable::Ptr& obj) {
-		if (b.images.size() >= batch_images) flush();
+		if (b.images.size() >= batch_images && (!fusing || holdsImage(obj, o.omni_label))) flush();
 		b.objects.push_back(obj);
 	});
 	loop.on<mrpt::obs::CObservationImage>(o.omni_label, [&](const mrpt::obs::CObservationImage::Ptr& image) {
 		b.after.push_back(b.objects.size() - 1);
 		b.images.push_back(image);
+		b.lasers.emplace_back(), b.fused_after.emplace_back();
 	});
+	if (fusing)
+	{
+		loop.onPair<mrpt::obs::CObservationImage, mrpt::obs::CObservation2DRangeScan>(
+			o.omni_label, o.fuse_with, o.max_dt, [&](const auto& image, const auto& laser) {
+				// The image is the batch's last: a later one would have replaced it in the pairer.
+				if (b.images.empty() || b.images.back() != image) return;
+				b.lasers.back() = laser, b.fused_after.back() = b.objects.size() - 1;
+			});
+		loop.on<mrpt::obs::CObservation2DRangeScan>(kFusedLabel, [&](const auto&) {
+			throw std::runtime_error("'" + o.input + "' already holds " + std::string(kFusedLabel) +
+									 " scans: fuse the rawlog they were made from");
+		});
+	}
 	// Scans of this label already in the input would sit beside the new ones, two per frame.
 	loop.on<mrpt::obs::CObservation2DRangeScan>(rf.params().sensor_label, [&](const auto&) {
 		throw std::runtime_error("'" + o.input + "' already holds " + rf.params().sensor_label +
@@ -194,6 +230,8 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 								 sum.skipped_reasons.front());
 	if (sum.images == 0)
 		throw std::runtime_error("no " + o.omni_label + " image in '" + o.input + "' (" + loop.describeLabels() + ")");
+	if (fusing && sum.fused == 0)
+		throw std::runtime_error("nothing to fuse: " + loop.describeNoPair());
 	if (writer)
 	{
 		writer->commit();

@@ -1,6 +1,7 @@
 #include "omnirange/train/LaserComparison.h"
 
 #include <omnirange/core/Rangefinder.h>
+#include <omnirange/core/ScanFusion.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -26,19 +27,13 @@ std::vector<RangePair> pairScans(const mrpt::obs::CObservation2DRangeScan& laser
 	std::vector<RangePair> out;
 	const int S = static_cast<int>(omni.getScanSize());
 	if (S < 2) return out;
-	const double step = omni.aperture / (S - 1);
-	// The laser's pose seen from the omnicam (both on the robot).
-	const mrpt::poses::CPose3D rel = laser.sensorPose - omni.sensorPose;
 	for (std::size_t i = 0; i < laser.getScanSize(); ++i)
 	{
 		if (!laser.getScanRangeValidity(i)) continue;  // no return: nothing to compare
-		const double r = laser.getScanRange(i), a = laser.getScanAngle(i);
-		mrpt::math::TPoint3D p;
-		rel.composePoint({r * std::cos(a), r * std::sin(a), 0}, p);
-		const double bearing = std::atan2(p.y, p.x);
-		int k = static_cast<int>(std::lround((bearing + 0.5 * omni.aperture) / step));
-		k = ((k % S) + S) % S;  // the scan closes the circle
-		RangePair rp{static_cast<int>(i), k, bearing, std::hypot(p.x, p.y), omni.getScanRange(k), PairStatus::Compared};
+		// The laser's ray seen from the omnicam (both on the robot).
+		const RaySeenFrom seen = laserRaySeenFrom(laser, i, omni.sensorPose);
+		const int k = nearestRay(omni, seen.bearing);
+		RangePair rp{static_cast<int>(i), k, seen.bearing, seen.range, omni.getScanRange(k), PairStatus::Compared};
 		const bool no_hit = !omni.getScanRangeValidity(k) && rp.omni >= omni.maxRange - 1e-4;
 		if (rp.laser > omni.maxRange)
 			rp.status = PairStatus::LaserBeyondMaxRange;

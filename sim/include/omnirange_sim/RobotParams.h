@@ -66,6 +66,9 @@ struct RobotBodyParams
 	double width{0.38};  ///< [m] (default 0.38)
 	double height{0.25};  ///< [m] top of the body (default 0.25)
 	double clearance{0.30};  ///< [m] nearest a route may pass a solid (default 0.30)
+	/// [m] the robot's full height with its camera: a solid with any part below it is struck
+	/// (the BODY truth; default 1.0)
+	double strike_height{1.0};
 	bool own_shadow{false};  ///< the body shades the floor around it as a solid does (default false)
 	std::uint32_t seed{1};  ///< all randomness derives from it (default 1)
 

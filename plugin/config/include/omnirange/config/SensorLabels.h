@@ -13,5 +13,10 @@ inline constexpr const char* kOmniscanLabel = "OMNISCAN";  ///< CObservation2DRa
 /** CObservation2DRangeScan from the simulator: where the floor really ends
  * along each scanline bearing (sim/FloorTruth.h). */
 inline constexpr const char* kTruthLabel = "TRUTH";
+/** CObservation2DRangeScan from the simulator: the nearest solid below the
+ * robot's strike height along each bearing, what the robot would hit. */
+inline constexpr const char* kBodyLabel = "BODY";
+/** CObservation2DRangeScan: the laser and the omnicam in one scan (core/ScanFusion.h). */
+inline constexpr const char* kFusedLabel = "FUSED";
 
 }  // namespace omnirange

@@ -6,6 +6,7 @@
 
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/config/SensorLabels.h>
+#include <omnirange/io/ObservationPairer.h>
 
 #include <string>
 #include <vector>
@@ -31,6 +32,11 @@ struct RawlogScanOptions
 	bool skip_bad_images{false};
 	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; OutputRule.h). */
 	bool force{false};
+	/** Label of a laser on the same robot: each scan is also fused with the
+	 * laser scan taken within max_dt of its image into a FUSED scan
+	 * (core/ScanFusion.h), written after the later of the two. Empty: none. */
+	std::string fuse_with;
+	double max_dt{kDefaultMaxPairingDt};  ///< [s] largest time between an image and the laser scan fused with it
 };
 
 struct RawlogScanSummary
@@ -43,6 +49,7 @@ struct RawlogScanSummary
 	std::size_t no_hit{0}, too_close{0}, outliers{0};
 	std::size_t unsure{0};  ///< of the rays, those free only up to their confident extent (valid with unsure_rays = obstacle)
 	std::size_t skipped{0};  ///< bad images skipped (skip_bad_images only)
+	std::size_t fused{0};  ///< FUSED scans written (fuse_with only; an image without a laser scan has none)
 	std::size_t images_copied{0};  ///< the input's image files copied, not hard-linked (another file system)
 	std::size_t grey_images{0};  ///< of the images scanned, those whose three channels are equal (a grey camera's)
 	std::vector<std::string> skipped_reasons;  ///< why, one line per skipped image
