@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The full suite: every experiment of ini/suite.txt (the paper's worlds, the
 # hard ones, the held-out rooms, the hyperbolic mirror), as many at once as
-# the machine has cores; about 13 minutes on 2 cores after set-up. Writes
+# the machine has cores; about 15 minutes on 2 cores after set-up. Writes
 # results/suite-summary.md and .csv. With --docs it then copies the CSV to
 # docs/results/suite.csv and makes the tables of docs/results.md and
 # README.md again from it.

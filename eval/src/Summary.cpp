@@ -279,7 +279,7 @@ void shortTable(std::ostream& o, const Summary& s)
 			for (const auto* r : rows) v.push_back(r->get(key));
 			return median(v);
 		};
-		o << "| " << rows.size() << " held-out rooms, median | " << metres(med("accuracy_mean_abs")) << " | "
+		o << "| held-out rooms, median | " << metres(med("accuracy_mean_abs")) << " | "
 		  << percent(med("truth_within_5cm")) << " | " << percent(med("truth_false_free")) << " | "
 		  << percent(med("truth_unsure")) << " | " << metres(med("guarded_OMNISCAN_ate_rmse")) << " |\n";
 	}
