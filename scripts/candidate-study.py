@@ -27,7 +27,7 @@ import math
 import statistics
 import sys
 
-KEY = ["colour_space", "bins", "light_change", "threshold", "obstacle_ratio", "histogram_smoothing", "N", "K",
+KEY = ["colour_space", "bins", "threshold", "obstacle_ratio", "histogram_smoothing", "N", "K",
        "boundary_model", "step_threshold", "step_sign"]
 
 

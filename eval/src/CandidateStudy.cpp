@@ -47,7 +47,7 @@ std::vector<Frame> framesAfter(const RangefinderParams& start, const CandidateSt
 
 bool sameCandidate(const LearnedCandidate& a, const LearnedCandidate& b)
 {
-	return a.space == b.space && a.bins == b.bins && a.light_change == b.light_change && a.threshold == b.threshold &&
+	return a.space == b.space && a.bins == b.bins && a.threshold == b.threshold &&
 		   a.obstacle_ratio == b.obstacle_ratio && a.smoothing == b.smoothing && a.N == b.N && a.K == b.K &&
 		   a.boundary == b.boundary && a.step_threshold == b.step_threshold && a.step_sign == b.step_sign;
 }

@@ -197,7 +197,7 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 		for (const auto* rbpf : {&c.rbpf_laser_ini, &c.rbpf_omni_ini})
 			if (!rbpf->empty()) slam::requireStrictRbpfIni(*rbpf);
 		validate(c);
-		c.rangefinder.loadFromConfig(cfg, "rangefinder");
+		c.rangefinder.loadFromConfig(cfg, kRangefinderSection);
 		checkSimulatorInputs(c);
 	}
 	catch (const std::invalid_argument& e)

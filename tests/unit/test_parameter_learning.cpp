@@ -39,7 +39,7 @@ RawlogTrainingOptions samplePairs(int until)
 LearningOptions oneCandidate()
 {
 	LearningOptions lo;
-	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.light_changes = {0.0}, lo.thresholds = {0.05};
+	lo.spaces = {ColourSpace::RGB}, lo.bins = {13}, lo.thresholds = {0.05};
 	lo.obstacle_ratios = {0.0}, lo.smoothings = {0.0}, lo.Ns = {20}, lo.Ks = {2};
 	lo.boundary_models = {BoundaryModel::Subpixel}, lo.step_thresholds.clear();
 	return lo;
@@ -54,55 +54,34 @@ std::uint32_t occupiedBins(const ColourHistogram& h)
 }
 }  // namespace
 
-TEST(ParameterLearning, TheLaterSplitHoldsAsideTheLastQuarterOfThePairs)
-{
-	LearningOptions lo;
-	lo.split = ValidationSplit::Later;
-	const auto roles = splitPairs(lo, 12);
-	ASSERT_EQ(roles.size(), 12u);
-	for (int s = 0; s < 12; ++s) EXPECT_EQ(roles[s], s >= 9 ? PairRole::Validate : PairRole::Train) << s;
-}
-
-TEST(ParameterLearning, TheInterleavedSplitHoldsAsideEveryFourthPair)
+TEST(ParameterLearning, EveryFourthPairIsHeldAside)
 {
 	const auto roles = splitPairs(LearningOptions{}, 12);  // the default
+	ASSERT_EQ(roles.size(), 12u);
 	for (int s = 0; s < 12; ++s) EXPECT_EQ(roles[s], s % 4 == 3 ? PairRole::Validate : PairRole::Train) << s;
 }
 
 TEST(ParameterLearning, HeldAsidePairsAreThinnedEvenlyToTheCap)
 {
 	LearningOptions lo;
-	lo.split = ValidationSplit::Later;
 	lo.max_validation_pairs = 10;
 	const auto roles = splitPairs(lo, 100);
-	// 25 held aside (75..99), 10 of them kept: 75, 77, 80, 82, 85, ..., 97.
+	// 25 held aside (3, 7, ..., 99), 10 of them kept: the 0th, 2nd, 5th, 7th, 10th, ... of them.
 	EXPECT_EQ(countOf(roles, PairRole::Train), 75);
 	EXPECT_EQ(countOf(roles, PairRole::Validate), 10);
 	EXPECT_EQ(countOf(roles, PairRole::Unused), 15);
-	for (int s : {75, 77, 80, 82, 85, 87, 90, 92, 95, 97}) EXPECT_EQ(roles[s], PairRole::Validate) << s;
+	for (int j : {0, 2, 5, 7, 10, 12, 15, 17, 20, 22}) EXPECT_EQ(roles[4 * j + 3], PairRole::Validate) << j;
 	EXPECT_EQ(roles[99], PairRole::Unused);
-}
-
-TEST(ParameterLearning, OnePairIsNoSplit)
-{
-	LearningOptions lo;
-	lo.split = ValidationSplit::Later;
-	EXPECT_EQ(countOf(splitPairs(lo, 1), PairRole::Validate), 0);
-	EXPECT_EQ(countOf(splitPairs(lo, 2), PairRole::Validate), 1);
-	EXPECT_THROW(validationSplitFromString("random"), std::invalid_argument);
 }
 
 TEST(ParameterLearning, EnoughToLearnMeansSomePairsTrainAndSomeValidate)
 {
-	// The check an experiment makes before its simulation, for every split.
-	LearningOptions lo;  // interleaved: every fourth pair validates
+	// The check an experiment makes before its simulation.
+	LearningOptions lo;  // every fourth pair validates
 	EXPECT_FALSE(enoughToLearn(lo, 3));
 	EXPECT_TRUE(enoughToLearn(lo, 4));
-	lo.split = ValidationSplit::Later;
+	lo.hold_out_every = 2;
 	EXPECT_FALSE(enoughToLearn(lo, 1));
-	EXPECT_TRUE(enoughToLearn(lo, 2));
-	lo.split = ValidationSplit::Blocks;
-	EXPECT_FALSE(enoughToLearn(lo, 1));  // one block: nothing to train the others' histograms
 	EXPECT_TRUE(enoughToLearn(lo, 2));
 }
 
@@ -123,58 +102,16 @@ TEST(HistogramTraining, ALightChangeCountsEveryPixelAsSeenAndInTwoOtherLights)
 	EXPECT_THROW(trainFromRawlog(rp, o), std::invalid_argument);
 }
 
-TEST(ParameterLearning, BlocksAreRunsOfConsecutivePairsAndEveryPairTrains)
-{
-	LearningOptions lo;
-	lo.split = ValidationSplit::Blocks;
-	const std::vector<int> block = blockOfPairs(lo, 10);  // 4 blocks by default
-	EXPECT_EQ(block, (std::vector<int>{0, 0, 0, 1, 1, 2, 2, 2, 3, 3}));
-	lo.blocks = 20;  // never more blocks than pairs
-	EXPECT_EQ(blockOfPairs(lo, 3), (std::vector<int>{0, 1, 2}));
-	EXPECT_EQ(blockOfPairs(LearningOptions{}, 5), (std::vector<int>(5, 0)));  // the default split has one
-
-	lo.max_validation_pairs = 5;
-	const auto roles = splitPairs(lo, 10);
-	EXPECT_EQ(countOf(roles, PairRole::Validate), 5);  // evenly: 0, 2, 4, 6, 8
-	EXPECT_EQ(countOf(roles, PairRole::Unused), 0);  // the rest still train the other blocks
-	for (int s : {0, 2, 4, 6, 8}) EXPECT_EQ(roles[s], PairRole::Validate) << s;
-	EXPECT_EQ(validationSplitFromString("blocks"), ValidationSplit::Blocks);
-	EXPECT_THROW(validationSplitFromString("folds"), std::invalid_argument);
-}
-
-TEST(ParameterLearning, WithBlocksEveryPairIsScoredAndTheHistogramHasThemAll)
-{
-	const RangefinderParams rp;
-	RawlogTrainingOptions o = samplePairs(12);
-	LearningOptions lo = oneCandidate();  // only the split matters here
-	lo.split = ValidationSplit::Blocks, lo.blocks = 3;
-	const LearningResult r = learnParameters(rp, o, lo);
-	EXPECT_EQ(r.training_pairs, 12);
-	EXPECT_EQ(r.validation_pairs, 12);
-	EXPECT_EQ(r.refit_pairs, 12);
-	EXPECT_EQ(r.model.floor.total(), trainFromRawlog(rp, o).model.floor.total());
-	EXPECT_NE(learnedIni(r).find("3 blocks of consecutive pairs"), std::string::npos);
-	lo.blocks = 1;  // a block would be scored on its own counts
-	EXPECT_THROW(learnParameters(rp, o, lo), std::invalid_argument);
-}
-
 TEST(ParameterLearning, TheWinnersHistogramIsTrainedAgainOnEveryPair)
 {
 	const RangefinderParams rp;
 	RawlogTrainingOptions o = samplePairs(12);
-	LearningOptions lo = oneCandidate();  // only the split and the refit matter here
-	lo.split = ValidationSplit::Later;  // train on pairs 0..8, validate on 9..11
-	const LearningResult refitted = learnParameters(rp, o, lo);
-	EXPECT_EQ(refitted.training_pairs, 9);
-	EXPECT_EQ(refitted.validation_pairs, 3);
-	EXPECT_EQ(refitted.refit_pairs, 12);
-	EXPECT_EQ(refitted.model.floor.total(), trainFromRawlog(rp, o).model.floor.total());
-
-	lo.refit = false;
-	const LearningResult first = learnParameters(rp, o, lo);
-	EXPECT_EQ(first.refit_pairs, 0);
-	o.until = 9;  // the nine pairs before the held-aside ones
-	EXPECT_EQ(first.model.floor.total(), trainFromRawlog(rp, o).model.floor.total());
+	const LearningResult r = learnParameters(rp, o, oneCandidate());  // pairs 3, 7 and 11 validate
+	EXPECT_EQ(r.training_pairs, 9);
+	EXPECT_EQ(r.validation_pairs, 3);
+	EXPECT_EQ(r.refit_pairs, 12);
+	EXPECT_EQ(r.model.floor.total(), trainFromRawlog(rp, o).model.floor.total());
+	EXPECT_NE(learnedIni(r).find("trained again on all 12 pairs"), std::string::npos);
 }
 
 TEST(ParameterLearning, TheBrightnessStepIsTriedOnTheGridsBestAndWinsOnlyByItsScore)
@@ -342,7 +279,7 @@ TEST(ParameterLearning, TheIniNamesTheNearestRivalsAndHowFarBehindThey)
 	EXPECT_EQ(rivals[1].threshold, 0.02);
 	EXPECT_EQ(rivals[2].threshold, 0.04);
 	const std::string ini = learnedIni(r);
-	const auto line = ini.find(";   +0.5 mm: colour space RGB, 13 bins, light change 0, threshold 0.01,");
+	const auto line = ini.find(";   +0.5 mm: colour space RGB, 13 bins, threshold 0.01,");
 	ASSERT_NE(line, std::string::npos) << ini;
 	EXPECT_LT(ini.find("; The nearest rivals"), line);
 	EXPECT_NE(ini.find(";   +3.0 mm: "), std::string::npos) << ini;

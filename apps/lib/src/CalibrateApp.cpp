@@ -69,8 +69,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 					   "--checkerboard, the camera's intrinsics (Mei's unified model) from checkerboard images",
 					   ' ', "0.1");
 	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with omnicam images and laser scans", false, "", "RAWLOG", cmd);
-	TCLAP::ValueArg<std::string> ini("c", "config", "ini with the rangefinder's parameters (a first guess of R or alpha)", false, "", "INI", cmd);
-	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
+	RangefinderIniArgs ini(cmd, "the rangefinder's parameters (a first guess of R or alpha)", false);
 	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", false, "", "FILE", cmd);
 	TCLAP::MultiArg<std::string> boards("", "checkerboard", "an image of a checkerboard (repeat for each; >= 3 found needed)", false, "IMAGE", cmd);
 	TCLAP::ValueArg<std::string> save("", "save-to", "write what was found (orientation, then R or alpha and boundary_offset; cx, cy with --rim; the camera model with --checkerboard or --ocamcalib) into this ini's section, keeping the rest of the file", false, "", "INI", cmd);
@@ -92,7 +91,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
 	o.accept = accept.getValue();
-	o.ini = ini.getValue(), o.section = section.getValue(), o.histogram = hist.getValue();
+	o.ini = ini.ini.getValue(), o.section = ini.section.getValue(), o.histogram = hist.getValue();
 	c.input = in.getValue(), c.omni_label = omni.getValue(), c.laser_label = laser.getValue();
 	c.max_dt = max_dt.getValue(), c.every = every.getValue();
 	o.verbosity = verbosity.level();

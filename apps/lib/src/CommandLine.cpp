@@ -44,6 +44,12 @@ VerbosityArgs::VerbosityArgs(TCLAP::CmdLine& cmd)
 {
 }
 
+RangefinderIniArgs::RangefinderIniArgs(TCLAP::CmdLine& cmd, const std::string& what, bool required)
+	: ini("c", "config", "ini with " + what, required, "", "INI", cmd),
+	  section("s", "section", "its section with the rangefinder's keys", false, kRangefinderSection, "NAME", cmd)
+{
+}
+
 ForceArg::ForceArg(TCLAP::CmdLine& cmd)
 	: force("", "force",
 			"replace an existing output (file or folder) that this program did not write; never an input", cmd)

@@ -41,8 +41,7 @@ ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> odometry("", "odometry", "odometry: CSV of TIME, x, y, phi rows [s, m, m, rad]", false, "", "CSV", cmd);
 	TCLAP::ValueArg<std::string> carmen("", "carmen", "a CARMEN log (FLASER, RAWLASER1 or ROBOTLASER1, and ODOM) instead of --laser and --odometry", false, "", "LOG", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "rawlog to write (images go to NAME_Images beside it)", true, "", "RAWLOG", cmd);
-	TCLAP::ValueArg<std::string> ini("c", "config", "ini whose [rangefinder] pose_* keys give the omnicam's pose on the robot", false, "", "INI", cmd);
-	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
+	RangefinderIniArgs ini(cmd, "[rangefinder] pose_* keys giving the omnicam's pose on the robot", false);
 	TCLAP::ValueArg<std::string> omni_pose("", "omni-pose", "the omnicam's pose on the robot, 'x y z yaw_deg' [m, deg] (instead of -c)", false, "", "POSE", cmd);
 	TCLAP::ValueArg<std::string> laser_pose("", "laser-pose", "the laser's pose on the robot, 'x y z yaw_deg' [m, deg]", false, "0 0 0 0", "POSE", cmd);
 	TCLAP::ValueArg<double> fov("", "laser-fov-deg", "the laser's field of view, first ray to last [deg]", false, 180, "DEG", cmd);
@@ -59,7 +58,7 @@ ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
 	i.omni_label = omni_label.getValue(), i.laser_label = laser_label.getValue();
 	i.laser_pose = poseFromText("--laser-pose", laser_pose.getValue());
 	i.laser_fov = fov.getValue() * M_PI / 180, i.laser_max_range = max_range.getValue();
-	o.ini = ini.getValue(), o.section = section.getValue();
+	o.ini = ini.ini.getValue(), o.section = ini.section.getValue();
 	if (!omni_pose.getValue().empty())
 	{
 		if (!o.ini.empty()) throw std::invalid_argument("give the omnicam's pose by -c INI or by --omni-pose, not both");

@@ -25,8 +25,7 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	TCLAP::CmdLine cmd("omnirange-scan: add an omnicam range scan after every omnicam image of a rawlog", ' ', "0.1");
 	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with omnicam images", true, "", "RAWLOG", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "rawlog to write (all input observations plus the scans)", true, "", "RAWLOG", cmd);
-	TCLAP::ValueArg<std::string> ini("c", "config", "ini with the rangefinder's parameters (docs/parameters.md)", true, "", "INI", cmd);
-	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
+	RangefinderIniArgs ini(cmd, "the rangefinder's parameters (docs/parameters.md)", true);
 	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", true, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images to scan", false, s.omni_label, "LABEL", cmd);
 	TCLAP::ValueArg<int> threads("j", "threads", "threads decoding and scanning images", false, s.threads, "N", cmd);
@@ -45,7 +44,7 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	parseArgs(cmd, argc, argv);
 	s.force = force.value();
 	s.fuse_with = fuse.getValue(), s.max_dt = max_dt.getValue();
-	o.ini = ini.getValue(), o.section = section.getValue(), o.histogram = hist.getValue();
+	o.ini = ini.ini.getValue(), o.section = ini.section.getValue(), o.histogram = hist.getValue();
 	s.input = in.getValue(), s.output = requiredPath(out), s.omni_label = omni.getValue();
 	s.threads = threads.getValue(), s.decode_only = decode_only.getValue();
 	s.skip_bad_images = skip_bad.getValue();

@@ -19,8 +19,7 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::CmdLine cmd("omnirange-train: learn the floor's colours from a rawlog with an omnicam and a laser", ' ', "0.1");
 	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with omnicam images and laser scans", true, "", "RAWLOG", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "histogram file to write", true, "", "FILE", cmd);
-	TCLAP::ValueArg<std::string> ini("c", "config", "ini with the camera (docs/parameters.md)", true, "", "INI", cmd);
-	TCLAP::ValueArg<std::string> section("s", "section", "ini section", false, o.section, "NAME", cmd);
+	RangefinderIniArgs ini(cmd, "the camera (docs/parameters.md)", true);
 	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images", false, t.omni_label, "LABEL", cmd);
 	TCLAP::ValueArg<std::string> laser("", "laser-label", "label of the laser scans", false, t.laser_label, "LABEL", cmd);
 	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between an image and its scan [s]", false, t.max_dt, "S", cmd);
@@ -37,14 +36,11 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> candidates("", "learn-candidates", "with --learn: also write every candidate tried and its score to this CSV", false, "", "CSV", cmd);
 	TCLAP::ValueArg<double> light("", "light-change", "also count every floor pixel as seen in light this much dimmer and brighter (gains 1-A, 1+A); 0: as seen", false, t.training.light_change, "A", cmd);
 	TCLAP::SwitchArg near_disc("", "near-disc-only", "count only the floor nearer than every laser hit, all round: a first histogram for omnirange-calibrate that does not depend on the ini's orientation", cmd);
-	TCLAP::ValueArg<std::string> validate_on("", "learn-validate-on", "with --learn: hold aside every fourth selected pair ('interleaved') or the 'later' quarter of them, or score each of 4 'blocks' of consecutive pairs with histograms trained on the other three", false, "interleaved", "SPLIT", cmd);
-	TCLAP::ValueArg<int> hold_out("", "learn-hold-out-every", "with --learn (interleaved): hold aside every N-th selected pair to score the candidates on", false, o.learning.hold_out_every, "N", cmd);
-	TCLAP::ValueArg<double> learn_light("", "learn-light-change", "with --learn: show the held-aside images this much dimmer and brighter, and try histograms trained with that light change; 0: neither", false, o.learning.validation_light_change, "V", cmd);
 	TCLAP::ValueArg<std::string> figures("", "figures", "write PREFIX_birdseye.png, PREFIX_laser.png, PREFIX_fused.png (paper Fig. 1)", false, "", "PREFIX", cmd);
 	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.output = requiredPath(out), o.ini = ini.getValue(), o.section = section.getValue();
+	o.output = requiredPath(out), o.ini = ini.ini.getValue(), o.section = ini.section.getValue();
 	o.learn_ini = optionalPath(learn), o.learn_candidates = optionalPath(candidates);
 	if (!o.learn_candidates.empty() && o.learn_ini.empty())
 		throw std::invalid_argument("--learn-candidates needs --learn");
@@ -54,15 +50,10 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	t.training.bins = bins.getValue(), t.training.space = colourSpaceFromString(space.getValue());
 	t.training.laser_margin = margin.getValue(), t.training.obstacle_band = band.getValue();
 	t.training.light_change = light.getValue(), t.training.near_disc_only = near_disc.getValue();
-	o.learning.split = validationSplitFromString(validate_on.getValue());
-	o.learning.hold_out_every = hold_out.getValue(), o.learning.chroma_on_tie = !no_chroma_tie.getValue();
-	o.learning.validation_light_change = learn_light.getValue();
-	o.learning.light_changes = {0.0};
-	if (learn_light.getValue() > 0) o.learning.light_changes.push_back(learn_light.getValue());
+	o.learning.chroma_on_tie = !no_chroma_tie.getValue();
 	t.figures_prefix = prefixPath(figures, "fig"), t.figures_frame = figures_frame.getValue();
 	// Options that only mean something beside another: given without it, say so rather than ignore them.
-	for (const TCLAP::Arg* a : std::initializer_list<const TCLAP::Arg*>{&no_chroma_tie, &validate_on, &hold_out, &learn_light})
-		if (a->isSet() && o.learn_ini.empty()) throw std::invalid_argument("--" + a->getName() + " needs --learn");
+	if (no_chroma_tie.isSet() && o.learn_ini.empty()) throw std::invalid_argument("--learn-no-chroma-on-tie needs --learn");
 	if (figures_frame.isSet() && t.figures_prefix.empty()) throw std::invalid_argument("--figures-frame needs --figures");
 	if (max_frames.isSet() && !o.learn_ini.empty())
 		throw std::invalid_argument("-n is not read by --learn, which splits every pair of the range it is given: "

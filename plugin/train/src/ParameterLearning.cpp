@@ -27,7 +27,6 @@ struct Validation
 {
 	cv::Mat image;
 	CObservation2DRangeScan::Ptr laser;
-	int block{0};  ///< scored with the histograms trained without this block
 };
 
 using Trainers = std::map<HistogramKey, HistogramTrainer>;
@@ -45,28 +44,21 @@ int countSelected(const RawlogTrainingOptions& o)
 	return selected;
 }
 
-/** The k-th held-aside image in the light it is shown in: as seen, dimmer, brighter, in turn. */
-cv::Mat inChangedLight(const cv::Mat& bgr, int k, double v)
-{
-	return withGain(bgr, k % 3 == 0 ? 1.0 : k % 3 == 1 ? 1.0 - v : 1.0 + v);
-}
-
 /** The candidate's error on the held-aside pairs, and per pair in
  * `frame_errors` (see LearnedCandidate::score). */
-double score(const std::vector<Rangefinder>& rf, const std::vector<Validation>& validation,
-			 std::vector<double>& frame_errors, std::vector<double>& frame_shortfalls)
+double score(const Rangefinder& rf, const std::vector<Validation>& validation, std::vector<double>& frame_errors,
+			 std::vector<double>& frame_shortfalls)
 {
 	double sum = 0;
 	std::size_t n = 0;
-	const double max_range = rf[0].params().scanner.max_range, cap = kDefaultMaxDifference;
+	const double max_range = rf.params().scanner.max_range, cap = kDefaultMaxDifference;
 	frame_errors.clear();
 	frame_shortfalls.clear();
 	for (const auto& v : validation)
 	{
 		double frame = 0, short_of_laser = 0;
 		std::size_t rays = 0;
-		const Rangefinder& by = rf[v.block];
-		const auto omni = by.toObservation(by.process(v.image), v.laser->timestamp);
+		const auto omni = rf.toObservation(rf.process(v.image), v.laser->timestamp);
 		for (const RangePair& p : pairScans(*v.laser, *omni, cap))
 		{
 			const RayError e = learningError(p, omni->getScanRangeValidity(p.omni_ray), max_range);
@@ -91,13 +83,12 @@ constexpr double kSureRatios[] = {0, 1, 2, 4, 8};
  * laser's returns within max range seen through (read free more than
  * kSeenThroughMargin past them), the share of rays unsure, and the cost that
  * weighs the two (kFalseFreeCost). */
-DoubtChoice scoreDoubt(const std::vector<Rangefinder>& rf, const std::vector<Validation>& validation, double& cost)
+DoubtChoice scoreDoubt(const Rangefinder& rf, const std::vector<Validation>& validation, double& cost)
 {
 	std::size_t rays = 0, in_range = 0, false_free = 0, unsure = 0;
 	for (const auto& v : validation)
 	{
-		const Rangefinder& by = rf[v.block];
-		const auto omni = by.toObservation(by.process(v.image), v.laser->timestamp);
+		const auto omni = rf.toObservation(rf.process(v.image), v.laser->timestamp);
 		for (const RangePair& p : pairScans(*v.laser, *omni))
 		{
 			++rays;
@@ -141,12 +132,8 @@ namespace
 void validateLearning(const LearningOptions& lo)
 {
 	require(lo.hold_out_every >= 2, "hold_out_every must be >= 2");
-	require(lo.validation_fraction > 0 && lo.validation_fraction < 1, "validation_fraction must be within (0, 1)");
-	require(lo.validation_light_change >= 0 && lo.validation_light_change < 1,
-			"validation_light_change must be within [0, 1)");
 	require(lo.max_validation_pairs >= 1, "max_validation_pairs must be >= 1");
 	for (const double step : lo.step_thresholds) require(step > 0 && step <= 5, "step_thresholds must be within (0, 5]");
-	require(lo.split != ValidationSplit::Blocks || lo.blocks >= 2, "blocks must be >= 2");
 }
 
 /** `v` sorted, each value once: each is scored once. */
@@ -158,57 +145,57 @@ std::vector<T> sortedOnce(std::vector<T> v)
 	return v;
 }
 
-/** What learning's stages share: the inputs, the histograms' counts per
- * block of training pairs, the validation pairs, and the result so far. */
+/** What learning's stages share: the inputs, the histograms' counts on the
+ * training pairs and on the held-aside ones, the held-aside images, and the
+ * result so far. */
 struct Learning
 {
 	const RangefinderParams& start;
 	const RawlogTrainingOptions& o;
 	const LearningOptions& lo;
 	OmniCameraModel camera;
-	bool by_block;
-	int selected, n_blocks;
+	int selected;
 	Trainers trainers, aside;  // one per histogram key; `aside`: the held-aside pairs' counts (refit)
-	std::vector<Trainers> blocks;
 	std::vector<Validation> validation;
-	std::map<HistogramKey, std::vector<ColourModel>> models;  // per block
+	std::map<HistogramKey, ColourModel> models;  // trained on the training pairs
 	int set_aside{0};
 	LearningResult r;
 
 	Learning(const RangefinderParams& s, const RawlogTrainingOptions& opts, const LearningOptions& l)
-		: start(s), o(opts), lo(l), camera(s.camera), by_block(l.split == ValidationSplit::Blocks), selected(countSelected(opts)),
-		  n_blocks(by_block ? std::max(1, std::min(l.blocks, selected)) : 1)
+		: start(s), o(opts), lo(l), camera(s.camera), selected(countSelected(opts))
 	{
 	}
 
-	/** A trainer per colour space, bin count and light change; one set per
-	 * block (one block but with the Blocks split). */
+	/** A trainer per colour space and bin count, for the training pairs and for the held-aside ones. */
 	void makeTrainers()
 	{
 		std::vector<int> bins = lo.bins.empty() ? std::vector<int>{o.training.bins, std::min(64, 2 * o.training.bins)} : lo.bins;
 		const double base_range = floorBeyondBase(camera, start.scanner);
 		for (const ColourSpace space : lo.spaces)
 			for (const int b : sortedOnce(bins))
-				for (const double light : lo.light_changes)
-				{
-					TrainingParams tp = o.training;
-					tp.space = space, tp.bins = b, tp.light_change = light;
-					const HistogramTrainer t(camera, start.sensor_pose, base_range, start.scanner.max_range, tp);
-					trainers.emplace(HistogramKey{space, b, light}, t);
-					if (lo.refit && !by_block) aside.emplace(HistogramKey{space, b, light}, t);
-				}
-		blocks.assign(n_blocks, trainers);
+			{
+				TrainingParams tp = o.training;
+				tp.space = space, tp.bins = b, tp.light_change = 0;
+				const HistogramTrainer t(camera, start.sensor_pose, base_range, start.scanner.max_range, tp);
+				trainers.emplace(HistogramKey{space, b}, t);
+				aside.emplace(HistogramKey{space, b}, t);
+			}
 	}
 
-	/** Counts every selected pair into the trainers of its block (with the
-	 * Blocks split; `blocks` holds one set of trainers per block) or into the
-	 * training set (blocks[0]) and, when held aside, into `aside` (for the
-	 * refit); keeps the images to validate on. */
+	/** Pair k of those selected: counted into the trainers of its role, and kept to score on when it validates. */
+	void add(PairRole role, const CObservationImage& image, const CObservation2DRangeScan::Ptr& laser)
+	{
+		const cv::Mat bgr = decodeImage(image, start.camera);
+		if (role == PairRole::Validate) validation.push_back({bgr, laser});
+		Trainers& into = role == PairRole::Train ? trainers : aside;
+		for (auto& [key, trainer] : into) trainer.add(bgr, *laser);
+		++(role == PairRole::Train ? r.training_pairs : set_aside);
+	}
+
+	/** Every selected pair into the training or the held-aside counts (add()). */
 	void collect(Progress* progress)
 	{
 		const std::vector<PairRole> roles = splitPairs(lo, selected);
-		const std::vector<int> block = blockOfPairs(lo, selected);
-		int& trained = r.training_pairs;
 		RawlogProcessor loop(o.input);
 		int pairs = 0, s = 0;
 		loop.onPair<CObservationImage, CObservation2DRangeScan>(
@@ -216,72 +203,29 @@ struct Learning
 			[&](const CObservationImage::Ptr& image, const CObservation2DRangeScan::Ptr& laser) {
 				if (!o.selects(pairs++)) return;
 				const int k = s++;
-				if (k >= static_cast<int>(roles.size())) return;
-				const bool refit = lo.refit && !aside.empty();
-				if (roles[k] == PairRole::Unused && !refit) return;
-				const cv::Mat bgr = decodeImage(*image, start.camera);
-				if (roles[k] == PairRole::Validate)
-					validation.push_back(
-						{inChangedLight(bgr, static_cast<int>(validation.size()), lo.validation_light_change), laser, block[k]});
-				if (by_block || roles[k] == PairRole::Train)
-				{
-					for (auto& [key, trainer] : blocks[block[k]]) trainer.add(bgr, *laser);
-					++trained;
-				}
-				else if (refit)
-				{
-					for (auto& [key, trainer] : aside) trainer.add(bgr, *laser);
-					++set_aside;
-				}
+				if (k < static_cast<int>(roles.size())) add(roles[k], *image, laser);
 			});
 		loop.run(progress);
 		if (pairs == 0) throw std::runtime_error(loop.describeNoPair() + "; learning needs both");
-		if (trained == 0 || validation.empty() || (by_block && blocks.size() < 2))
+		if (r.training_pairs == 0 || validation.empty())
 			throw std::runtime_error("'" + o.input + "' has too few image/laser pairs to learn from (" +
 									 std::to_string(s) + " selected; some are needed to train and some to validate)");
 	}
 
-	/** What the validation pairs are, as the learned ini says it. */
-	std::string describeValidation() const
-	{
-		char light[100] = ", as seen";
-		if (lo.validation_light_change > 0)
-			std::snprintf(light, sizeof light, ", a third each as seen, dimmer and brighter by %g", lo.validation_light_change);
-		return (by_block ? std::to_string(n_blocks) + " blocks of consecutive pairs, each scored with histograms trained on the others"
-				: lo.split == ValidationSplit::Later ? std::string("the later part of the stretch")
-													 : std::string("interleaved")) +
-			   light;
-	}
-
-	/** Each key's histogram without block `skipped` (with one block: the training pairs'; -1: every block). */
-	ColourModel without(const HistogramKey& key, int skipped) const
-	{
-		std::optional<HistogramTrainer> t;
-		for (int b = 0; b < n_blocks; ++b)
-			if (b != skipped || n_blocks == 1)
-			{
-				if (!t) t = blocks[b].at(key);
-				else t->merge(blocks[b].at(key));
-			}
-		return t->model();
-	}
-
-	/** One rangefinder per block's histograms, scored on the classifier's own
-	 * ranges: the wall fit smooths over the very errors learning must see. */
-	std::vector<Rangefinder> rangefinders(const RangefinderParams& p, const HistogramKey& key, bool doubt = false) const
+	/** A rangefinder with the training pairs' histogram of `key`, scored on the
+	 * classifier's own ranges: the wall fit smooths over the very errors learning must see. */
+	Rangefinder rangefinder(const RangefinderParams& p, const HistogramKey& key, bool doubt = false) const
 	{
 		RangefinderParams scored = p;
 		scored.walls.wall_fit = false;
 		if (!doubt) scored.scanner.sure_run = 0;  // the doubt is learned for the winner (learnDoubt)
-		std::vector<Rangefinder> rf;
-		for (const ColourModel& m : models.at(key)) rf.emplace_back(scored, m);
-		return rf;
+		return Rangefinder(scored, models.at(key));
 	}
 
 	void consider(LearnedCandidate c)
 	{
 		const RangefinderParams p = withCandidate(start, c);
-		c.score = score(rangefinders(p, histogramKeyOf(c)), validation, c.frame_errors, c.frame_shortfalls);
+		c.score = score(rangefinder(p, histogramKeyOf(c)), validation, c.frame_errors, c.frame_shortfalls);
 		r.tried.push_back(c);
 		if (c.score < r.best.score) r.best = c, r.params = p;
 	}
@@ -311,25 +255,23 @@ struct Learning
 		return fit;
 	}
 
-	/** Every candidate of the grid, each histogram key's once its every block has floor counts. */
+	/** Every candidate of the grid, for each histogram key whose training pairs have floor counts. */
 	void scoreGrid()
 	{
 		const auto fit = windows();
 		r.best.score = 1e9;
-		for (const auto& [key, unused] : trainers)
+		for (const auto& [key, trainer] : trainers)
 		{
-			std::vector<ColourModel> per_block;
-			for (int b = 0; b < n_blocks; ++b) per_block.push_back(without(key, b));
-			if (std::any_of(per_block.begin(), per_block.end(), [](const ColourModel& m) { return m.floor.empty(); }))
-				continue;
-			models.emplace(key, std::move(per_block));
-			const auto& [space, b, light] = key;
+			ColourModel model = trainer.model();
+			if (model.floor.empty()) continue;
+			models.emplace(key, std::move(model));
+			const auto& [space, b] = key;
 			for (const double theta : lo.thresholds)
 				for (const double ratio : lo.obstacle_ratios)
 					for (const double smoothing : lo.smoothings)
 						for (const auto& [N, K] : fit)
 							for (const BoundaryModel boundary : lo.boundary_models)
-								consider({space, b, light, theta, ratio, smoothing, N, K, boundary, 0.0, StepSign::Either, 0.0, {}, {}});
+								consider({space, b, theta, ratio, smoothing, N, K, boundary, 0.0, StepSign::Either, 0.0, {}, {}});
 		}
 	}
 
@@ -353,28 +295,19 @@ struct Learning
 				}
 	}
 
-	/** The histograms the result runs with: every block's counts (what each
-	 * block's score stood for), or the training pairs' with the held-aside
-	 * pairs' added (refit), or the training pairs' alone. */
+	/** The histograms the result runs with: the training pairs' counts with the held-aside pairs' added. */
 	void refit()
 	{
 		r.training = o.training;
-		r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = r.best.light_change;
-		for (const auto& [key, per_block] : models)
+		r.training.space = r.best.space, r.training.bins = r.best.bins, r.training.light_change = 0;
+		for (const auto& [key, unused] : models)
 		{
-			if (by_block) r.models.emplace(key, without(key, -1));
-			else if (lo.refit)
-			{
-				HistogramTrainer all = blocks[0].at(key);
-				all.merge(aside.at(key));
-				r.models.emplace(key, all.model());
-			}
-			else
-				r.models.emplace(key, per_block[0]);
+			HistogramTrainer all = trainers.at(key);
+			all.merge(aside.at(key));
+			r.models.emplace(key, all.model());
 		}
 		r.model = r.models.at(histogramKeyOf(r.best));
-		if (by_block) r.refit_pairs = r.training_pairs;
-		else if (lo.refit) r.refit_pairs = r.training_pairs + set_aside;
+		r.refit_pairs = r.training_pairs + set_aside;
 	}
 
 	/** The winner's hits on every training pair, with the histogram it will
@@ -390,7 +323,7 @@ struct Learning
 		RangefinderParams with = r.params;
 		with.scanner.edge_bias = r.edge_bias;
 		std::vector<double> frame_errors, frame_shortfalls;
-		r.edge_bias_score = score(rangefinders(with, histogramKeyOf(r.best)), validation, frame_errors, frame_shortfalls);
+		r.edge_bias_score = score(rangefinder(with, histogramKeyOf(r.best)), validation, frame_errors, frame_shortfalls);
 		if (r.edge_bias_score < r.best.score) r.params = with;
 	}
 
@@ -403,7 +336,7 @@ struct Learning
 		double best = 0;
 		RangefinderParams p = r.params;
 		p.sure_floor_share = 1.0, p.sure_obstacle_ratio = 0, p.scanner.sure_run = 0;
-		r.doubt = scoreDoubt(rangefinders(p, histogramKeyOf(r.best), true), validation, best);
+		r.doubt = scoreDoubt(rangefinder(p, histogramKeyOf(r.best), true), validation, best);
 		r.doubt.false_free_without = r.doubt.false_free;
 		const bool feet = r.model.hasObstacles();
 		for (const double ratio : kSureRatios)
@@ -414,7 +347,7 @@ struct Learning
 					// share 1 still doubts a run of non-free pixels shorter than N: a thin or far obstacle.
 					p.sure_floor_share = share, p.sure_obstacle_ratio = ratio, p.scanner.sure_run = run;
 					double cost = 0;
-					DoubtChoice d = scoreDoubt(rangefinders(p, histogramKeyOf(r.best), true), validation, cost);
+					DoubtChoice d = scoreDoubt(rangefinder(p, histogramKeyOf(r.best), true), validation, cost);
 					if (cost >= best) continue;
 					best = cost;
 					d.sure_floor_share = share, d.sure_obstacle_ratio = ratio, d.sure_run = run;
@@ -437,8 +370,6 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 	l.makeTrainers();
 	l.collect(progress);
 	l.r.validation_pairs = static_cast<int>(l.validation.size());
-	l.r.split = lo.split;
-	l.r.validation = l.describeValidation();
 	l.scoreGrid();
 	l.scoreSteps();
 	if (l.r.tried.empty()) throw std::runtime_error("no free-floor pixel was found to train on");
@@ -483,62 +414,28 @@ std::vector<PairRole> splitPairs(const LearningOptions& lo, int selected)
 {
 	std::vector<PairRole> roles(std::max(0, selected), PairRole::Train);
 	std::vector<int> held;
-	if (lo.split == ValidationSplit::Blocks)
-	{
-		for (int s = 0; s < selected; ++s) held.push_back(s);  // every pair, in its block's turn
-	}
-	else if (lo.split == ValidationSplit::Interleaved)
-	{
-		for (int s = lo.hold_out_every - 1; s < selected; s += lo.hold_out_every) held.push_back(s);
-	}
-	else if (selected >= 2)
-	{
-		const int n = std::clamp(static_cast<int>(std::lround(lo.validation_fraction * selected)), 1, selected - 1);
-		for (int s = selected - n; s < selected; ++s) held.push_back(s);
-	}
+	for (int s = lo.hold_out_every - 1; s < selected; s += lo.hold_out_every) held.push_back(s);
 	// Keep at most max_validation_pairs, evenly spread over the held-aside ones.
 	const std::size_t keep = std::min<std::size_t>(held.size(), std::max(1, lo.max_validation_pairs));
 	for (std::size_t i = 0; i < held.size(); ++i) roles[held[i]] = PairRole::Unused;
 	for (std::size_t j = 0; j < keep; ++j) roles[held[j * held.size() / keep]] = PairRole::Validate;
-	if (lo.split == ValidationSplit::Blocks)
-		for (PairRole& role : roles)
-			if (role == PairRole::Unused) role = PairRole::Train;  // trains the other blocks all the same
 	return roles;
-}
-
-std::vector<int> blockOfPairs(const LearningOptions& lo, int selected)
-{
-	std::vector<int> block(std::max(0, selected), 0);
-	if (lo.split != ValidationSplit::Blocks) return block;
-	const int n = std::max(1, std::min(lo.blocks, selected));
-	for (int s = 0; s < selected; ++s) block[s] = static_cast<int>(static_cast<long>(s) * n / selected);
-	return block;
 }
 
 bool enoughToLearn(const LearningOptions& lo, int selected)
 {
 	const std::vector<PairRole> roles = splitPairs(lo, selected);
-	const std::vector<int> block = blockOfPairs(lo, selected);
-	const bool blocks = lo.split != ValidationSplit::Blocks || std::set<int>(block.begin(), block.end()).size() >= 2;
 	return std::count(roles.begin(), roles.end(), PairRole::Validate) > 0 &&
-		   (lo.split == ValidationSplit::Blocks || std::count(roles.begin(), roles.end(), PairRole::Train) > 0) && blocks;
-}
-
-ValidationSplit validationSplitFromString(const std::string& s)
-{
-	if (s == "later") return ValidationSplit::Later;
-	if (s == "interleaved") return ValidationSplit::Interleaved;
-	if (s == "blocks") return ValidationSplit::Blocks;
-	throw std::invalid_argument("validation split '" + s + "' is not 'later', 'interleaved' or 'blocks'");
+		   std::count(roles.begin(), roles.end(), PairRole::Train) > 0;
 }
 
 std::string describe(const LearnedCandidate& c)
 {
 	char s[300];
 	std::snprintf(s, sizeof s,
-				  "colour space %s, %d bins, light change %g, threshold %g, obstacle_ratio %g, smoothing %g, N %d, K %d, "
+				  "colour space %s, %d bins, threshold %g, obstacle_ratio %g, smoothing %g, N %d, K %d, "
 				  "%s boundary, step %g%s",
-				  toString(c.space).c_str(), c.bins, c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K,
+				  toString(c.space).c_str(), c.bins, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K,
 				  toString(c.boundary).c_str(), c.step_threshold,
 				  c.step_threshold > 0 && c.step_sign != StepSign::Either ? (" " + toString(c.step_sign)).c_str() : "");
 	return s;
@@ -599,14 +496,13 @@ std::optional<LearnedCandidate> chromaOnTie(const std::vector<LearnedCandidate>&
 
 std::string candidateColumns()
 {
-	return "colour_space,bins,light_change,threshold,obstacle_ratio,histogram_smoothing,N,K,boundary_model,step_threshold,step_sign";
+	return "colour_space,bins,threshold,obstacle_ratio,histogram_smoothing,N,K,boundary_model,step_threshold,step_sign";
 }
 
 std::string candidateColumns(const LearnedCandidate& c)
 {
 	char row[300];
-	std::snprintf(row, sizeof row, "%s,%d,%g,%g,%g,%g,%d,%d,%s,%g,%s", toString(c.space).c_str(), c.bins,
-				  c.light_change, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K, toString(c.boundary).c_str(),
+	std::snprintf(row, sizeof row, "%s,%d,%g,%g,%g,%d,%d,%s,%g,%s", toString(c.space).c_str(), c.bins, c.threshold, c.obstacle_ratio, c.smoothing, c.N, c.K, toString(c.boundary).c_str(),
 				  c.step_threshold, toString(c.step_sign).c_str());
 	return row;
 }
@@ -676,23 +572,12 @@ std::string poorLearningWarning(const LearningResult& r)
 	return s;
 }
 
-std::string learnedIni(const LearningResult& r, const std::string& section)
+namespace
 {
-	char head[900];
-	const bool by_block = r.split == ValidationSplit::Blocks;
-	const std::string refit = r.refit_pairs > 0 ? "trained again on all " + std::to_string(r.refit_pairs) + " pairs"
-												: "trained on the " + std::to_string(r.training_pairs) + " others";
-	const std::string trained = by_block ? std::to_string(r.training_pairs) + " pairs in all"
-										 : "histograms trained on " + std::to_string(r.training_pairs) + " others";
-	std::snprintf(head, sizeof head,
-				  "%s%zu candidates scored against the laser on %d %s\n"
-				  "; image/laser pairs (%s; %s). The winner:\n"
-				  "; %s;\n"
-				  "; mean error %.4f m. The histogram file written with this ini was made that way (%s);\n"
-				  "; to train one by hand, use the same colour space, bins and light change.\n",
-				  kLearnedIniBegins, r.tried.size(), r.validation_pairs, by_block ? "scored" : "held-aside", r.validation.c_str(),
-				  trained.c_str(), describe(r.best).c_str(), r.best.score, refit.c_str());
-	std::string other_space;
+/** The learned ini's lines on the best candidate of the other colour space, and a tie CHROMA kept. */
+std::string otherSpaceComment(const LearningResult& r)
+{
+	std::string out;
 	if (const auto other = bestInOtherSpace(r))
 	{
 		char line[600];
@@ -702,36 +587,55 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 					  "; later part of the log (docs/users.md): the held-aside frames cannot tell them apart.\n",
 					  describe(*other).c_str(), other->score, 1000 * std::abs(other->score - r.best.score),
 					  other->score >= r.best.score ? "more" : "less");
-		other_space = line;
+		out = line;
 	}
 	if (r.overruled)
-		other_space += "; CHROMA was kept: the lower score above is within the held-aside frames' noise\n"
-					   "; (docs/method.md), and CHROMA holds through changes of light they do not show.\n";
-	if (!r.edge_bias.empty())
-	{
-		char line[400];
-		const bool kept = !r.params.scanner.edge_bias.empty();
-		std::snprintf(line, sizeof line,
-					  "; Edge bias (by the hit's contrast, docs/method.md), learned on every training pair: mean error\n"
-					  "; %.4f m with it on the held-aside pairs; %s.\n",
-					  r.edge_bias_score, kept ? "kept (edge_bias below)" : "not kept, it did not lower the winner's");
-		other_space += line;
-	}
-	other_space += rivalsComment(r);
-	{
-		char line[700];
-		std::snprintf(line, sizeof line,
-					  "; Doubt (docs/method.md): sure_floor_share %g, sure_obstacle_ratio %g, sure_run %d, chosen on the\n"
-					  "; held-aside pairs; there the scan read free more than 25 cm past %.1f %% of the laser's returns\n"
-					  "; within max range (%.1f %% without doubt), with %.1f %% of its rays unsure.\n; %s.\n",
-					  r.doubt.sure_floor_share, r.doubt.sure_obstacle_ratio, r.doubt.sure_run, 100 * r.doubt.false_free,
-					  100 * r.doubt.false_free_without,
-					  100 * r.doubt.unsure, separationLine(r.separation).c_str());
-		other_space += line;
-	}
+		out += "; CHROMA was kept: the lower score above is within the held-aside frames' noise\n"
+			   "; (docs/method.md), and CHROMA holds through changes of light they do not show.\n";
+	return out;
+}
+
+/** The learned ini's lines on the edge bias (none when none was learned). */
+std::string edgeBiasComment(const LearningResult& r)
+{
+	if (r.edge_bias.empty()) return {};
+	char line[400];
+	const bool kept = !r.params.scanner.edge_bias.empty();
+	std::snprintf(line, sizeof line,
+				  "; Edge bias (by the hit's contrast, docs/method.md), learned on every training pair: mean error\n"
+				  "; %.4f m with it on the held-aside pairs; %s.\n",
+				  r.edge_bias_score, kept ? "kept (edge_bias below)" : "not kept, it did not lower the winner's");
+	return line;
+}
+
+/** The learned ini's lines on the doubt chosen, and on how colour separates this room. */
+std::string doubtComment(const LearningResult& r)
+{
+	char line[700];
+	std::snprintf(line, sizeof line,
+				  "; Doubt (docs/method.md): sure_floor_share %g, sure_obstacle_ratio %g, sure_run %d, chosen on the\n"
+				  "; held-aside pairs; there the scan read free more than 25 cm past %.1f %% of the laser's returns\n"
+				  "; within max range (%.1f %% without doubt), with %.1f %% of its rays unsure.\n; %s.\n",
+				  r.doubt.sure_floor_share, r.doubt.sure_obstacle_ratio, r.doubt.sure_run, 100 * r.doubt.false_free,
+				  100 * r.doubt.false_free_without, 100 * r.doubt.unsure, separationLine(r.separation).c_str());
+	return line;
+}
+}  // namespace
+
+std::string learnedIni(const LearningResult& r, const std::string& section)
+{
+	char head[900];
+	std::snprintf(head, sizeof head,
+				  "%s%zu candidates scored against the laser on %d held-aside\n"
+				  "; image/laser pairs (interleaved, as seen; histograms trained on %d others). The winner:\n"
+				  "; %s;\n"
+				  "; mean error %.4f m. The histogram file written with this ini was made that way (trained again on all %d pairs);\n"
+				  "; to train one by hand, use the same colour space and bins.\n",
+				  kLearnedIniBegins, r.tried.size(), r.validation_pairs, r.training_pairs, describe(r.best).c_str(),
+				  r.best.score, r.refit_pairs);
 	const std::string warning = poorLearningWarning(r);
-	return head + other_space + (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" +
-		   r.params.asIni();
+	return head + otherSpaceComment(r) + edgeBiasComment(r) + rivalsComment(r) + doubtComment(r) +
+		   (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" + r.params.asIni();
 }
 
 }  // namespace omnirange

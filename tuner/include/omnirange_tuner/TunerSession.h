@@ -28,7 +28,7 @@ struct SessionOptions
 {
 	std::string rawlog;
 	std::string ini;  ///< read for the camera and the parameters; saved into by saveIni()
-	std::string section{"rangefinder"};
+	std::string section{kRangefinderSection};
 	std::string histogram;  ///< empty: train one with train() before scanning
 	std::string omni_label{kOmnicamLabel}, laser_label{kLaserLabel}, truth_label{kTruthLabel};
 	double max_dt{kDefaultMaxPairingDt};

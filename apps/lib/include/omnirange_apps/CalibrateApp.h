@@ -29,7 +29,7 @@ class CalibrateApp : public mrpt::system::COutputLogger
    public:
 	struct Options
 	{
-		std::string ini, section{"rangefinder"}, histogram;
+		std::string ini, section{kRangefinderSection}, histogram;
 		MirrorCalibrationOptions calibration;
 		std::vector<std::string> checkerboards;  ///< images: calibrate the intrinsics instead
 		std::string checkerboard_dir;  ///< --checkerboard-dir: an input folder, never an output's place

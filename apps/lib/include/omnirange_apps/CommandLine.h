@@ -45,6 +45,15 @@ struct ForceArg
 	TCLAP::SwitchArg force;
 };
 
+/** -c/--config INI and -s/--section NAME, added to a command line: the ini
+ * an app reads its [rangefinder] from; `what` says what the app takes from it. */
+struct RangefinderIniArgs
+{
+	RangefinderIniArgs(TCLAP::CmdLine& cmd, const std::string& what, bool required);
+
+	TCLAP::ValueArg<std::string> ini, section;
+};
+
 /** The value of a required path option; throws std::invalid_argument when
  * it is empty (`-o ''` would otherwise run every stage and then fail). */
 std::string requiredPath(TCLAP::ValueArg<std::string>& arg);

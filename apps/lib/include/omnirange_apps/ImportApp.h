@@ -3,6 +3,7 @@
 // (CSV) and odometry (CSV) -> an observations-only rawlog with labels,
 // sensor poses and external images (io/LogImport.h has the formats).
 
+#include <omnirange/core/Rangefinder.h>
 #include <omnirange/io/LogImport.h>
 
 #include <mrpt/system/COutputLogger.h>
@@ -15,7 +16,7 @@ class ImportApp : public mrpt::system::COutputLogger
 	struct Options
 	{
 		LogImportOptions import;
-		std::string ini, section{"rangefinder"};  ///< if given: the omnicam's pose (pose_* keys) from it
+		std::string ini, section{kRangefinderSection};  ///< if given: the omnicam's pose (pose_* keys) from it
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */

@@ -16,7 +16,7 @@ class ScanApp : public mrpt::system::COutputLogger
    public:
 	struct Options
 	{
-		std::string ini, section{"rangefinder"}, histogram;
+		std::string ini, section{kRangefinderSection}, histogram;
 		RawlogScanOptions scan;
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};

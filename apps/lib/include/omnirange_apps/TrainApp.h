@@ -15,7 +15,7 @@ class TrainApp : public mrpt::system::COutputLogger
 	struct Options
 	{
 		std::string output;  ///< histogram file to write
-		std::string ini, section{"rangefinder"};
+		std::string ini, section{kRangefinderSection};
 		RawlogTrainingOptions training;
 		/** If not empty: learn the parameters too (ParameterLearning.h) and
 		 * write them, as a [rangefinder] section, to this ini. */

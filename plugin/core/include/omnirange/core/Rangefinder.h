@@ -58,6 +58,9 @@ inline void invalidateUnsureRays(mrpt::obs::CObservation2DRangeScan& scan)
 		if (rayIsUnsure(scan, i)) scan.setScanRangeValidity(i, false);
 }
 
+/** The ini section the rangefinder's keys are read from unless a program is told another. */
+inline constexpr char kRangefinderSection[] = "rangefinder";
+
 /** Every parameter of the rangefinder, read from one ini section whose keys
  * equal the member names (docs/parameters.md lists them; ini/maze.ini is a
  * commented example). */

@@ -1,14 +1,15 @@
 #pragma once
 // Learning the rangefinder's parameters from the laser (the paper's future
 // work): the training part of a rawlog is split into pairs to train on and
-// pairs held aside (every fourth, or the later part of the stretch); a
-// histogram is trained per colour space, bin count and light change on the
-// first, and every candidate (those, Theta, obstacle_ratio, N, K, boundary
-// model) scans the held-aside images (as seen, or in changed light) and is
+// pairs held aside (every fourth); a histogram is trained per colour space
+// and bin count on the first, and every candidate (those, Theta,
+// obstacle_ratio, N, K, boundary model) scans the held-aside images and is
 // scored against their laser scans. The best one wins, and its histogram is
 // trained again on all the pairs; last, the winner's edge bias (EdgeBias.h)
-// is learned with that histogram and kept if the held-aside pairs agree.
-// Only the laser is used: it is what a user's training robot has.
+// and doubt are learned with that histogram and kept if the held-aside pairs
+// agree. Only the laser is used: it is what a user's training robot has.
+// Other splits and light changes were measured and not adopted
+// (docs/experiments.md, "Learning and validation").
 
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/train/ColourSeparation.h>
@@ -18,21 +19,12 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace omnirange
 {
 class Progress;
-
-enum class ValidationSplit
-{
-	Later,
-	Interleaved,
-	Blocks
-};
-/** "later", "interleaved" or "blocks"; throws otherwise. */
-ValidationSplit validationSplitFromString(const std::string& s);
 
 struct LearningOptions
 {
@@ -60,32 +52,10 @@ struct LearningOptions
 	 * way a face differs from the floor is the deployment's (docs/method.md). */
 	std::vector<StepSign> step_signs{StepSign::Either, StepSign::Brighter, StepSign::Darker};
 	int step_candidates{32};
-	/** TrainingParams::light_change of the candidate histograms ({0, 0.15}
-	 * was measured and did not help: docs/results.md). */
-	std::vector<double> light_changes{0.0};
-
-	/** Which selected pairs are held aside: every `hold_out_every`-th
-	 * (Interleaved: frames next to training frames) or the last
-	 * `validation_fraction` of them (Later: new places, as the rest of a
-	 * route brings; measured, no better: docs/results.md). Blocks: the
-	 * pairs are cut into `blocks` runs of consecutive pairs and each run
-	 * is scored with histograms trained on the others, so every pair
-	 * validates (up to max_validation_pairs) and in places the histograms
-	 * did not see (measured on fourteen worlds, no better, and twice the
-	 * time: docs/results.md). */
-	ValidationSplit split{ValidationSplit::Interleaved};
-	double validation_fraction{0.25};
-	int blocks{4};  ///< with the Blocks split
-	/** Every second pair instead (twice the validation frames, at most 60)
-	 * was measured and not adopted: docs/results.md. */
+	/** Every `hold_out_every`-th selected pair is held aside to score the
+	 * candidates on (every second was measured and not adopted). */
 	int hold_out_every{4};
-	/** [-] the held-aside images are shown as seen, dimmer and brighter by
-	 * this (gains 1, 1 - v, 1 + v in turn): light changes after training. */
-	double validation_light_change{0.0};
 	int max_validation_pairs{40};  ///< the held-aside images are kept in memory (evenly thinned)
-	/** Train the winner's histogram again on every selected pair, the
-	 * held-aside ones too, once they have chosen it. */
-	bool refit{true};
 	/** When the lowest score is not CHROMA's and the best CHROMA candidate
 	 * is behind it by no more than the held-aside frames' noise
 	 * (withinNoiseOf), take the CHROMA one: the rest of a route brings
@@ -104,7 +74,6 @@ struct LearnedCandidate
 {
 	ColourSpace space{ColourSpace::RGB};
 	int bins{0};
-	double light_change{0};  ///< of the histogram's training (TrainingParams::light_change)
 	double threshold{0}, obstacle_ratio{0};
 	double smoothing{0};  ///< [bins]
 	int N{0}, K{0};
@@ -126,9 +95,9 @@ struct LearnedCandidate
 	std::vector<double> frame_shortfalls;
 };
 
-/** A histogram's training: colour space, bins per channel, light change. */
-using HistogramKey = std::tuple<ColourSpace, int, double>;
-inline HistogramKey histogramKeyOf(const LearnedCandidate& c) { return {c.space, c.bins, c.light_change}; }
+/** A histogram's training: colour space and bins per channel. */
+using HistogramKey = std::pair<ColourSpace, int>;
+inline HistogramKey histogramKeyOf(const LearnedCandidate& c) { return {c.space, c.bins}; }
 
 /** The doubt learnDoubt chose for the winner (sure_floor_share,
  * sure_obstacle_ratio, sure_run),
@@ -157,9 +126,9 @@ inline constexpr double kSeenThroughMargin = 0.25;
 struct LearningResult
 {
 	RangefinderParams params;  ///< the start parameters with the winner's values
-	ColourModel model;  ///< trained in the winner's colour space, bins and light change
-	/** Every histogram the candidates used, trained as `model` was (refitted
-	 * when it is): what any other candidate would have run with, for
+	ColourModel model;  ///< trained in the winner's colour space and bins, on every pair
+	/** Every histogram the candidates used, trained as `model` was (on
+	 * every pair): what any other candidate would have run with, for
 	 * studying how the runners-up do on the rest of a route. */
 	std::map<HistogramKey, ColourModel> models;
 	TrainingParams training;  ///< how `model` was trained
@@ -169,9 +138,7 @@ struct LearningResult
 	std::optional<LearnedCandidate> overruled;
 	std::vector<LearnedCandidate> tried;
 	int training_pairs{0}, validation_pairs{0};
-	int refit_pairs{0};  ///< pairs the final histogram was trained on (0: not refitted)
-	ValidationSplit split{ValidationSplit::Interleaved};
-	std::string validation;  ///< how the held-aside pairs were chosen and shown, for the ini's comment
+	int refit_pairs{0};  ///< pairs the final histogram was trained on
 	/** [m] the edge bias learned for the winner (empty: none learned) and
 	 * the winner's score with it; `params` holds it only when that score is
 	 * lower than `best.score`. */
@@ -181,9 +148,7 @@ struct LearningResult
 	ColourSeparation separation;  ///< of `model`, as `params` classify
 };
 
-/** What each selected pair is for. With the Blocks split every pair
- * trains the other blocks' histograms, and Validate marks those scored
- * too (Unused does not occur). */
+/** What each selected pair is for. */
 enum class PairRole
 {
 	Train,
@@ -192,11 +157,7 @@ enum class PairRole
 };
 /** The roles of `selected` pairs in their order, as `options` split them. */
 std::vector<PairRole> splitPairs(const LearningOptions& options, int selected);
-/** The block of each of `selected` pairs with the Blocks split: `blocks`
- * runs of consecutive pairs, as equal as they can be; all 0 otherwise. */
-std::vector<int> blockOfPairs(const LearningOptions& options, int selected);
-/** `selected` pairs are enough for the split of `options`: some train and
- * some validate (with the Blocks split, in two blocks at least). */
+/** `selected` pairs are enough for the split of `options`: some train and some validate. */
 bool enoughToLearn(const LearningOptions& options, int selected);
 
 /** One laser ray's part of LearnedCandidate::score, and whether the omnicam
@@ -266,11 +227,11 @@ std::string spaceSeparated(const std::vector<double>& values);
  * --learn does not replace it (OutputRule.h's begins_with). */
 inline constexpr char kLearnedIniBegins[] = "; Learned by omnirange-train --learn: ";
 
-/** "colour space CHROMA, 13 bins, light change 0.15, threshold 0.005, obstacle_ratio 0, smoothing 0, N 20, K 4, subpixel boundary, step 0.25". */
+/** "colour space CHROMA, 13 bins, threshold 0.005, obstacle_ratio 0, smoothing 0, N 20, K 4, subpixel boundary, step 0.25". */
 std::string describe(const LearnedCandidate& c);
 
 /** The learned keys as an ini a user can read: a comment saying how they
  * were found, then the whole [rangefinder] section. */
-std::string learnedIni(const LearningResult& r, const std::string& section = "rangefinder");
+std::string learnedIni(const LearningResult& r, const std::string& section = kRangefinderSection);
 
 }  // namespace omnirange
