@@ -7,11 +7,6 @@ int main(int argc, char** argv)
 {
 	using omnirange::app::CalibrateApp;
 	return omnirange::app::runApp("omnirange-calibrate", [&] {
-		CalibrateApp app(CalibrateApp::parse(argc, argv));
-		if (!app.options().rim_images.empty()) app.runRim();
-		if (!app.options().checkerboards.empty()) app.runIntrinsics();
-		if (!app.options().ocamcalib.empty()) app.runOCamCalib();
-		const auto& o = app.options();
-		if (o.rim_images.empty() && o.checkerboards.empty() && o.ocamcalib.empty()) app.run();
+		CalibrateApp(CalibrateApp::parse(argc, argv)).runModes();
 	});
 }

@@ -175,4 +175,30 @@ std::string AccuracyResult::table(double max_difference) const
 	return kAccuracyTableBegins + std::string(row);
 }
 
+std::string AccuracyResult::inViewTable() const
+{
+	if (truth_in_view.empty() && body_in_view.empty()) return {};
+	std::string o =
+		"## The laser, the omnicam and the fused scan on the same rays\n\n"
+		"Every ray the laser sees, out to the omnicam's max range, against where the floor ends (TRUTH) and against "
+		"what the robot would strike (BODY: the nearest solid below its height, a floating body at its face). "
+		"Missed: the sensor claims free more than 5 cm past the truth. False obstacles: a return where nothing is "
+		"within the max range. FUSED: the nearer of the laser and a sure omnicam hit per ray (docs/method.md).\n\n"
+		"| truth | sensor | rays | within 5 cm | missed | unsure | false obstacles |\n|---|---|---|---|---|---|---|\n";
+	const auto percent = [](std::size_t part, std::size_t whole) {
+		char b[32];
+		std::snprintf(b, sizeof b, "%.1f %%", 100.0 * part / std::max<std::size_t>(1, whole));
+		return std::string(b);
+	};
+	for (const auto& [name, view] : {std::pair{"TRUTH", &truth_in_view}, std::pair{"BODY", &body_in_view}})
+		for (const auto& [label, t] : *view)
+		{
+			const TruthBand all = t.all();
+			o += std::string("| ") + name + " | " + label + " | " + std::to_string(all.rays) + " | " +
+				 percent(all.within_5cm, all.rays) + " | " + percent(all.false_free, all.rays) + " | " +
+				 percent(t.allUnsure(), t.allRays()) + " | " + percent(t.false_obstacles, t.open_rays) + " |\n";
+		}
+	return o + "\n";
+}
+
 }  // namespace omnirange::eval

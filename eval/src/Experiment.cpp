@@ -8,6 +8,7 @@
 #include "omnirange_eval/SensoryFrameFormat.h"
 
 #include <omnirange/config/AtomicWrite.h>
+#include <omnirange/io/ImageFile.h>
 #include <omnirange/config/ErrorText.h>
 #include <omnirange/config/Temporaries.h>
 #include <omnirange/io/OutputRule.h>

@@ -38,32 +38,6 @@ void writeMapsTable(std::ostream& o, const ExperimentResults& r)
 		if (!s.rbpf_ini.empty()) slamRow("rbpf-slam", s, s.rbpf, s.rbpf_path);
 }
 
-/** Each sensor's share of `part` among `whole`, as a percentage. */
-std::string percentOf(std::size_t part, std::size_t whole)
-{
-	return fmt("%.1f %%", 100.0 * part / std::max<std::size_t>(1, whole));
-}
-
-void writeInViewTable(std::ostream& o, const AccuracyResult& a)
-{
-	if (a.truth_in_view.empty() && a.body_in_view.empty()) return;
-	o << "## The laser, the omnicam and the fused scan on the same rays\n\n"
-	  << "Every ray the laser sees, out to the omnicam's max range, against where the floor ends (TRUTH) and against "
-		 "what the robot would strike (BODY: the nearest solid below its height, a floating body at its face). "
-		 "Missed: the sensor claims free more than 5 cm past the truth. False obstacles: a return where nothing is "
-		 "within the max range. FUSED: the nearer of the laser and a sure omnicam hit per ray (docs/method.md).\n\n"
-	  << "| truth | sensor | rays | within 5 cm | missed | unsure | false obstacles |\n|---|---|---|---|---|---|---|\n";
-	for (const auto& [name, view] : {std::pair{"TRUTH", &a.truth_in_view}, std::pair{"BODY", &a.body_in_view}})
-		for (const auto& [label, t] : *view)
-		{
-			const TruthBand all = t.all();
-			o << "| " << name << " | " << label << " | " << all.rays << " | " << percentOf(all.within_5cm, all.rays)
-			  << " | " << percentOf(all.false_free, all.rays) << " | " << percentOf(t.allUnsure(), t.allRays()) << " | "
-			  << percentOf(t.false_obstacles, t.open_rays) << " |\n";
-		}
-	o << "\n";
-}
-
 void writeCheckRegion(std::ostream& o, const ExperimentConfig& c, const ExperimentResults& r)
 {
 	const auto& b = c.check_box;
@@ -215,9 +189,7 @@ std::string reportMarkdown(const ExperimentConfig& c, const ExperimentResults& r
 										 "beyond it), or an unsure one whose extent is.\n\n" +
 											r.accuracy.truth.table() + "\n"
 									  : std::string())
-	  ;
-	writeInViewTable(o, r.accuracy);
-	o << "All pairs: `accuracy_pairs.csv`. What the histogram learned from (paper Fig. 1): "
+	  << r.accuracy.inViewTable() << "All pairs: `accuracy_pairs.csv`. What the histogram learned from (paper Fig. 1): "
 	  << "![bird's-eye view](fig1_birdseye.png) ![laser free region](fig1_laser.png) ![fused](fig1_fused.png)\n\n"
 	  << "## Maps against the world's true map\n\n"
 	  << "Occupied cells count as correct within " << c.match_tolerance << " m of a true wall (precision); "

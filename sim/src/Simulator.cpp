@@ -6,9 +6,10 @@
 #include "omnirange_sim/SensorModels.h"
 
 #include <omnirange/config/AtomicWrite.h>
+#include <omnirange/io/ImageFile.h>
 #include <omnirange/config/OptionsTable.h>
 #include <omnirange/config/SensorLabels.h>
-#include <omnirange/config/Threads.h>
+#include <omnirange/core/Threads.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 

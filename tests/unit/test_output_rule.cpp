@@ -3,6 +3,7 @@
 // --force, and then never an input); a multi-file output commits all or
 // nothing, and what a killed run left is cleared by the next.
 #include <omnirange/config/AtomicWrite.h>
+#include <omnirange/io/ImageFile.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogProcessor.h>
 #include <omnirange/io/RawlogReader.h>

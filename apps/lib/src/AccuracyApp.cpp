@@ -5,6 +5,7 @@
 #include <omnirange_eval/Figures.h>
 
 #include <omnirange/config/AtomicWrite.h>
+#include <omnirange/io/ImageFile.h>
 #include <omnirange/io/OutputRule.h>
 
 #include <filesystem>
@@ -59,7 +60,8 @@ eval::AccuracyResult AccuracyApp::run()
 		o_.output + "_histogram.png",
 		eval::differenceHistogram(r.stats.differences, o_.title.empty() ? o_.input : o_.title, a.max_difference));
 	StagedFile table_md(o_.output + "_table.md", text(table));
-	const std::string truth_table = r.truth.frames > 0 ? r.truth.table() : "";
+	// With the truth: the omnicam's table, then the laser, the omnicam and a fused scan on the laser's rays.
+	const std::string truth_table = r.truth.frames > 0 ? r.truth.table() + "\n" + r.inViewTable() : "";
 	std::optional<StagedFile> truth;
 	if (r.truth.frames > 0) truth.emplace(o_.output + "_truth.md", text(truth_table));
 	std::vector<StagedFile*> files{&pairs, &histogram, &table_md};

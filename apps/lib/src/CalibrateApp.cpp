@@ -150,6 +150,14 @@ void CalibrateApp::saveKeys(const std::vector<std::pair<std::string, std::string
 	writeIniSection(o_.save_to, o_.section, keys, RangefinderParams::table().comments(), with);
 }
 
+void CalibrateApp::runModes()
+{
+	if (!o_.rim_images.empty()) runRim();
+	if (!o_.checkerboards.empty()) runIntrinsics();
+	if (!o_.ocamcalib.empty()) runOCamCalib();
+	if (o_.rim_images.empty() && o_.checkerboards.empty() && o_.ocamcalib.empty()) run();
+}
+
 MirrorCalibration CalibrateApp::run()
 {
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);

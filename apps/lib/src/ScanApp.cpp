@@ -27,27 +27,28 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> out("o", "output", "rawlog to write (all input observations plus the scans)", true, "", "RAWLOG", cmd);
 	RangefinderIniArgs ini(cmd, "the rangefinder's parameters (docs/parameters.md)", true);
 	TCLAP::ValueArg<std::string> hist("H", "histogram", "histogram file from omnirange-train", true, "", "FILE", cmd);
-	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images to scan", false, s.omni_label, "LABEL", cmd);
-	TCLAP::ValueArg<int> threads("j", "threads", "threads decoding and scanning images", false, s.threads, "N", cmd);
-	TCLAP::SwitchArg decode_only("", "decode-only", "only read and decode the images, write nothing (to time decoding alone)", cmd);
-	TCLAP::SwitchArg skip_bad("", "skip-bad-images",
-							  "skip a missing, cut or undecodable image (no scan for it; each named, and counted) instead of stopping",
-							  cmd);
-	TCLAP::ValueArg<std::string> fuse("", "fuse-with",
-									  "label of a laser on the same robot: also write a FUSED scan, the nearer of the laser "
-									  "and a sure omnicam hit per ray (docs/users.md)",
-									  false, s.fuse_with, "LABEL", cmd);
-	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between an image and the laser scan fused with it [s]",
-								   false, s.max_dt, "S", cmd);
+	BoundArgs bound(cmd);
+	bound.value("", "omni-label", "label of the images to scan", s.omni_label, "LABEL");
+	bound.value("j", "threads", "threads decoding and scanning images", s.threads, "N");
+	bound.flag("decode-only", "only read and decode the images, write nothing (to time decoding alone)", s.decode_only);
+	bound.flag("skip-bad-images",
+			   "skip a missing, cut or undecodable image (no scan for it; each named, and counted) instead of stopping",
+			   s.skip_bad_images);
+	bound.value("", "fuse-with",
+				"label of a laser on the same robot: also write a FUSED scan, the nearer of the laser and a sure omnicam "
+				"hit per ray (docs/users.md)",
+				s.fuse_with, "LABEL");
+	const auto& max_dt =
+		bound.value("", "max-dt", "with --fuse-with: largest time between an image and the laser scan fused with it [s]",
+					s.max_dt, "S");
 	ForceArg force(cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	bound.fill();
 	s.force = force.value();
-	s.fuse_with = fuse.getValue(), s.max_dt = max_dt.getValue();
 	o.ini = ini.ini.getValue(), o.section = ini.section.getValue(), o.histogram = hist.getValue();
-	s.input = in.getValue(), s.output = requiredPath(out), s.omni_label = omni.getValue();
-	s.threads = threads.getValue(), s.decode_only = decode_only.getValue();
-	s.skip_bad_images = skip_bad.getValue();
+	s.input = in.getValue(), s.output = requiredPath(out);
+	if (max_dt.isSet() && s.fuse_with.empty()) throw std::invalid_argument("--max-dt needs --fuse-with");
 	o.verbosity = verbosity.level();
 	return o;
 }

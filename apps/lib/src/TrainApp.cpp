@@ -3,6 +3,7 @@
 #include "omnirange_apps/CommandLine.h"
 
 #include <omnirange/config/AtomicWrite.h>
+#include <omnirange/io/ImageFile.h>
 #include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/io/Progress.h>
@@ -20,38 +21,43 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with omnicam images and laser scans", true, "", "RAWLOG", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "histogram file to write", true, "", "FILE", cmd);
 	RangefinderIniArgs ini(cmd, "the camera (docs/parameters.md)", true);
-	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images", false, t.omni_label, "LABEL", cmd);
-	TCLAP::ValueArg<std::string> laser("", "laser-label", "label of the laser scans", false, t.laser_label, "LABEL", cmd);
-	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between an image and its scan [s]", false, t.max_dt, "S", cmd);
-	TCLAP::ValueArg<int> every("", "every", "use every N-th image/scan pair", false, t.every, "N", cmd);
-	TCLAP::ValueArg<int> first("", "first", "skip the pairs before this one (0-based)", false, t.first, "N", cmd);
-	TCLAP::ValueArg<int> max_frames("n", "max-frames", "use at most this many pairs (0: all)", false, t.max_frames, "N", cmd);
-	TCLAP::ValueArg<int> until("", "until", "use only the pairs before this one (0: to the end)", false, t.until, "N", cmd);
-	TCLAP::ValueArg<int> bins("", "bins", "bins per colour channel", false, t.training.bins, "N", cmd);
-	TCLAP::ValueArg<std::string> space("", "colour-space", "RGB, HSV or CHROMA", false, toString(t.training.space), "SPACE", cmd);
-	TCLAP::ValueArg<double> margin("", "laser-margin", "distance kept from laser hits [m]", false, t.training.laser_margin, "M", cmd);
-	TCLAP::ValueArg<double> band("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only", false, t.training.obstacle_band, "M", cmd);
+	BoundArgs bound(cmd);
+	bound.value("", "omni-label", "label of the images", t.omni_label, "LABEL");
+	bound.value("", "laser-label", "label of the laser scans", t.laser_label, "LABEL");
+	bound.value("", "max-dt", "largest time between an image and its scan [s]", t.max_dt, "S");
+	bound.value("", "every", "use every N-th image/scan pair", t.every, "N");
+	bound.value("", "first", "skip the pairs before this one (0-based)", t.first, "N");
+	const auto& max_frames = bound.value("n", "max-frames", "use at most this many pairs (0: all)", t.max_frames, "N");
+	bound.value("", "until", "use only the pairs before this one (0: to the end)", t.until, "N");
+	bound.value("", "bins", "bins per colour channel", t.training.bins, "N");
+	bound.named("colour-space", "RGB, HSV or CHROMA", t.training.space, toString(t.training.space), colourSpaceFromString,
+				"SPACE");
+	bound.value("", "laser-margin", "distance kept from laser hits [m]", t.training.laser_margin, "M");
+	bound.value("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only",
+				t.training.obstacle_band, "M");
+	bound.value("", "light-change",
+				"also count every floor pixel as seen in light this much dimmer and brighter (gains 1-A, 1+A); 0: as seen",
+				t.training.light_change, "A");
+	bound.flag("near-disc-only",
+			   "count only the floor nearer than every laser hit, all round: a first histogram for omnirange-calibrate that "
+			   "does not depend on the ini's orientation",
+			   t.training.near_disc_only);
+	const auto& figures_frame =
+		bound.value("", "figures-frame", "which used pair the figures show (0-based)", t.figures_frame, "N");
 	TCLAP::ValueArg<std::string> learn("", "learn", "also learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser on held-aside pairs, and write them to this ini", false, "", "INI", cmd);
 	TCLAP::SwitchArg no_chroma_tie("", "learn-no-chroma-on-tie", "with --learn: take the lowest score even when the best CHROMA candidate is behind it by no more than the held-aside frames' noise", cmd);
 	TCLAP::ValueArg<std::string> candidates("", "learn-candidates", "with --learn: also write every candidate tried and its score to this CSV", false, "", "CSV", cmd);
-	TCLAP::ValueArg<double> light("", "light-change", "also count every floor pixel as seen in light this much dimmer and brighter (gains 1-A, 1+A); 0: as seen", false, t.training.light_change, "A", cmd);
-	TCLAP::SwitchArg near_disc("", "near-disc-only", "count only the floor nearer than every laser hit, all round: a first histogram for omnirange-calibrate that does not depend on the ini's orientation", cmd);
 	TCLAP::ValueArg<std::string> figures("", "figures", "write PREFIX_birdseye.png, PREFIX_laser.png, PREFIX_fused.png (paper Fig. 1)", false, "", "PREFIX", cmd);
-	TCLAP::ValueArg<int> figures_frame("", "figures-frame", "which used pair the figures show (0-based)", false, t.figures_frame, "N", cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	bound.fill();
 	o.output = requiredPath(out), o.ini = ini.ini.getValue(), o.section = ini.section.getValue();
 	o.learn_ini = optionalPath(learn), o.learn_candidates = optionalPath(candidates);
 	if (!o.learn_candidates.empty() && o.learn_ini.empty())
 		throw std::invalid_argument("--learn-candidates needs --learn");
-	t.input = in.getValue(), t.omni_label = omni.getValue(), t.laser_label = laser.getValue();
-	t.max_dt = max_dt.getValue(), t.every = every.getValue(), t.first = first.getValue();
-	t.max_frames = max_frames.getValue(), t.until = until.getValue();
-	t.training.bins = bins.getValue(), t.training.space = colourSpaceFromString(space.getValue());
-	t.training.laser_margin = margin.getValue(), t.training.obstacle_band = band.getValue();
-	t.training.light_change = light.getValue(), t.training.near_disc_only = near_disc.getValue();
+	t.input = in.getValue();
 	o.learning.chroma_on_tie = !no_chroma_tie.getValue();
-	t.figures_prefix = prefixPath(figures, "fig"), t.figures_frame = figures_frame.getValue();
+	t.figures_prefix = prefixPath(figures, "fig");
 	// Options that only mean something beside another: given without it, say so rather than ignore them.
 	if (no_chroma_tie.isSet() && o.learn_ini.empty()) throw std::invalid_argument("--learn-no-chroma-on-tie needs --learn");
 	if (figures_frame.isSet() && t.figures_prefix.empty()) throw std::invalid_argument("--figures-frame needs --figures");

@@ -74,6 +74,8 @@ struct AccuracyResult
 	std::map<std::string, TruthStats> truth_in_view, body_in_view;
 	/** The Table II-style table, in Markdown. */
 	std::string table(double max_difference) const;
+	/** truth_in_view and body_in_view as a Markdown section ("" without them). */
+	std::string inViewTable() const;
 };
 
 /** Streams a rawlog with both scans and pairs every laser scan with the

@@ -5,7 +5,6 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
-#include <opencv2/imgcodecs.hpp>
 #include <unistd.h>
 #include <zlib.h>
 
@@ -531,15 +530,6 @@ std::function<void(const std::string&)> writerOf(const std::string& path, const 
 	};
 }
 
-std::string encodedImage(const std::string& path, const cv::Mat& image)
-{
-	const auto dot = path.rfind('.');
-	std::vector<uchar> buf;
-	if (dot == std::string::npos || !cv::imencode(path.substr(dot), image, buf))
-		throw std::runtime_error("cannot encode image '" + path + "'");
-	return std::string(buf.begin(), buf.end());
-}
-
 void writeFileAtomically(const std::string& path, const std::string& bytes)
 {
 	writeAtomically(path, writerOf(path, bytes));
@@ -550,16 +540,5 @@ void updateFileAtomically(const std::string& path, const std::string& bytes, con
 	StagedFile staged(path, writerOf(path, bytes));
 	staged.replacing(read_state);
 	staged.commit();
-}
-
-void writeImageAtomically(const std::string& path, const cv::Mat& image)
-{
-	writeFileAtomically(path, encodedImage(path, image));
-}
-
-StagedFile stageImage(const std::string& path, const cv::Mat& image)
-{
-	const std::string bytes = encodedImage(path, image);
-	return StagedFile(path, writerOf(path, bytes));
 }
 }  // namespace omnirange

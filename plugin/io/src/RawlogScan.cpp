@@ -5,7 +5,7 @@
 #include "omnirange/core/FloorAdaptation.h"
 #include "omnirange/core/ScanFusion.h"
 #include "omnirange/config/AtomicWrite.h"
-#include "omnirange/config/Threads.h"
+#include "omnirange/core/Threads.h"
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/RawlogProcessor.h"
 #include "omnirange/io/RawlogWriter.h"

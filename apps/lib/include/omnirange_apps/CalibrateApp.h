@@ -47,7 +47,10 @@ class CalibrateApp : public mrpt::system::COutputLogger
 
 	explicit CalibrateApp(Options o);
 	const Options& options() const { return o_; }
-	/** Fits and prints the result on stdout. */
+	/** What the command line asked for: each of --rim, --checkerboard and
+	 * --ocamcalib given, in that order, or else the fit against the laser. */
+	void runModes();
+	/** Against the laser: fits and prints the result on stdout. */
 	MirrorCalibration run();
 	/** With checkerboard images: calibrates the intrinsics, prints them and
 	 * each image's result, and writes the YAML file if asked. */

@@ -8,6 +8,7 @@
 #include <mrpt/system/COutputLogger.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,56 @@ struct RangefinderIniArgs
 	RangefinderIniArgs(TCLAP::CmdLine& cmd, const std::string& what, bool required);
 
 	TCLAP::ValueArg<std::string> ini, section;
+};
+
+/** Options declared once each: the flags, the help and the field an option
+ * fills, whose value before parsing is the option's default; fill() copies
+ * every value given into its field after parseArgs(). Paths and options
+ * that need checking beside others stay plain TCLAP arguments. */
+class BoundArgs
+{
+   public:
+	explicit BoundArgs(TCLAP::CmdLine& cmd) : cmd_(cmd) {}
+
+	template <class T>
+	TCLAP::ValueArg<T>& value(const std::string& flag, const std::string& name, const std::string& help, T& field,
+							  const std::string& type)
+	{
+		auto arg = std::make_unique<TCLAP::ValueArg<T>>(flag, name, help, false, field, type, cmd_);
+		auto& given = *arg;
+		fill_.push_back([&given, &field] { field = given.getValue(); });
+		args_.push_back(std::move(arg));
+		return given;
+	}
+	/** An option read as a string and turned into its field's type by `parse` (an enum's name). */
+	template <class T, class Parse>
+	TCLAP::ValueArg<std::string>& named(const std::string& name, const std::string& help, T& field,
+										const std::string& as_text, Parse parse, const std::string& type)
+	{
+		auto arg = std::make_unique<TCLAP::ValueArg<std::string>>("", name, help, false, as_text, type, cmd_);
+		auto& given = *arg;
+		fill_.push_back([&given, &field, parse] { field = parse(given.getValue()); });
+		args_.push_back(std::move(arg));
+		return given;
+	}
+	TCLAP::SwitchArg& flag(const std::string& name, const std::string& help, bool& field)
+	{
+		auto arg = std::make_unique<TCLAP::SwitchArg>("", name, help, cmd_, field);
+		auto& given = *arg;
+		fill_.push_back([&given, &field] { field = given.getValue(); });
+		args_.push_back(std::move(arg));
+		return given;
+	}
+	/** After parseArgs(): every bound field takes its option's value. */
+	void fill() const
+	{
+		for (const auto& f : fill_) f();
+	}
+
+   private:
+	TCLAP::CmdLine& cmd_;
+	std::vector<std::unique_ptr<TCLAP::Arg>> args_;
+	std::vector<std::function<void()>> fill_;
 };
 
 /** The value of a required path option; throws std::invalid_argument when

@@ -13,11 +13,6 @@
 #include <system_error>
 #include <vector>
 
-namespace cv
-{
-class Mat;
-}
-
 namespace omnirange
 {
 /** `message` with every `from` (a temporary's or staging folder's path, which
@@ -212,13 +207,5 @@ void updateFileAtomically(const std::string& path, const std::string& bytes, con
 /** A StagedFile's writer of `bytes` (both must outlive the StagedFile's
  * constructor), its errors naming `path`. */
 std::function<void(const std::string&)> writerOf(const std::string& path, const std::string& bytes);
-
-/** Encodes `image` in the format its path's extension names (.png, .jpg)
- * and writes it atomically. */
-void writeImageAtomically(const std::string& path, const cv::Mat& image);
-/** `image` encoded as its path's extension names (.png, .jpg). */
-std::string encodedImage(const std::string& path, const cv::Mat& image);
-/** `image` encoded as its path's extension names, staged (StagedFile). */
-StagedFile stageImage(const std::string& path, const cv::Mat& image);
 
 }  // namespace omnirange

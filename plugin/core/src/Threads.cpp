@@ -1,4 +1,4 @@
-#include "omnirange/config/Threads.h"
+#include "omnirange/core/Threads.h"
 
 #include <opencv2/core.hpp>
 
