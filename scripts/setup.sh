@@ -9,7 +9,7 @@ packages=(
   libmrpt-dev mrpt-apps mrpt-common
   libopencv-dev libopencv-contrib-dev libeigen3-dev zlib1g-dev libjpeg-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xdotool x11-apps imagemagick bc
+  xvfb xdotool x11-apps imagemagick bc parallel
   libwxgtk3.2-dev
 )
 missing=()
