@@ -20,18 +20,18 @@ AccuracyApp::Options AccuracyApp::parse(int argc, const char* const* argv)
 	TCLAP::CmdLine cmd("omnirange-accuracy: compare omnicam scans against the laser (paper Table II, Fig. 9)", ' ', "0.1");
 	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with both scans (omnirange-scan's output)", true, "", "RAWLOG", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "prefix of the outputs: PREFIX_pairs.csv, PREFIX_histogram.png, PREFIX_table.md", true, "", "PREFIX", cmd);
-	TCLAP::ValueArg<std::string> laser("", "laser-label", "label of the laser scans", false, a.laser_label, "LABEL", cmd);
-	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the omnicam scans", false, a.omni_label, "LABEL", cmd);
-	TCLAP::ValueArg<double> max_diff("", "max-difference", "pairs differing by more are excluded [m]", false, a.max_difference, "M", cmd);
-	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between paired scans [s]", false, a.max_dt, "S", cmd);
-	TCLAP::ValueArg<int> first("", "first", "score only from this scan pair on (0-based; e.g. after the training part)", false, a.first, "N", cmd);
-	TCLAP::ValueArg<std::string> title("", "title", "title of the histogram", false, "", "TEXT", cmd);
+	BoundArgs bound(cmd);
+	bound.value("", "laser-label", "label of the laser scans", a.laser_label, "LABEL");
+	bound.value("", "omni-label", "label of the omnicam scans", a.omni_label, "LABEL");
+	bound.value("", "max-difference", "pairs differing by more are excluded [m]", a.max_difference, "M");
+	bound.value("", "max-dt", "largest time between paired scans [s]", a.max_dt, "S");
+	bound.value("", "first", "score only from this scan pair on (0-based; e.g. after the training part)", a.first, "N");
+	bound.value("", "title", "title of the histogram", o.title, "TEXT");
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.input = in.getValue(), o.output = prefixPath(out, "accuracy"), o.title = title.getValue();
+	bound.fill();
+	o.input = in.getValue(), o.output = prefixPath(out, "accuracy");
 	if (o.output.empty()) throw std::invalid_argument("-o names no file or folder");
-	a.laser_label = laser.getValue(), a.omni_label = omni.getValue();
-	a.max_difference = max_diff.getValue(), a.max_dt = max_dt.getValue(), a.first = first.getValue();
 	o.verbosity = verbosity.level();
 	return o;
 }

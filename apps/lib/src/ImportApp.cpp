@@ -45,19 +45,20 @@ ImportApp::Options ImportApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> omni_pose("", "omni-pose", "the omnicam's pose on the robot, 'x y z yaw_deg' [m, deg] (instead of -c)", false, "", "POSE", cmd);
 	TCLAP::ValueArg<std::string> laser_pose("", "laser-pose", "the laser's pose on the robot, 'x y z yaw_deg' [m, deg]", false, "0 0 0 0", "POSE", cmd);
 	TCLAP::ValueArg<double> fov("", "laser-fov-deg", "the laser's field of view, first ray to last [deg]", false, 180, "DEG", cmd);
-	TCLAP::ValueArg<double> max_range("", "laser-max-range", "ranges <= 0 or >= this are no return [m]", false, i.laser_max_range, "M", cmd);
-	TCLAP::ValueArg<std::string> omni_label("", "omni-label", "label of the images", false, i.omni_label, "LABEL", cmd);
-	TCLAP::ValueArg<std::string> laser_label("", "laser-label", "label of the laser scans", false, i.laser_label, "LABEL", cmd);
+	BoundArgs bound(cmd);
+	bound.value("", "laser-max-range", "ranges <= 0 or >= this are no return [m]", i.laser_max_range, "M");
+	bound.value("", "omni-label", "label of the images", i.omni_label, "LABEL");
+	bound.value("", "laser-label", "label of the laser scans", i.laser_label, "LABEL");
 	ForceArg force(cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	bound.fill();
 	i.force = force.value();
 	i.images_dir = images.getValue(), i.image_list = list.getValue(), i.laser_csv = laser.getValue();
 	if (images.isSet() && list.isSet()) throw std::invalid_argument("give the images by --images or by --image-list, not both");
 	i.odometry_csv = odometry.getValue(), i.carmen_log = carmen.getValue(), i.output = requiredPath(out);
-	i.omni_label = omni_label.getValue(), i.laser_label = laser_label.getValue();
 	i.laser_pose = poseFromText("--laser-pose", laser_pose.getValue());
-	i.laser_fov = fov.getValue() * M_PI / 180, i.laser_max_range = max_range.getValue();
+	i.laser_fov = fov.getValue() * M_PI / 180;
 	o.ini = ini.ini.getValue(), o.section = ini.section.getValue();
 	if (!omni_pose.getValue().empty())
 	{

@@ -16,16 +16,20 @@ SimApp::Options SimApp::parse(int argc, const char* const* argv)
 	TCLAP::ValueArg<std::string> route("r", "route", "route file: one 'x y' waypoint per line [m]", true, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> robot("c", "robot", "robot ini (default: built-in OmniP2DX-like robot)", false, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "rawlog to write (NAME.rawlog; images go to NAME_Images/)", true, "", "FILE", cmd);
-	TCLAP::ValueArg<int> frames("n", "max-frames", "stop after this many frames (0: the whole route, which may give at most " + std::to_string(sim::kMaxRouteFrames) + ")", false, s.max_frames, "N", cmd);
-	TCLAP::ValueArg<int> threads("j", "threads", "rendering threads", false, s.threads, "N", cmd);
-	TCLAP::ValueArg<std::string> format("f", "image-format", "png or jpg, overriding the robot ini", false, "", "FMT", cmd);
+	BoundArgs bound(cmd);
+	bound.value("n", "max-frames",
+				"stop after this many frames (0: the whole route, which may give at most " +
+					std::to_string(sim::kMaxRouteFrames) + ")",
+				s.max_frames, "N");
+	bound.value("j", "threads", "rendering threads", s.threads, "N");
+	bound.value("f", "image-format", "png or jpg, overriding the robot ini", s.image_format, "FMT");
 	ForceArg force(cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	bound.fill();
 	s.force = force.value();
 	s.world_file = world.getValue(), s.route_file = route.getValue(), s.robot_ini = robot.getValue();
-	s.output = requiredPath(out), s.max_frames = frames.getValue(), s.threads = threads.getValue();
-	s.image_format = format.getValue();
+	s.output = requiredPath(out);
 	if (!s.image_format.empty() && s.image_format != "jpg" && s.image_format != "png")
 		throw std::invalid_argument("-f must be png or jpg, not '" + s.image_format + "'");
 	o.verbosity = verbosity.level();
