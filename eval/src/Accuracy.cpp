@@ -4,6 +4,8 @@
 #include <omnirange/io/RawlogProcessor.h>
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 
@@ -37,11 +39,59 @@ namespace
 {
 using mrpt::obs::CObservation2DRangeScan;
 
-/** One moment: an omnicam scan and the scans after it taken within max_dt
- * of it (the simulator writes TRUTH, BODY, LASER and FUSED after OMNISCAN). */
+/** One moment: an omnicam scan and, of each other label, the scan taken nearest to it
+ * within max_dt, whatever their order in the rawlog. */
 struct Moment
 {
 	CObservation2DRangeScan::Ptr omni, laser, fused, truth, body;
+};
+
+/** The last two scans of each label read: an omnicam scan's moment is made when the
+ * next one comes (or the rawlog ends), of the nearer of the two of each label. */
+class Moments
+{
+   public:
+	Moments(const AccuracyOptions& o) : o_(o) {}
+	/** Feeds a scan; returns the moment the previous omnicam scan made, when this is the next one. */
+	std::optional<Moment> add(const CObservation2DRangeScan::Ptr& scan)
+	{
+		std::optional<Moment> done;
+		if (scan->sensorLabel == o_.omni_label) done = finish(), pending_ = scan;
+		else
+		{
+			auto& last = last_[scan->sensorLabel];
+			last[0] = last[1], last[1] = scan;
+		}
+		return done;
+	}
+	/** The last omnicam scan's moment (at the rawlog's end). */
+	std::optional<Moment> finish() const
+	{
+		if (!pending_) return std::nullopt;
+		Moment m;
+		m.omni = pending_;
+		m.laser = nearest(o_.laser_label), m.fused = nearest(o_.fused_label);
+		m.truth = nearest(o_.truth_label), m.body = nearest(o_.body_label);
+		return m;
+	}
+
+   private:
+	CObservation2DRangeScan::Ptr nearest(const std::string& label) const
+	{
+		const auto it = last_.find(label);
+		if (it == last_.end()) return nullptr;
+		CObservation2DRangeScan::Ptr best;
+		double best_dt = o_.max_dt;
+		for (const auto& s : it->second)
+			if (s)
+				if (const double dt = std::abs(mrpt::system::timeDifference(pending_->timestamp, s->timestamp)); dt <= best_dt)
+					best = s, best_dt = dt;
+		return best;
+	}
+
+	const AccuracyOptions& o_;
+	CObservation2DRangeScan::Ptr pending_;
+	std::map<std::string, std::array<CObservation2DRangeScan::Ptr, 2>> last_;
 };
 
 /** `laser` seen from the omnicam along the rays of `omni` (laserAlong()): a
@@ -120,23 +170,14 @@ AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions
 			if (truth_seen++ >= o.first) r.truth.add(*truth, *omni);
 		});
 	// The scans in view, each moment scored when the next omnicam scan begins another.
-	Moment moment;
-	int moments = 0;
-	const auto score = [&] {
-		if (moment.omni && moment.laser && moments++ >= o.first) scoreInView(moment, r);
+	Moments moments(o);
+	int scored = 0;
+	const auto score = [&](const std::optional<Moment>& m) {
+		if (m && m->laser && scored++ >= o.first) scoreInView(*m, r);
 	};
-	loop.on<CObservation2DRangeScan>("", [&](const CObservation2DRangeScan::Ptr& scan) {
-		const auto& l = scan->sensorLabel;
-		if (l == o.omni_label) score(), moment = Moment{}, moment.omni = scan;
-		const bool now = moment.omni && std::abs(mrpt::system::timeDifference(moment.omni->timestamp, scan->timestamp)) <= o.max_dt;
-		if (!now) return;
-		if (l == o.laser_label) moment.laser = scan;
-		if (l == o.fused_label) moment.fused = scan;
-		if (l == o.truth_label) moment.truth = scan;
-		if (l == o.body_label) moment.body = scan;
-	});
+	loop.on<CObservation2DRangeScan>("", [&](const CObservation2DRangeScan::Ptr& scan) { score(moments.add(scan)); });
 	loop.run(progress);
-	score();
+	score(moments.finish());
 	if (seen == 0) throw std::runtime_error(loop.describeNoPair());
 	if (r.frames == 0)
 		throw std::runtime_error("all " + std::to_string(seen) + " scan pairs of '" + rawlog + "' come before first = " +
@@ -144,7 +185,9 @@ AccuracyResult evaluateAccuracy(const std::string& rawlog, const AccuracyOptions
 	// A mean over no ray would read 0.0000 m, the best score there is. A scan
 	// unsure on every ray the laser sees says so, and is a result: its means
 	// are left out (AccuracyResult::table, metricsOf).
-	if (r.stats.compared == 0 && r.stats.omni_unsure == 0)
+	// With the truth the run is scored all the same: the laser may see nothing within the omnicam's reach.
+	if (r.stats.compared == 0 && r.stats.omni_unsure == 0 && r.truth.frames == 0 && r.truth_in_view.empty() &&
+		r.body_in_view.empty())
 		throw std::runtime_error("no ray of '" + rawlog + "' could be compared with the laser (" +
 								 std::to_string(r.stats.total()) +
 								 " pairs, none within the max difference): are the sensors' poses right?");

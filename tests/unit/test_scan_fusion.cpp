@@ -108,3 +108,25 @@ TEST(ScanFusion, EachRayIsTheNearerOfTheLaserAndASureOmnicamHit)
 	EXPECT_TRUE(rayIsUnsure(*fused, behind_unsure));
 	EXPECT_FALSE(fused->getScanRangeValidity(rayAt(M_PI + 0.4)));  // free to 3.8 m: invalid, as the omnicam wrote it
 }
+
+TEST(ScanFusion, ACoarseLaserSeesTheArcsBetweenItsRays)
+{
+	// 19 rays over 180 degrees, 10 degrees apart: every omnicam ray between two of them is in
+	// the laser's view and takes the nearer of the two readings; behind it, none.
+	auto laser = laserScan();
+	laser.resizeScan(19);
+	for (int i = 0; i < 19; ++i)
+	{
+		const double a = laser.getScanAngle(i);
+		const double r = std::cos(a) > 0.05 ? (3.0 - 0.16) / std::cos(a) : 0;
+		laser.setScanRange(i, static_cast<float>(r));
+		laser.setScanRangeValidity(i, r > 0 && r < 19.8);
+	}
+	const auto along = laserAlong(laser, omniScan());
+	for (int deg = -85; deg <= 85; ++deg)
+		EXPECT_NE(along[rayAt(deg * M_PI / 180)].kind, LaserReading::Kind::Unseen) << deg;
+	for (int deg = 100; deg <= 260; deg += 10) EXPECT_EQ(along[rayAt(deg * M_PI / 180)].kind, LaserReading::Kind::Unseen) << deg;
+	// Between the rays at 0 and 10 degrees, the nearer reading: the one at 0, 3.0 m.
+	ASSERT_EQ(along[rayAt(5 * M_PI / 180)].kind, LaserReading::Kind::Return);
+	EXPECT_NEAR(along[rayAt(5 * M_PI / 180)].range, 3.0, 0.01);
+}

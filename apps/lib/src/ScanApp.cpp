@@ -34,7 +34,7 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	bound.flag("skip-bad-images",
 			   "skip a missing, cut or undecodable image (no scan for it; each named, and counted) instead of stopping",
 			   s.skip_bad_images);
-	bound.value("", "fuse-with",
+	const auto& fuse = bound.value("", "fuse-with",
 				"label of a laser on the same robot: also write a FUSED scan, the nearer of the laser and a sure omnicam "
 				"hit per ray (docs/users.md)",
 				s.fuse_with, "LABEL");
@@ -48,6 +48,7 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	s.force = force.value();
 	o.ini = ini.ini.getValue(), o.section = ini.section.getValue(), o.histogram = hist.getValue();
 	s.input = in.getValue(), s.output = requiredPath(out);
+	if (fuse.isSet() && s.fuse_with.empty()) throw std::invalid_argument("--fuse-with names no label");
 	if (max_dt.isSet() && s.fuse_with.empty()) throw std::invalid_argument("--max-dt needs --fuse-with");
 	o.verbosity = verbosity.level();
 	return o;
@@ -86,9 +87,10 @@ RawlogScanSummary ScanApp::run()
 					  s.images, share(s.hits), share(s.no_hit), share(s.unsure), share(s.too_close), share(s.outliers),
 					  s.objects, o_.scan.output.c_str());
 	if (!o_.scan.fuse_with.empty())
-		MRPT_LOG_INFO_FMT("%zu %s scans (%s with %s); %zu images had no %s scan within %g s", s.fused, kFusedLabel,
-						  rf.params().sensor_label.c_str(), o_.scan.fuse_with.c_str(), s.images - s.fused,
-						  o_.scan.fuse_with.c_str(), o_.scan.max_dt);
+		MRPT_LOG_INFO_FMT("%zu %s scans (%s with %s); %zu images were paired with no %s scan (an image pairs with "
+						  "the next scan within %g s, or the one before it, as training pairs them)",
+						  s.fused, kFusedLabel, rf.params().sensor_label.c_str(), o_.scan.fuse_with.c_str(),
+						  s.images - s.fused, o_.scan.fuse_with.c_str(), o_.scan.max_dt);
 	for (const auto& w : scanWarnings(s, o_.histogram, colours.trainedOnColour())) MRPT_LOG_WARN(w);
 	return s;
 }

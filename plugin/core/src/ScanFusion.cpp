@@ -40,23 +40,36 @@ std::vector<LaserReading> laserAlong(const mrpt::obs::CObservation2DRangeScan& l
 		if (a.kind == Kind::Return && b.kind == Kind::Return) return a.range <= b.range ? a : b;
 		return a.kind == Kind::Return ? a : b;
 	};
-	for (std::size_t i = 0; i < laser.getScanSize(); ++i)
+	// Each laser ray seen from the omnicam, and what it reads.
+	const std::size_t n = laser.getScanSize();
+	std::vector<int> ray(n);
+	std::vector<LaserReading> reading(n);
+	for (std::size_t i = 0; i < n; ++i)
 	{
 		const RaySeenFrom seen = laserRaySeenFrom(laser, i, omni.sensorPose);
-		const LaserReading r = laser.getScanRangeValidity(i) ? LaserReading{Kind::Return, seen.range}
-															 : LaserReading{Kind::NoReturn, 0};
-		auto& at = along[nearestRay(omni, seen.bearing)];
-		at = nearer(at, r);
+		ray[i] = nearestRay(omni, seen.bearing);
+		reading[i] = laser.getScanRangeValidity(i) ? LaserReading{Kind::Return, seen.range} : LaserReading{Kind::NoReturn, 0};
+		along[ray[i]] = nearer(along[ray[i]], reading[i]);
 	}
-	// Gaps inside the field of view: a ray between two seen ones.
-	const std::vector<LaserReading> seen = along;
-	for (int k = 0; k < S; ++k)
+	// The laser sees the arc between two neighbouring rays too (the sensors' offset spreads the
+	// rays unevenly over the omnicam's): each omnicam ray of it takes the nearer of the two.
+	const int max_arc = S / 8;  // the shorter way round; wider is no arc of neighbours (a 360-degree laser's seam)
+	std::vector<LaserReading> between(S);
+	for (std::size_t i = 0; i + 1 < n; ++i)
 	{
-		const auto& prev = seen[(k + S - 1) % S];
-		const auto& next = seen[(k + 1) % S];
-		if (seen[k].kind == Kind::Unseen && prev.kind != Kind::Unseen && next.kind != Kind::Unseen)
-			along[k] = nearer(prev, next);
+		int d = ((ray[i + 1] - ray[i]) % S + S) % S;
+		int step = 1;
+		if (d > S / 2) d = S - d, step = -1;
+		if (d < 2 || d > max_arc) continue;
+		const LaserReading r = nearer(reading[i], reading[i + 1]);
+		for (int k = 1; k < d; ++k)
+		{
+			auto& at = between[((ray[i] + step * k) % S + S) % S];
+			at = nearer(at, r);
+		}
 	}
+	for (int k = 0; k < S; ++k)
+		if (along[k].kind == Kind::Unseen) along[k] = between[k];
 	return along;
 }
 

@@ -14,6 +14,7 @@
 
 #include <opencv2/core/utility.hpp>
 
+#include <algorithm>
 #include <array>
 #include <exception>
 #include <filesystem>
@@ -157,12 +158,25 @@ void writeBatch(const Batch& b, RawlogWriter* writer, bool skip_bad, RawlogScanS
 	}
 }
 
-/** Whether `obj` is an image labelled `label`, or a sensory frame holding one. */
-bool holdsImage(const mrpt::serialization::CSerializable::Ptr& obj, const std::string& label)
+/** Cuts off `b`'s tail, from the object holding its last image on, with that
+ * object's images and any image whose laser scan came in the tail: a batch of
+ * its own, read on, for the last image's laser scan may still come (a sensory
+ * frame may hold it with the next image). */
+Batch tailFrom(Batch& b)
 {
-	if (auto image = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(obj)) return image->sensorLabel == label;
-	auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj);
-	return sf && sf->getObservationBySensorLabel(label) != nullptr;
+	Batch tail;
+	std::size_t first = b.images.size() - 1, cut = b.after[first];
+	while (first > 0 && (b.after[first - 1] >= cut || (b.lasers[first - 1] && b.fused_after[first - 1] >= cut)))
+		--first, cut = std::min(cut, b.after[first]);
+	tail.objects.assign(b.objects.begin() + static_cast<std::ptrdiff_t>(cut), b.objects.end());
+	for (std::size_t k = first; k < b.images.size(); ++k)
+	{
+		tail.after.push_back(b.after[k] - cut), tail.images.push_back(b.images[k]);
+		tail.lasers.push_back(b.lasers[k]), tail.fused_after.push_back(b.lasers[k] ? b.fused_after[k] - cut : 0);
+	}
+	b.objects.resize(cut), b.after.resize(first), b.images.resize(first);
+	b.lasers.resize(first), b.fused_after.resize(first);
+	return tail;
 }
 }  // namespace
 
@@ -186,17 +200,17 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	std::optional<FloorAdaptation> adaptation;
 	if (rf.params().floor_adaptation) adaptation.emplace(rf, rf.params().adaptation_memory);
 	Batch b;
-	const auto flush = [&] {
+	const bool fusing = !o.fuse_with.empty() && !o.decode_only;
+	// A batch ends only between objects: a sensory frame may hold several images. When fusing,
+	// an image still without its laser scan goes on into the next batch with what follows it.
+	const auto flush = [&](bool at_end) {
+		Batch tail = fusing && !at_end && !b.images.empty() && !b.lasers.back() ? tailFrom(b) : Batch{};
 		processBatch(b, rf, o.decode_only, adaptation ? &*adaptation : nullptr);
 		writeBatch(b, writer ? &*writer : nullptr, o.skip_bad_images, sum);
-		b = Batch{};
+		b = std::move(tail);
 	};
-	const bool fusing = !o.fuse_with.empty() && !o.decode_only;
-	// A batch ends only between objects: a sensory frame may hold several
-	// images. When fusing, only before an image: the last one's laser scan
-	// may still come, and once the next image is read it cannot (ObservationPairer).
 	loop.onObject([&](const mrpt::serialization::CSerializable::Ptr& obj) {
-		if (b.images.size() >= batch_images && (!fusing || holdsImage(obj, o.omni_label))) flush();
+		if (b.images.size() >= batch_images) flush(false);
 		b.objects.push_back(obj);
 	});
 	loop.on<mrpt::obs::CObservationImage>(o.omni_label, [&](const mrpt::obs::CObservationImage::Ptr& image) {
@@ -223,7 +237,7 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 								 " scans: scan the rawlog they were made from, or give the new ones another sensor_label");
 	});
 	loop.run(progress);
-	flush();
+	flush(true);
 	loop.requireImagesUnchanged();  // the last batch was decoded after the end of the file
 	if (sum.images == 0 && sum.skipped > 0)
 		throw std::runtime_error("every " + o.omni_label + " image in '" + o.input + "' was bad; the first: " +

@@ -44,9 +44,9 @@ struct LaserReading
 };
 
 /** Along every ray of `omni`, the nearest laser return whose bearing from the
- * omnicam falls on it. A ray of the laser's field of view that no laser ray
- * falls on (the sensors' offset spreads the rays) takes the nearer reading of
- * its two neighbours. */
+ * omnicam falls on it. A ray between two neighbouring laser rays that no laser
+ * ray falls on (the sensors' offset spreads the rays; a coarse laser) takes the
+ * nearer reading of those two. */
 std::vector<LaserReading> laserAlong(const mrpt::obs::CObservation2DRangeScan& laser,
 									 const mrpt::obs::CObservation2DRangeScan& omni);
 
