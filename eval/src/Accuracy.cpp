@@ -51,7 +51,7 @@ struct Moment
 class Moments
 {
    public:
-	Moments(const AccuracyOptions& o) : o_(o) {}
+	explicit Moments(const AccuracyOptions& o) : o_(o) {}
 	/** Feeds a scan; returns the moment the previous omnicam scan made, when this is the next one. */
 	std::optional<Moment> add(const CObservation2DRangeScan::Ptr& scan)
 	{

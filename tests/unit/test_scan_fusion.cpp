@@ -30,17 +30,17 @@ CObservation2DRangeScan omniScan()
 	return s;
 }
 
-/** A 180-degree laser of 181 rays 0.16 m ahead of the omnicam, reading a wall
- * across the robot's path at x = 3.0 m (robot frame) and nothing behind it. */
-CObservation2DRangeScan laserScan()
+/** A 180-degree laser of `rays` rays 0.16 m ahead of the omnicam, reading a
+ * wall across the robot's path at x = 3.0 m (robot frame) and nothing behind it. */
+CObservation2DRangeScan laserScan(int rays = 181)
 {
 	CObservation2DRangeScan s;
 	s.aperture = static_cast<float>(M_PI);
 	s.rightToLeft = true;
 	s.maxRange = 19.8f;
 	s.sensorPose = mrpt::poses::CPose3D(0.16, 0, 0.30, 0, 0, 0);
-	s.resizeScan(181);
-	for (int i = 0; i < 181; ++i)
+	s.resizeScan(rays);
+	for (int i = 0; i < rays; ++i)
 	{
 		const double a = s.getScanAngle(i);
 		const double r = std::cos(a) > 0.05 ? (3.0 - 0.16) / std::cos(a) : 0;
@@ -113,16 +113,7 @@ TEST(ScanFusion, ACoarseLaserSeesTheArcsBetweenItsRays)
 {
 	// 19 rays over 180 degrees, 10 degrees apart: every omnicam ray between two of them is in
 	// the laser's view and takes the nearer of the two readings; behind it, none.
-	auto laser = laserScan();
-	laser.resizeScan(19);
-	for (int i = 0; i < 19; ++i)
-	{
-		const double a = laser.getScanAngle(i);
-		const double r = std::cos(a) > 0.05 ? (3.0 - 0.16) / std::cos(a) : 0;
-		laser.setScanRange(i, static_cast<float>(r));
-		laser.setScanRangeValidity(i, r > 0 && r < 19.8);
-	}
-	const auto along = laserAlong(laser, omniScan());
+	const auto along = laserAlong(laserScan(19), omniScan());
 	for (int deg = -85; deg <= 85; ++deg)
 		EXPECT_NE(along[rayAt(deg * M_PI / 180)].kind, LaserReading::Kind::Unseen) << deg;
 	for (int deg = 100; deg <= 260; deg += 10) EXPECT_EQ(along[rayAt(deg * M_PI / 180)].kind, LaserReading::Kind::Unseen) << deg;
