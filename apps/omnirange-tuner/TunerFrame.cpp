@@ -10,7 +10,7 @@
 #include <omnirange_apps/CommandLine.h>
 
 #include <omnirange/config/OptionsTable.h>
-#include <omnirange/io/OutputRule.h>
+#include <omnirange/config/Output.h>
 
 #include <wx/button.h>
 #include <wx/display.h>

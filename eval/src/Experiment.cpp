@@ -7,11 +7,10 @@
 #include <omnirange_slam/IcpSlamIni.h>
 #include "omnirange_eval/SensoryFrameFormat.h"
 
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/io/ImageFile.h>
 #include <omnirange/config/ErrorText.h>
 #include <omnirange/config/Temporaries.h>
-#include <omnirange/io/OutputRule.h>
 #include <omnirange/io/Progress.h>
 #include <omnirange/io/RawlogScan.h>
 
@@ -34,7 +33,6 @@ namespace omnirange::eval
 namespace
 {
 constexpr const char* kProgram = "omnirange-experiment";
-constexpr const char* kFailedRun = "failed run";  // in the marker of the partial output a failed run kept
 /** The report's copy of the sensor's icp-slam ini (Experiment::mrptIni()), which the guarded matcher reads too. */
 std::string icpIniOf(const SensorMaps& s) { return "icp-slam_" + s.tag + ".ini"; }
 constexpr unsigned long long kFullDisk = 1 << 20;  // [bytes] free: too few for any stage's output
@@ -95,11 +93,9 @@ std::string Experiment::slamFolder(const std::string& engine, const std::string&
 void Experiment::stage(const std::string& name, const std::function<void()>& body)
 {
 	MRPT_LOG_INFO_STREAM("[" << ++stage_ << "/" << stages_ << "] " << name);
-	// What the stage writes (MRPT's programs name their own files) is the run's own, listed once written: a
-	// run killed in it leaves a folder the next run removes; killed later, one it can tell a user's additions in.
 	try
 	{
-		fillListed(out_, body);
+		body();
 	}
 	catch (const std::exception& e)
 	{
@@ -137,10 +133,12 @@ Metrics Experiment::run()
 									c_.icp_laser_ini, c_.icp_omni_ini,  c_.map_laser_ini,  c_.map_omni_ini,
 									c_.rbpf_laser_ini, c_.rbpf_omni_ini, c_.icp_fused_ini, c_.map_fused_ini};
 	inputs.insert(inputs.end(), c_.world_maps.begin(), c_.world_maps.end());
-	StagedFolder staged(fs::absolute(c_.output).string(), kProgram, inputs, force_);
-	const std::string report = staged.target();
+	const Output report{fs::absolute(c_.output).string(), OutputKind::Folder};
+	requireOutputsAllowed({report}, kProgram, inputs, force_);
 	c_.requireEnoughFrames();  // the output first: its refusal is the one a user must see
-	const std::string staging = staged.path();
+	OutputSet set(kProgram, inputs, force_);
+	const std::string staging = set.stage(report);
+	fs::create_directory(staging);
 	setFolder(staging);
 	Metrics m;
 	try
@@ -149,36 +147,12 @@ Metrics Experiment::run()
 	}
 	catch (const std::exception& e)
 	{
-		staged.keep();
-		// What the failed run made, kept for a look where a failed run of ours kept it
-		// before, unless a user has put something of theirs in there since; listed,
-		// so that the next failed run can tell.
-		std::string failed = report + ".failed";
-		try
-		{
-			listOutputFolder(staging);
-			noteInMarker(staging, kFailedRun, false);
-		}
-		catch (const std::exception&)  // not listed (its marker cannot be written): the first error is the one to say
-		{
-		}
-		// Only a failed run's folder, whole, is replaced there: a report a user ran into that name is a report.
-		const auto failedRunsAlone = [&] {
-			const auto lines = markerLines(failed);
-			return isOutputFolderOf(failed, kProgram) && firstUnlistedIn(failed).empty() &&
-				   std::find(lines.begin(), lines.end(), kFailedRun) != lines.end();
-		};
-		std::error_code ec;
-		if (fs::exists(fs::symlink_status(failed, ec)) && !failedRunsAlone())
-			failed = staging;
-		else if (fs::remove_all(failed, ec), fs::rename(staging, failed, ec); ec)
-			failed = staging;  // it cannot be moved (made read-only meanwhile): said where it is, the error kept
-		// The message names the files where they are now, not in the staging folder they were written in.
-		throw std::runtime_error(namingTheOutput(e.what(), staging, failed) + " (partial output in '" + failed + "'; '" +
-								 report + "' is as it was)");
+		set.keep();  // for a look, until the next run beside it
+		throw std::runtime_error(std::string(e.what()) + " (partial output in '" + staging + "'; '" + report.path +
+								 "' is as it was)");
 	}
-	staged.commit();
-	setFolder(report);
+	set.commit();
+	setFolder(outputPath(report.path));
 	return m;
 }
 

@@ -1,6 +1,6 @@
 #include "omnirange_eval/GridMaps.h"
 
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/io/RawlogProcessor.h>
 
 #include <mrpt/io/CFileGZOutputStream.h>

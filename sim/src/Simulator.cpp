@@ -5,12 +5,11 @@
 #include "omnirange_sim/Route.h"
 #include "omnirange_sim/SensorModels.h"
 
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/io/ImageFile.h>
 #include <omnirange/config/OptionsTable.h>
 #include <omnirange/config/SensorLabels.h>
 #include <omnirange/core/Threads.h>
-#include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -38,7 +37,7 @@ constexpr char kProgram[] = "omnirange-sim";  // the outputs' owner (OutputRule.
  * beside the file written, as its images folder does. */
 std::string stemOf(const std::string& rawlog)
 {
-	const std::string dir = imagesDirFor(replacedFileOf(rawlog));
+	const std::string dir = imagesDirFor(std::filesystem::is_symlink(rawlog) ? fileLedTo(rawlog) : rawlog);
 	return dir.substr(0, dir.size() - std::string("_Images").size());
 }
 }  // namespace
@@ -69,9 +68,8 @@ SimInputs readInputs(const SimOptions& o)
 	const auto requireOutputs = [&] {
 		requireRawlogOutputAllowed(o.output, kProgram, inputs, o.force);
 		// A true map through a link onto the rawlog or into its images would be replaced by them, or they by it.
-		requireDistinctOutputs({o.output, imagesDirFor(replacedFileOf(o.output)), base + "_truemap.png",
-								base + "_truemap.gridmap.gz"});
-		requireOutputsAllowed({{base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::GridMap}},
+		requireOutputsAllowed({{o.output, OutputKind::Rawlog}, {base + "_Images", OutputKind::Folder},
+							   {base + "_truemap.png", OutputKind::Image}, {base + "_truemap.gridmap.gz", OutputKind::GridMap}},
 							  kProgram, inputs, o.force);
 	};
 	requireOutputs();
@@ -129,8 +127,7 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	const OmniRenderer renderer(in.world, robot);
 
 	// The frames: ODOMETRY, GT, OMNICAM, TRUTH, BODY, LASER at each pose.
-	RawlogWriter out(o.output, kProgram);
-	if (o.force) out.replaceAnyImagesFolder();
+	RawlogWriter out(o.output, kProgram, o.force);
 	OdometrySimulator odometry(robot.odometry, robot.robot.seed * 31u + 1u);
 	std::mt19937_64 laser_rng(robot.robot.seed * 131u + 7u);
 	const auto& cam = robot.omnicam;
@@ -153,12 +150,11 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 		if (progress) progress(static_cast<int>(k + 1), static_cast<int>(in.poses.size()));
 	}
 
-	// The true map, as an MRPT grid map and a PNG: staged, then put in place
-	// after the images and before the rawlog (RawlogWriter::commit()), so that
+	// The true map, as an MRPT grid map and a PNG, goes in with the rawlog:
 	// no rawlog is ever beside another run's true map.
 	const std::string base = stemOf(o.output);
 	const auto grid = trueMap(in.world, o.map_resolution, robot.omnicam.camera.h);
-	StagedFile map(base + "_truemap.gridmap.gz", [&](const std::string& tmp) {
+	out.outputs().write({base + "_truemap.gridmap.gz", OutputKind::GridMap}, [&](const std::string& tmp) {
 		{
 			mrpt::io::CFileGZOutputStream f;
 			errno = 0;
@@ -169,8 +165,8 @@ SimSummary Simulator::run(const SimOptions& o, const std::function<void(int, int
 	});
 	mrpt::img::CImage png;
 	grid.getAsImage(png, true);  // north up, as saveAsBitmapFile() draws it
-	StagedFile picture = stageImage(base + "_truemap.png", png.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY));
-	out.commit({&map, &picture});
+	stageImage(out.outputs(), base + "_truemap.png", png.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY));
+	out.commit();
 
 	SimSummary s;
 	s.frames = static_cast<int>(in.poses.size());

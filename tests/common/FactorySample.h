@@ -1,10 +1,11 @@
 #pragma once
 // What the in-process tests share: the factory sample, its ini, a fresh
-// folder per test, a file's text.
+// folder per test, a file's text, what a call throws.
 
 #include <omnirange/core/Rangefinder.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -37,6 +38,20 @@ inline std::string readText(const std::string& path)
 	std::stringstream s;
 	s << in.rdbuf();
 	return s.str();
+}
+
+/** What `f` throws ("" if nothing). */
+inline std::string errorOf(const std::function<void()>& f)
+{
+	try
+	{
+		f();
+	}
+	catch (const std::exception& e)
+	{
+		return e.what();
+	}
+	return "";
 }
 
 }  // namespace omnirange::test

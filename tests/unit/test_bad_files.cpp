@@ -26,18 +26,7 @@ namespace
 {
 std::string dir(const std::string& name) { return test::freshDir("omnirange_bad_files", name); }
 
-std::string errorOf(const std::function<void()>& f)
-{
-	try
-	{
-		f();
-	}
-	catch (const std::exception& e)
-	{
-		return e.what();
-	}
-	return "";
-}
+using test::errorOf;
 
 std::string jpeg()
 {
@@ -244,23 +233,4 @@ TEST(BadFiles, ATextFileOfOneEndlessLineIsRefusedAtItsCap)
 	rows = 0;
 	forEachDataLine(d + "/ok.csv", "laser log", [&](int, const std::string&) { ++rows; });
 	EXPECT_EQ(rows, 2);
-}
-
-TEST(BadFiles, AFileMissingBecauseItsWriterWasKilledNamesTheCopyThatHoldsIt)
-{
-	// A run killed between moving the old ini aside and putting the new one in place.
-	const std::string d = dir("moved_aside");
-	std::ofstream(d + "/.robot.ini.old-4242") << "[rangefinder]\n";
-	try
-	{
-		requireRegularFile(d + "/robot.ini", "ini file");
-		FAIL() << "a missing file must be refused";
-	}
-	catch (const std::runtime_error& e)
-	{
-		EXPECT_NE(std::string(e.what()).find(".robot.ini.old-4242'"), std::string::npos) << e.what();
-	}
-	// Without such a copy, or with only a user's file of another form, the reader says "no file" itself.
-	fs::rename(d + "/.robot.ini.old-4242", d + "/.robot.ini.old-mine");
-	EXPECT_NO_THROW(requireRegularFile(d + "/robot.ini", "ini file"));
 }

@@ -1,7 +1,7 @@
 // Writing one section into a person's ini: values replaced in place, new
 // keys at the section's end, every comment and other section kept.
 #include <omnirange/core/Rangefinder.h>
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/config/IniSectionWriter.h>
 #include <omnirange/config/OptionsTable.h>
 
@@ -124,11 +124,18 @@ TEST(IniSectionWriter, AnUpdateNeverReplacesAChangeMadeSinceItWasRead)
 	std::ofstream(path) << "[rangefinder]\nN = 20\n";
 	const std::string state = fileStateOf(path);
 	std::ofstream(path, std::ios::app) << "K = 3\n";
-	EXPECT_THROW(updateFileAtomically(path, "[rangefinder]\nN = 10\n", state), ChangedMeanwhile);
+	const auto update = [&](const std::string& read_state) {
+		OutputSet set;
+		set.write({path, OutputKind::Ini}, "[rangefinder]\nN = 10\n");
+		set.requireUnchanged(path, read_state);
+		set.commit();
+	};
+	EXPECT_THROW(update(state), ChangedMeanwhile);
 	EXPECT_EQ(read(path), "[rangefinder]\nN = 20\nK = 3\n");
-	EXPECT_FALSE(std::filesystem::exists(temporaryOf(path)));
+	for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(path).parent_path()))
+		EXPECT_NE(e.path().filename().string().rfind(".omnirange-", 0), 0u) << e.path();  // nothing staged is left
 	// Read as it is now, the update goes in.
-	updateFileAtomically(path, "[rangefinder]\nN = 10\n", fileStateOf(path));
+	update(fileStateOf(path));
 	EXPECT_EQ(read(path), "[rangefinder]\nN = 10\n");
 }
 
@@ -169,17 +176,15 @@ TEST(IniSectionWriter, AFileWrittenWithTheKeysGoesInWithTheIniOrNeitherDoes)
 	std::filesystem::remove_all(dir), std::filesystem::create_directories(dir);
 	std::ofstream(path) << "[rangefinder]\nR = 192\n";
 	std::ofstream(yaml) << "old";
-	{
-		StagedFile staged(yaml, writerOf(yaml, "new"));
-		std::filesystem::remove(temporaryOf(yaml));  // its rename, the set's second, fails
-		EXPECT_THROW(writeIniSection(path, "rangefinder", {{"R", "200"}}, {}, {&staged}), std::runtime_error);
-	}
+	// Its writing fails (a full disk): neither goes in.
+	const auto failing = [&](OutputSet& set) {
+		set.write({yaml, OutputKind::Text}, [](const std::string&) { throw std::runtime_error("disk full"); });
+	};
+	EXPECT_THROW(writeIniSection(path, "rangefinder", {{"R", "200"}}, {}, {"", {}, failing}), std::runtime_error);
 	EXPECT_EQ(read(path), "[rangefinder]\nR = 192\n");
 	EXPECT_EQ(read(yaml), "old");
-	{
-		StagedFile staged(yaml, writerOf(yaml, "new"));
-		writeIniSection(path, "rangefinder", {{"R", "200"}}, {}, {&staged});
-	}
+	writeIniSection(path, "rangefinder", {{"R", "200"}}, {},
+					{"", {}, [&](OutputSet& set) { set.write({yaml, OutputKind::Text}, "new"); }});
 	EXPECT_EQ(read(path), "[rangefinder]\nR = 200\n");
 	EXPECT_EQ(read(yaml), "new");
 	EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 2);

@@ -7,7 +7,7 @@
 #include <omnirange/io/ObservationImage.h>
 #include <omnirange/config/OptionsTable.h>
 #include <omnirange/io/Progress.h>
-#include <omnirange/io/OutputRule.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/io/RawlogProcessor.h>
 
 
@@ -239,6 +239,7 @@ LogScore TunerSession::scoreAll(const std::function<void(int, int)>& progress)
 RawlogTrainingResult TunerSession::train(const std::string& histogram, TrainingParams training,
 										 const std::function<void(std::size_t)>& progress)
 {
+	images_.require();  // trained on other pictures than the frames shown, the model would not be theirs
 	RawlogTrainingOptions o;
 	o.input = o_.rawlog;
 	o.omni_label = o_.omni_label;

@@ -4,9 +4,8 @@
 
 #include <omnirange_eval/Figures.h>
 
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/io/ImageFile.h>
-#include <omnirange/io/OutputRule.h>
 
 #include <filesystem>
 #include <optional>
@@ -44,29 +43,24 @@ AccuracyApp::AccuracyApp(Options o) : mrpt::system::COutputLogger("omnirange-acc
 eval::AccuracyResult AccuracyApp::run()
 {
 	const auto& a = o_.accuracy;
-	requireOutputsAllowed({{o_.output + "_pairs.csv", OutputKind::Text, eval::kPairsCsvBegins},
-						   {o_.output + "_histogram.png", OutputKind::Image},
-						   {o_.output + "_table.md", OutputKind::Text, eval::kAccuracyTableBegins},
-						   {o_.output + "_truth.md", OutputKind::Text, eval::kTruthTableBegins}},
-						  "omnirange-accuracy", {o_.input});
+	const std::vector<Output> outputs{{o_.output + "_pairs.csv", OutputKind::Text, eval::kPairsCsvBegins},
+									  {o_.output + "_histogram.png", OutputKind::Image},
+									  {o_.output + "_table.md", OutputKind::Text, eval::kAccuracyTableBegins},
+									  {o_.output + "_truth.md", OutputKind::Text, eval::kTruthTableBegins}};
+	requireOutputsAllowed(outputs, "omnirange-accuracy", {o_.input});
 	const eval::AccuracyResult r = eval::evaluateAccuracy(o_.input, a);
 	const std::string table = r.table(a.max_difference);
 	// The files of one run, all or none.
-	const auto text = [](const std::string& content) {
-		return [&content](const std::string& tmp) { writeFileAtomically(tmp, content); };
-	};
-	StagedFile pairs(o_.output + "_pairs.csv", text(r.csv));
-	StagedFile histogram = stageImage(
-		o_.output + "_histogram.png",
-		eval::differenceHistogram(r.stats.differences, o_.title.empty() ? o_.input : o_.title, a.max_difference));
-	StagedFile table_md(o_.output + "_table.md", text(table));
+	OutputSet set("omnirange-accuracy", {o_.input});
+	set.write(outputs[0], r.csv);
+	stageImage(set, outputs[1].path,
+			   eval::differenceHistogram(r.stats.differences, o_.title.empty() ? o_.input : o_.title, a.max_difference));
+	set.write(outputs[2], table);
 	// With the truth: the omnicam's table, then the laser, the omnicam and a fused scan on the laser's rays.
-	const std::string truth_table = r.truth.frames > 0 ? r.truth.table() + "\n" + r.inViewTable() : "";
-	std::optional<StagedFile> truth;
-	if (r.truth.frames > 0) truth.emplace(o_.output + "_truth.md", text(truth_table));
-	std::vector<StagedFile*> files{&pairs, &histogram, &table_md};
-	if (truth) files.push_back(&*truth);
-	commitAll(files);
+	const bool truth = r.truth.frames > 0;
+	const std::string truth_table = truth ? r.truth.table() + "\n" + r.inViewTable() : "";
+	if (truth) set.write(outputs[3], truth_table);
+	set.commit();
 	// No truth in this rawlog: an earlier run's table beside these files would read as theirs (checked ours above).
 	if (!truth) std::filesystem::remove(o_.output + "_truth.md");
 	MRPT_LOG_INFO_STREAM("\n" << table);

@@ -2,8 +2,7 @@
 
 #include "omnirange_apps/CommandLine.h"
 
-#include <omnirange/config/AtomicWrite.h>
-#include <omnirange/io/OutputRule.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/config/IniSectionWriter.h>
 #include <omnirange/config/LayeredIni.h>
@@ -21,6 +20,7 @@ namespace omnirange::app
 {
 namespace
 {
+constexpr char kProgram[] = "omnirange-calibrate";
 // Past these, a calibration is doubted: a warning, and nothing saved without --accept.
 constexpr double kMaxRms = 1.0;  // [px] reprojection error over the boards
 constexpr double kMaxCentreSpread = 3.0;  // [px] the principal point's move without a group of boards
@@ -79,23 +79,24 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	TCLAP::MultiArg<std::string> rims("", "rim", "an ordinary image: find the mirror's centre and rim radius (repeat; a few images)", false, "IMAGE", cmd);
 	TCLAP::ValueArg<std::string> ocam("", "ocamcalib", "OCamCalib's calib_results.txt: the camera's polynomial model (with --save-to: into the ini)", false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> board("", "board", "inner corners, COLUMNSxROWS", false, "8x6", "CxR", cmd);
-	TCLAP::ValueArg<double> square("", "square", "side of a board square [m]", false, o.board.square, "M", cmd);
+	BoundArgs bound(cmd);
+	bound.value("", "square", "side of a board square [m]", o.board.square, "M");
 	TCLAP::ValueArg<std::string> out("o", "output", "with --checkerboard: write the intrinsics here (OpenCV YAML)", false, "", "FILE", cmd);
-	TCLAP::ValueArg<std::string> omni("", "omni-label", "label of the images", false, c.omni_label, "LABEL", cmd);
-	TCLAP::ValueArg<std::string> laser("", "laser-label", "label of the laser scans", false, c.laser_label, "LABEL", cmd);
-	TCLAP::ValueArg<double> max_dt("", "max-dt", "largest time between an image and its scan [s]", false, c.max_dt, "S", cmd);
-	TCLAP::ValueArg<int> every("", "every", "use every N-th image/scan pair", false, c.every, "N", cmd);
+	bound.value("", "omni-label", "label of the images", c.omni_label, "LABEL");
+	bound.value("", "laser-label", "label of the laser scans", c.laser_label, "LABEL");
+	bound.value("", "max-dt", "largest time between an image and its scan [s]", c.max_dt, "S");
+	bound.value("", "every", "use every N-th image/scan pair", c.every, "N");
 	TCLAP::SwitchArg accept("", "accept",
 							"save and exit 0 even when the result looks unsure (RMS over 1 px, an implausible mirror disc)",
 							cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	bound.fill();
 	o.accept = accept.getValue();
 	o.ini = ini.ini.getValue(), o.section = ini.section.getValue(), o.histogram = hist.getValue();
-	c.input = in.getValue(), c.omni_label = omni.getValue(), c.laser_label = laser.getValue();
-	c.max_dt = max_dt.getValue(), c.every = every.getValue();
+	c.input = in.getValue();
 	o.verbosity = verbosity.level();
-	o.checkerboards = boards.getValue(), o.intrinsics_output = optionalPath(out), o.board.square = square.getValue();
+	o.checkerboards = boards.getValue(), o.intrinsics_output = optionalPath(out);
 	if (!board_dir.getValue().empty()) addImagesOf(board_dir.getValue(), o.checkerboards);
 	o.checkerboard_dir = board_dir.getValue();
 	o.rim_images = rims.getValue(), o.save_to = optionalPath(save), o.ocamcalib = ocam.getValue();
@@ -127,13 +128,13 @@ CalibrateApp::CalibrateApp(Options o) : mrpt::system::COutputLogger("omnirange-c
 	if (!o_.ini.empty())
 		for (const auto& base : iniBasesOf(o_.ini)) inputs_.push_back(base);
 	requireOutputsAllowed({{o_.save_to, OutputKind::Ini}, {o_.intrinsics_output, OutputKind::Text, kOpenCvYamlBegins}},
-						  "omnirange-calibrate", inputs_);
+						  kProgram, inputs_);
 	if (!o_.save_to.empty()) RangefinderParams::requireWritable(o_.save_to, o_.section);
 	save_to_file_ = fileLedTo(o_.save_to);
 }
 
 void CalibrateApp::saveCameraKeys(const CameraParams& cam, const std::vector<std::string>& model_keys,
-								  const std::vector<StagedFile*>& with) const
+								  const std::function<void(OutputSet&)>& with) const
 {
 	saveKeys(cameraKeys(cam, model_keys), with);
 	std::printf("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), o_.section.c_str(),
@@ -141,13 +142,11 @@ void CalibrateApp::saveCameraKeys(const CameraParams& cam, const std::vector<std
 }
 
 void CalibrateApp::saveKeys(const std::vector<std::pair<std::string, std::string>>& keys,
-							const std::vector<StagedFile*>& with) const
+							const std::function<void(OutputSet&)>& with) const
 {
-	// An ini replaced meanwhile by a link (to its base, to another camera's ini) is not written through; the
-	// whole check would take the -o YAML, staged by now, for a leftover.
+	// An ini replaced meanwhile by a link (to its base, to another camera's ini) is not written through.
 	requireStillLeadsTo(o_.save_to, save_to_file_, "the run began");
-	requireApartFromInputs(outputPath(o_.save_to), OutputKind::Ini, inputs_);
-	writeIniSection(o_.save_to, o_.section, keys, RangefinderParams::table().comments(), with);
+	writeIniSection(o_.save_to, o_.section, keys, RangefinderParams::table().comments(), {kProgram, inputs_, with});
 }
 
 void CalibrateApp::runModes()
@@ -274,16 +273,17 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 			throw std::runtime_error("the checkerboards' calibration is no camera the rangefinder takes (" +
 									 std::string(e.what()) + "); nothing saved");
 		}
-	std::optional<StagedFile> yaml;
-	if (!o_.intrinsics_output.empty())
-		yaml.emplace(o_.intrinsics_output, [&](const std::string& tmp) { writeFileAtomically(tmp, c.yaml()); });
-	if (!o_.save_to.empty())
+	const Output yaml{o_.intrinsics_output, OutputKind::Text, kOpenCvYamlBegins};
+	const auto stageYaml = [&](OutputSet& set) {
+		if (!yaml.path.empty()) set.write(yaml, c.yaml());
+	};
+	if (!o_.save_to.empty()) saveCameraKeys(cam, {"xi", "gamma", "aspect", "skew", "k1", "k2", "p1", "p2"}, stageYaml);
+	else if (!yaml.path.empty())
 	{
-		saveCameraKeys(cam, {"xi", "gamma", "aspect", "skew", "k1", "k2", "p1", "p2"},
-					   yaml ? std::vector<StagedFile*>{&*yaml} : std::vector<StagedFile*>{});
+		OutputSet set(kProgram, inputs_);
+		stageYaml(set);
+		set.commit();
 	}
-	else if (yaml)
-		yaml->commit();
 	return c;
 }
 

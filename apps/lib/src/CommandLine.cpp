@@ -2,7 +2,7 @@
 
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/io/MemoryLimit.h>
-#include <omnirange/io/OutputRule.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/config/ErrorText.h>
 #include <omnirange/config/Temporaries.h>
 

@@ -13,19 +13,20 @@ ExperimentApp::Options ExperimentApp::parse(int argc, const char* const* argv)
 	TCLAP::UnlabeledValueArg<std::string> ini("ini", "the experiment's ini", true, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> output("o", "output", "report folder, overriding the ini's", false, "", "DIR", cmd);
 	TCLAP::ValueArg<int> frames("n", "max-frames", "simulate at most this many frames, overriding the ini", false, o.max_frames, "N", cmd);
-	TCLAP::ValueArg<std::string> robot("", "robot", "robot ini for the simulator, overriding the ini's", false, "", "INI", cmd);
-	TCLAP::SwitchArg study("", "study-candidates",
-						   "with learn = true, also score every candidate learning tried on the rest of the route "
-						   "against the truth, into candidates_on_route.csv in the report folder (a study; minutes more)",
-						   cmd);
+	BoundArgs bound(cmd);
+	bound.value("", "robot", "robot ini for the simulator, overriding the ini's", o.robot, "INI");
+	bound.flag("study-candidates",
+			   "with learn = true, also score every candidate learning tried on the rest of the route against the truth, "
+			   "into candidates_on_route.csv in the report folder (a study; minutes more)",
+			   o.study_candidates);
 	ForceArg force(cmd);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.ini = ini.getValue(), o.output = output.getValue(), o.max_frames = frames.getValue(), o.robot = robot.getValue();
+	bound.fill();
+	o.ini = ini.getValue(), o.output = output.getValue(), o.max_frames = frames.getValue();
 	if (frames.isSet() && o.max_frames < 1) throw std::invalid_argument("-n must be at least 1 frame");
 	if (output.isSet()) o.output = requiredPath(output);
 	o.force = force.value();
-	o.study_candidates = study.getValue();
 	o.verbosity = verbosity.level();
 	return o;
 }

@@ -4,7 +4,7 @@
 
 #include <omnirange/io/RawlogWriter.h>
 
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/io/Progress.h>
 
 #include <algorithm>

@@ -5,8 +5,7 @@
 #include <omnirange_eval/GridMaps.h>
 #include <omnirange_slam/IcpSlamIni.h>
 
-#include <omnirange/config/AtomicWrite.h>
-#include <omnirange/io/OutputRule.h>
+#include <omnirange/config/Output.h>
 
 #include <cmath>
 #include <cstdio>
@@ -14,6 +13,11 @@
 
 namespace omnirange::app
 {
+namespace
+{
+constexpr char kProgram[] = "omnirange-slam";
+}
+
 SlamApp::Options SlamApp::parse(int argc, const char* const* argv)
 {
 	Options o;
@@ -24,13 +28,13 @@ SlamApp::Options SlamApp::parse(int argc, const char* const* argv)
 									 true, "", "INI", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "folder for _finalmap_.simplemap and log_estimated_path.txt", true, "",
 									 "DIR", cmd);
-	TCLAP::ValueArg<std::string> label("", "label", "label of the scans", false, o.scan_label, "LABEL", cmd);
-	TCLAP::ValueArg<std::string> odometry("", "odometry-label", "label of the odometry", false, o.odometry_label,
-										  "LABEL", cmd);
+	BoundArgs bound(cmd);
+	bound.value("", "label", "label of the scans", o.scan_label, "LABEL");
+	bound.value("", "odometry-label", "label of the odometry", o.odometry_label, "LABEL");
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
+	bound.fill();
 	o.input = in.getValue(), o.ini = ini.getValue(), o.output = requiredPath(out);
-	o.scan_label = label.getValue(), o.odometry_label = odometry.getValue();
 	o.verbosity = verbosity.level();
 	return o;
 }
@@ -48,8 +52,12 @@ slam::GuardedIcpResult SlamApp::run()
 								 ": icp-slam follows this, omnirange-slam does not (it matches each scan against a "
 								 "points map of its keyframes, from the rawlog's first entry)");
 	// icp-slam's kind of outputs, in a folder of this program's that is swapped in whole.
-	StagedFolder staged(o_.output, "omnirange-slam", {o_.input, o_.ini}, false);
-	const std::string map = staged.path() + "/_finalmap_.simplemap", path = staged.path() + "/log_estimated_path.txt";
+	const std::vector<std::string> inputs{o_.input, o_.ini};
+	const Output folder{o_.output, OutputKind::Folder};
+	requireOutputsAllowed({folder}, kProgram, inputs);
+	OutputSet set(kProgram, inputs);
+	const std::string staged = set.stage(folder);
+	const std::string map = staged + "/_finalmap_.simplemap", path = staged + "/log_estimated_path.txt";
 	const slam::GuardedIcpResult r = slam::runGuardedIcp(o_.input, o_.scan_label, o_.odometry_label, options);
 	std::string text = "% time [s], x [m], y [m], phi [rad]: the estimated pose at every scan\n";
 	char line[128];
@@ -58,11 +66,10 @@ slam::GuardedIcpResult SlamApp::run()
 		std::snprintf(line, sizeof line, "%.6f %.6f %.6f %.6f\n", p.t, p.pose.x(), p.pose.y(), p.pose.phi());
 		text += line;
 	}
-	staged.fill([&] {
-		eval::saveSimplemap(r.keyframes, map);
-		writeFileAtomically(path, text);
-	});
-	staged.commit();
+	std::filesystem::create_directory(staged);
+	eval::saveSimplemap(r.keyframes, map);
+	writeFileAtomically(path, text);
+	set.commit();
 	MRPT_LOG_INFO_STREAM(r.path.size() << " scans, " << r.keyframes.size() << " keyframes; " << r.matches
 									   << " matches accepted, " << r.refused_jumps << " refused as jumps, "
 									   << r.poor_matches << " too poor; " << r.weak_directions

@@ -4,9 +4,8 @@
 
 #include <omnirange_eval/Summary.h>
 
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/config/OptionsTable.h>
-#include <omnirange/io/OutputRule.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -29,17 +28,19 @@ SummaryApp::Options SummaryApp::parse(int argc, const char* const* argv)
 		"omnirange-summary: the experiments' metrics in one CSV and one page of tables (PREFIX.csv, PREFIX.md); "
 		"or, with --csv, the tables inside Markdown files made again from that CSV (--fill) or checked (--check)",
 		' ', "0.1");
-	TCLAP::ValueArg<std::string> suite("s", "suite", "the list of experiments", false, "ini/suite.txt", "FILE", cmd);
+	BoundArgs bound(cmd);
+	bound.value("s", "suite", "the list of experiments", o.suite, "FILE");
 	TCLAP::MultiArg<std::string> group("g", "group", "only this group of the list (repeatable)", false, "GROUP", cmd);
-	TCLAP::ValueArg<std::string> results("r", "results", "folder of the reports (NAME/metrics.ini)", false, "results", "DIR", cmd);
+	bound.value("r", "results", "folder of the reports (NAME/metrics.ini)", o.results, "DIR");
 	TCLAP::ValueArg<std::string> out("o", "output", "prefix of PREFIX.csv and PREFIX.md", false, "", "PREFIX", cmd);
 	TCLAP::ValueArg<std::string> csv("", "csv", "read this CSV instead of the reports", false, "", "FILE", cmd);
 	TCLAP::MultiArg<std::string> fill("", "fill", "make this file's table blocks again from --csv (repeatable)", false, "FILE", cmd);
-	TCLAP::SwitchArg check("", "check", "with --fill: change nothing; exit 1 if a block differs", cmd);
+	bound.flag("check", "with --fill: change nothing; exit 1 if a block differs", o.check);
 	VerbosityArgs verbosity(cmd);
 	parseArgs(cmd, argc, argv);
-	o.suite = suite.getValue(), o.groups = group.getValue(), o.results = results.getValue();
-	o.output = prefixPath(out, "summary"), o.csv = csv.getValue(), o.fill = fill.getValue(), o.check = check.getValue();
+	bound.fill();
+	o.groups = group.getValue();
+	o.output = prefixPath(out, "summary"), o.csv = csv.getValue(), o.fill = fill.getValue();
 	o.verbosity = verbosity.level();
 	if (!o.fill.empty() && o.csv.empty()) throw std::runtime_error("--fill needs --csv");
 	if (o.check && o.fill.empty()) throw std::runtime_error("--check needs --fill");
@@ -67,7 +68,6 @@ SummaryApp::SummaryApp(Options o) : mrpt::system::COutputLogger("omnirange-summa
 
 std::string SummaryApp::filledOrChecked(const std::string& file, const std::string& csv, std::string& state)
 {
-	recoverSetOf(file);  // a page a killed --fill was replacing: the old set back before it is read
 	requireRegularFile(file, "file to fill");
 	// A Markdown page of tables, not a disk image: refused before it is read into memory.
 	constexpr std::uintmax_t kLargestPage = 64u << 20;
@@ -107,17 +107,17 @@ void SummaryApp::run()
 	if (!o_.fill.empty())
 	{
 		// Every page filled, or none: pages that quote one another stay in step.
-		std::vector<std::unique_ptr<StagedFile>> pages;
+		OutputSet pages;
 		for (const auto& f : o_.fill)
 		{
 			std::string state;
 			if (const std::string filled = filledOrChecked(f, o_.csv, state); !filled.empty())
 			{
-				pages.push_back(std::make_unique<StagedFile>(f, writerOf(f, filled)));
-				pages.back()->replacing(state);  // a user's edit meanwhile is not lost: the run fails
+				pages.write({f, OutputKind::Text}, filled);
+				pages.requireUnchanged(f, state);  // a user's edit meanwhile is not lost: the run fails
 			}
 		}
-		commitAll(pointersTo(pages));
+		pages.commit();
 		for (const auto& f : o_.fill) MRPT_LOG_INFO_STREAM(f << ": its tables are " << o_.csv << "'s now");
 		return;
 	}
@@ -129,15 +129,16 @@ void SummaryApp::run()
 									 }),
 					  entries.end());
 	if (entries.empty()) throw std::runtime_error(o_.suite + ": no experiment of the groups asked for");
-	requireOutputsAllowed({{o_.output + ".csv", OutputKind::Text, eval::kSummaryCsvBegins},
-						   {o_.output + ".md", OutputKind::Text, kSummaryPageBegins}},
-						  "omnirange-summary", {o_.suite, o_.csv});
+	const std::vector<Output> outputs{{o_.output + ".csv", OutputKind::Text, eval::kSummaryCsvBegins},
+									  {o_.output + ".md", OutputKind::Text, kSummaryPageBegins}};
+	requireOutputsAllowed(outputs, "omnirange-summary", {o_.suite, o_.csv});
 	const eval::Summary s = o_.csv.empty() ? eval::collectMetrics(entries, o_.results) : eval::readCsv(o_.csv);
 	std::string page = std::string(kSummaryPageBegins) + "\n\nMade by omnirange-summary from each report's metrics.ini.\n";
 	for (const auto& name : eval::tableNames()) page += "\n## " + name + "\n\n" + eval::markdownTable(name, s);
-	StagedFile csv(o_.output + ".csv", [&](const std::string& tmp) { writeFileAtomically(tmp, eval::toCsv(s)); });
-	StagedFile md(o_.output + ".md", [&](const std::string& tmp) { writeFileAtomically(tmp, page); });
-	commitAll({&csv, &md});
+	OutputSet set("omnirange-summary", {o_.suite, o_.csv});
+	set.write(outputs[0], eval::toCsv(s));
+	set.write(outputs[1], page);
+	set.commit();
 	MRPT_LOG_INFO_STREAM("\naccuracy (against the laser and the truth), after the training fifth:\n"
 						 << eval::markdownTable("short", s) << "\npath error, ATE RMSE / final position error:\n"
 						 << eval::markdownTable("paths", s) << "\nevery table: " << o_.output

@@ -2,9 +2,8 @@
 
 #include "omnirange_apps/CommandLine.h"
 
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 #include <omnirange/io/ImageFile.h>
-#include <omnirange/io/OutputRule.h>
 #include <omnirange/io/RawlogWriter.h>
 #include <omnirange/io/Progress.h>
 
@@ -13,6 +12,13 @@
 
 namespace omnirange::app
 {
+namespace
+{
+constexpr char kProgram[] = "omnirange-train";
+}
+
+std::vector<std::string> TrainApp::inputs() const { return {o_.training.input, imagesDirToRead(o_.training.input), o_.ini}; }
+
 TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 {
 	Options o;
@@ -83,22 +89,18 @@ RawlogTrainingResult TrainApp::run()
 	requireOutputsAllowed({{o_.output, OutputKind::Histogram}, {o_.learn_ini, OutputKind::Ini, kLearnedIniBegins},
 						   {o_.learn_candidates, OutputKind::Text, candidateColumns()}, figure("_birdseye.png"), figure("_laser.png"),
 						   figure("_fused.png")},
-						  "omnirange-train", {t.input, imagesDirToRead(t.input), o_.ini});
+						  kProgram, inputs());
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
 	Progress progress("objects read");
 	if (!o_.learn_ini.empty()) return learn(params);
 	const RawlogTrainingResult r =
 		trainFromRawlog(params, o_.training, progressAt(o_.verbosity, progress));
 	// The histogram and its figures all or none.
-	std::vector<std::unique_ptr<StagedFile>> files;
-	files.push_back(std::make_unique<StagedFile>(o_.output, [&](const std::string& tmp) { r.model.save(tmp); }));
+	OutputSet set(kProgram, inputs());
+	set.write({o_.output, OutputKind::Histogram}, r.model.serialize());
 	if (!fig.empty())
-		for (const auto& [path, image] : figureFiles(r, fig))
-		{
-			const std::string bytes = encodedImage(path, image);
-			files.push_back(std::make_unique<StagedFile>(path, writerOf(path, bytes)));
-		}
-	commitAll(pointersTo(files));
+		for (const auto& [path, image] : figureFiles(r, fig)) stageImage(set, path, image);
+	set.commit();
 	MRPT_LOG_INFO_FMT("trained on %d image/scan pairs (of %d), %zu floor and %zu obstacle pixels -> %s", r.used,
 					  r.pairs, r.pixels, r.obstacle_pixels, o_.output.c_str());
 	logSeparation(colourSeparation(r.model, Rangefinder(params, r.model).classifier(), params.histogram_smoothing));
@@ -117,12 +119,11 @@ RawlogTrainingResult TrainApp::learn(const RangefinderParams& params)
 	Progress progress("objects read (learning)");
 	const LearningResult l = learnParameters(params, o_.training, o_.learning, progressAt(o_.verbosity, progress));
 	// The histogram and the ini that goes with it (and the candidates) all or none.
-	StagedFile histogram(o_.output, [&](const std::string& tmp) { l.model.save(tmp); });
-	StagedFile ini(o_.learn_ini, [&](const std::string& tmp) { writeFileAtomically(tmp, learnedIni(l, o_.section)); });
-	std::optional<StagedFile> candidates;
-	if (!o_.learn_candidates.empty())
-		candidates.emplace(o_.learn_candidates, [&](const std::string& tmp) { writeFileAtomically(tmp, candidatesCsv(l)); });
-	commitAll(candidates ? std::vector<StagedFile*>{&histogram, &ini, &*candidates} : std::vector<StagedFile*>{&histogram, &ini});
+	OutputSet set(kProgram, inputs());
+	set.write({o_.output, OutputKind::Histogram}, l.model.serialize());
+	set.write({o_.learn_ini, OutputKind::Ini, kLearnedIniBegins}, learnedIni(l, o_.section));
+	if (!o_.learn_candidates.empty()) set.write({o_.learn_candidates, OutputKind::Text, candidateColumns()}, candidatesCsv(l));
+	set.commit();
 	MRPT_LOG_INFO_FMT("learned from %d pairs, validated on %d: %s (mean error %.4f m) -> %s, %s", l.training_pairs,
 					  l.validation_pairs, describe(l.best).c_str(), l.best.score, o_.learn_ini.c_str(), o_.output.c_str());
 	if (const auto other = bestInOtherSpace(l))

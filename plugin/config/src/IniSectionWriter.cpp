@@ -1,6 +1,6 @@
 #include "omnirange/config/IniSectionWriter.h"
 
-#include "omnirange/config/AtomicWrite.h"
+#include <omnirange/config/Output.h>
 #include "omnirange/config/OptionsTable.h"
 
 #include <algorithm>
@@ -105,7 +105,7 @@ std::pair<std::string, std::string> withSection(const std::string& path, const s
 
 void writeIniSection(const std::string& path, const std::string& section,
 					 const std::vector<std::pair<std::string, std::string>>& values,
-					 const std::map<std::string, std::string>& comments, const std::vector<StagedFile*>& with)
+					 const std::map<std::string, std::string>& comments, const IniSave& save)
 {
 	requireSectionName(section);
 	// Another run's keys (two calibrations saving into one ini) or a user's edit that went in
@@ -125,12 +125,11 @@ void writeIniSection(const std::string& path, const std::string& section,
 									 "nothing was saved");
 		try
 		{
-			if (with.empty()) return updateFileAtomically(path, text, state);
-			StagedFile ini(path, writerOf(path, text));
-			ini.replacing(state);
-			std::vector<StagedFile*> set{&ini};
-			set.insert(set.end(), with.begin(), with.end());
-			return commitAll(set);
+			OutputSet set(save.program, save.inputs);
+			set.write({path, OutputKind::Ini}, text);
+			set.requireUnchanged(path, state);
+			if (save.stage_with) save.stage_with(set);
+			return set.commit();
 		}
 		catch (const ChangedMeanwhile&)
 		{

@@ -1,6 +1,6 @@
 #include "omnirange/config/LayeredIni.h"
 
-#include "omnirange/config/AtomicWrite.h"
+#include <omnirange/config/Output.h>
 #include "omnirange/config/OptionsTable.h"
 
 #include <mrpt/config/CConfigFile.h>
@@ -69,7 +69,6 @@ LayeredIni readLayeredIni(const std::string& path)
 		for (const auto& seen : ini.files)
 			if (fs::canonical(seen).string() == canonical)
 				throw std::runtime_error(file + ": its bases lead back to it");
-		requireWholeSet(file);  // a learned ini whose histogram may not be in place yet
 		requireNoRepeatedKeys(file);
 		ini.files.push_back(file);
 		// Ours go two or three deep; thousands would take minutes to read.

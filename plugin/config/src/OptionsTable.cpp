@@ -69,30 +69,6 @@ double parseTime(const std::string& text)
 	return v;
 }
 
-namespace
-{
-/** Where a run killed between moving `path` aside and putting its new file
- * in left the old one (".NAME.old-PID", commitAll()), if `path` is missing. */
-std::string killedRunsCopyOf(const std::string& path)
-{
-	namespace fs = std::filesystem;
-	std::error_code ec;
-	const fs::path p(path);
-	if (fs::exists(fs::symlink_status(p, ec)) || p.filename().empty()) return "";
-	const std::string prefix = "." + p.filename().string() + ".old-";
-	const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-	for (const auto& e : fs::directory_iterator(dir, ec))
-	{
-		const std::string name = e.path().filename().string();
-		if (name.rfind(prefix, 0) == 0 && name.size() > prefix.size() &&
-			name.find_first_not_of("0123456789", prefix.size()) == std::string::npos &&
-			fs::is_regular_file(e.symlink_status(ec)))
-			return e.path().string();
-	}
-	return "";
-}
-}  // namespace
-
 void requireRegularFile(const std::string& path, const std::string& what)
 {
 	std::error_code ec;
@@ -101,9 +77,6 @@ void requireRegularFile(const std::string& path, const std::string& what)
 	// Else its reader says "no file": a loop of links (or one past 40) is something else.
 	if (ec && ec != std::errc::no_such_file_or_directory)
 		throw std::runtime_error("cannot reach the " + what + " '" + path + "' (" + ec.message() + ")");
-	if (const std::string aside = killedRunsCopyOf(path); !aside.empty())
-		throw std::runtime_error("the " + what + " '" + path + "' is missing: a run killed while it replaced it left it as '" +
-								 aside + "' (the next run writing it puts it back, or rename it back)");
 	if (isKernelFile(path)) throw std::runtime_error("the " + what + " '" + path + "' is a file of the kernel's, not of data");
 }
 

@@ -1,6 +1,6 @@
 #include "omnirange/core/ColourHistogram.h"
 
-#include "omnirange/config/AtomicWrite.h"
+#include <omnirange/config/Output.h>
 #include "omnirange/config/OptionsTable.h"
 
 #include <opencv2/core.hpp>
@@ -184,7 +184,6 @@ void ColourHistogram::save(const std::string& path) const
 ColourHistogram ColourHistogram::load(const std::string& path)
 {
 	requireRegularFile(path, "histogram");
-	requireWholeSet(path);
 	errno = 0;
 	std::ifstream f(path, std::ios::binary);
 	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "' (" + std::strerror(errno) + ")");

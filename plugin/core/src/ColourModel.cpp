@@ -1,6 +1,6 @@
 #include "omnirange/core/ColourModel.h"
 
-#include "omnirange/config/AtomicWrite.h"
+#include <omnirange/config/Output.h>
 #include "omnirange/config/OptionsTable.h"
 
 #include <algorithm>
@@ -25,7 +25,9 @@ namespace
 constexpr char kReferenceTag[8] = {'O', 'M', 'N', 'I', 'R', 'E', 'F', '1'};
 }
 
-void ColourModel::save(const std::string& path) const
+void ColourModel::save(const std::string& path) const { writeFileAtomically(path, serialize()); }
+
+std::string ColourModel::serialize() const
 {
 	std::string bytes = floor.serialize() + (hasObstacles() ? obstacles.serialize() : std::string());
 	if (hasReference())
@@ -33,14 +35,13 @@ void ColourModel::save(const std::string& path) const
 		bytes.append(kReferenceTag, sizeof(kReferenceTag));
 		for (double v : reference) bytes.append(reinterpret_cast<const char*>(&v), sizeof v);  // little-endian hosts
 	}
-	writeFileAtomically(path, bytes);
+	return bytes;
 }
 
 ColourModel ColourModel::load(const std::string& path)
 {
 	// Only regular files: a device or a pipe would be read without end.
 	requireRegularFile(path, "histogram");
-	requireWholeSet(path);  // learned with an ini that may not be in place yet
 	errno = 0;
 	std::ifstream f(path, std::ios::binary);
 	if (!f) throw std::runtime_error("cannot open histogram file '" + path + "' (" + std::strerror(errno) + ")");

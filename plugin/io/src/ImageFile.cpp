@@ -21,9 +21,8 @@ void writeImageAtomically(const std::string& path, const cv::Mat& image)
 	writeFileAtomically(path, encodedImage(path, image));
 }
 
-StagedFile stageImage(const std::string& path, const cv::Mat& image)
+void stageImage(OutputSet& set, const std::string& path, const cv::Mat& image)
 {
-	const std::string bytes = encodedImage(path, image);
-	return StagedFile(path, writerOf(path, bytes));
+	set.write({path, OutputKind::Image}, encodedImage(path, image));
 }
 }  // namespace omnirange

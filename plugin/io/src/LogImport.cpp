@@ -1,6 +1,6 @@
 #include "omnirange/io/LogImport.h"
 
-#include "omnirange/config/AtomicWrite.h"
+#include <omnirange/config/Output.h>
 #include "omnirange/io/CarmenLog.h"
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/ObservationPairer.h"
@@ -349,8 +349,7 @@ LogImportSummary importLogs(const LogImportOptions& o)
 	//    first: icp-slam and the guarded matcher take the motion up to an
 	//    instant from the odometry before the scans taken at it (as the
 	//    simulator writes them), so odometry after them would come a frame late.
-	RawlogWriter out(o.output, kImportProgram);
-	if (o.force) out.replaceAnyImagesFolder();
+	RawlogWriter out(o.output, kImportProgram, o.force);
 	std::size_t i = 0, j = 0, k = 0;
 	while (i < u.images.size() || j < u.scans.size() || k < u.odometry.size())
 	{

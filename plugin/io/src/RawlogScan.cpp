@@ -4,7 +4,7 @@
 
 #include "omnirange/core/FloorAdaptation.h"
 #include "omnirange/core/ScanFusion.h"
-#include "omnirange/config/AtomicWrite.h"
+#include <omnirange/config/Output.h>
 #include "omnirange/core/Threads.h"
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/RawlogProcessor.h"
@@ -191,10 +191,9 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	RawlogScanSummary sum;
 	if (!o.decode_only)
 	{
-		writer.emplace(o.output, kScanProgram);
+		writer.emplace(o.output, kScanProgram, o.force);
 		// Taken now, while the reader holds the input open: if they are replaced before it ends, it fails.
 		sum.images_copied = writer->shareImagesOf(imagesDirToRead(o.input));
-		if (o.force) writer->replaceAnyImagesFolder();
 	}
 	const std::size_t batch_images = 8 * static_cast<std::size_t>(o.threads);
 	std::optional<FloorAdaptation> adaptation;

@@ -1,6 +1,6 @@
 #include "omnirange/train/RawlogTraining.h"
 
-#include "omnirange/config/AtomicWrite.h"
+#include <omnirange/config/Output.h>
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/io/RawlogProcessor.h"
 

@@ -19,7 +19,7 @@
 
 namespace omnirange
 {
-class StagedFile;
+class OutputSet;
 }
 
 namespace omnirange::app
@@ -74,10 +74,10 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	 * against the inputs again (an ini replaced meanwhile by a link to its
 	 * base). */
 	void saveKeys(const std::vector<std::pair<std::string, std::string>>& keys,
-				  const std::vector<StagedFile*>& with = {}) const;
+				  const std::function<void(OutputSet&)>& with = {}) const;
 	/** A calibrated camera's keys (the image, the centre, the model and its `model_keys`), saved and said. */
 	void saveCameraKeys(const CameraParams& cam, const std::vector<std::string>& model_keys,
-						const std::vector<StagedFile*>& with = {}) const;
+						const std::function<void(OutputSet&)>& with = {}) const;
 	Options o_;
 	/** What the run reads, as found at the start (the -c ini's bases included). */
 	std::vector<std::string> inputs_;

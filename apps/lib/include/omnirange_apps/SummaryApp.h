@@ -15,9 +15,9 @@ class SummaryApp : public mrpt::system::COutputLogger
    public:
 	struct Options
 	{
-		std::string suite;  ///< the experiment list (ini/suite.txt)
+		std::string suite{"ini/suite.txt"};  ///< the experiment list
 		std::vector<std::string> groups;  ///< only these groups of it (empty: all)
-		std::string results;  ///< the folder of the reports, RESULTS/NAME/metrics.ini
+		std::string results{"results"};  ///< the folder of the reports, RESULTS/NAME/metrics.ini
 		std::string output;  ///< prefix: PREFIX.csv and PREFIX.md
 		std::string csv;  ///< instead of the reports: a CSV this program wrote
 		std::vector<std::string> fill;  ///< Markdown files whose table blocks are made again from the CSV

@@ -34,6 +34,8 @@ class TrainApp : public mrpt::system::COutputLogger
 
    private:
 	RawlogTrainingResult learn(const RangefinderParams& params);
+	/** What no output may be: the rawlog, its images, the ini. */
+	std::vector<std::string> inputs() const;
 	void logSeparation(const ColourSeparation& s);
 
 	Options o_;

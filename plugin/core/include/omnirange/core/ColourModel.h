@@ -40,6 +40,8 @@ struct ColourModel
 	 * reference colour if known ("OMNIREF1" and three little-endian
 	 * doubles). Written atomically. */
 	void save(const std::string& path) const;
+	/** What save() writes. */
+	std::string serialize() const;
 	/** Reads a file written by save(), or a plain histogram file (then
 	 * one-class); throws std::runtime_error naming the file. */
 	static ColourModel load(const std::string& path);

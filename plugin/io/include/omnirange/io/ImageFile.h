@@ -3,7 +3,7 @@
 // encoded as the path's extension names, then written or staged as any
 // other output (config/AtomicWrite.h).
 
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 
 #include <opencv2/core.hpp>
 
@@ -16,6 +16,6 @@ namespace omnirange
 std::string encodedImage(const std::string& path, const cv::Mat& image);
 /** Encodes `image` as its path's extension names and writes it atomically. */
 void writeImageAtomically(const std::string& path, const cv::Mat& image);
-/** `image` encoded as its path's extension names, staged (StagedFile). */
-StagedFile stageImage(const std::string& path, const cv::Mat& image);
+/** `image` encoded as its path's extension names, staged in `set`. */
+void stageImage(OutputSet& set, const std::string& path, const cv::Mat& image);
 }  // namespace omnirange

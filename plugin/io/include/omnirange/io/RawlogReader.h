@@ -17,11 +17,6 @@ class CFileGZInputStream;
 
 namespace omnirange
 {
-/** This run wrote a rawlog (RawlogWriter::commit(), under any of the names
- * that lead to it): a reader after it may find another rawlog than a reader
- * before it did under the same name (RawlogReader). */
-void forgetReadings();
-
 /** A rawlog's images folder as a reader opened it (fileStateOf(), through
  * links; none if it had none). */
 class ImagesAsOpened

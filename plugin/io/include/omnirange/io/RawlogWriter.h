@@ -1,10 +1,9 @@
 #pragma once
 // Writes an observations-only, gzip-compressed MRPT rawlog and its folder of
-// external images (NAME_Images/ beside NAME.rawlog) under temporary names;
-// commit() renames both into place. Destroyed without commit(), it removes
-// them, so a failed run leaves nothing that looks whole.
+// external images (NAME_Images/ beside NAME.rawlog) as one OutputSet:
+// commit() puts the images in, then the rawlog that names them.
 
-#include <omnirange/config/AtomicWrite.h>
+#include <omnirange/config/Output.h>
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/serialization/CSerializable.h>
@@ -21,26 +20,18 @@ class CFileGZOutputStream;
 
 namespace omnirange
 {
-/** NAME_Images beside NAME.rawlog (the folder MRPT's programs look in). */
-std::string imagesDirFor(const std::string& rawlog_path);
-/** The images folder a reader of `rawlog_path` uses: imagesDirFor() it, or,
- * when that is missing and the rawlog is a link, the folder beside the file
- * the link leads to (where a writer through the link put the images). */
-std::string imagesDirToRead(const std::string& rawlog_path);
-
-/** The output rule (OutputRule.h) for a rawlog `program` is to write and
- * its NAME_Images: the rawlog may replace only a rawlog, the folder only
- * images the same program wrote (or a link beside a rawlog); neither may be,
- * hold or sit in an input. Throws std::runtime_error naming the path, before
- * any work. */
+/** The guarantee (Output.h) for a rawlog `program` is to write and its
+ * NAME_Images; both are named so that MRPT's programs find the images, and
+ * no other rawlog of that NAME reads them. Throws naming the path, before any work. */
 void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& program,
 								const std::vector<std::string>& inputs, bool force);
 
 class RawlogWriter
 {
    public:
-	/** A rawlog `program` writes (its images folder is marked with its name). */
-	RawlogWriter(const std::string& path, const std::string& program, int gz_level = 1);
+	/** A rawlog `program` writes (its images folder is marked with its name);
+	 * `force`: the user's --force (Output.h). */
+	RawlogWriter(const std::string& path, const std::string& program, bool force = false);
 	~RawlogWriter();
 	RawlogWriter(const RawlogWriter&) = delete;
 	RawlogWriter& operator=(const RawlogWriter&) = delete;
@@ -63,27 +54,22 @@ class RawlogWriter
 	 * whatever becomes of the other's (none, when there is no such folder).
 	 * Returns how many were copied. */
 	std::size_t shareImagesOf(const std::string& existing_dir);
-	/** Let commit() replace a NAME_Images folder that no rawlog writer of
-	 * ours made (the user's --force; the output rule, OutputRule.h). */
-	void replaceAnyImagesFolder() { replace_any_ = true; }
-	/** Finishes the rawlog and moves it (and its images, if any) into place,
-	 * replacing what a rawlog writer of ours wrote there before. If a step
-	 * fails, the old rawlog and images are left as they were. Throws
-	 * std::runtime_error naming a NAME_Images folder that is not ours.
-	 * `along`: files that belong with this rawlog (a simulation's true map),
-	 * put in after the images and before the rawlog as one set
-	 * (FileSetCommit), and taken out again if the rawlog cannot go in.
-	 * `with_images` is called at that point too (a test looks there). */
-	void commit(const std::vector<StagedFile*>& along = {}, const std::function<void()>& with_images = {});
+	/** The set the rawlog goes in with: files that belong with it (a
+	 * simulation's true map) are staged there too. */
+	OutputSet& outputs() { return set_; }
+	/** Finishes the rawlog and puts it, its images and what else was staged
+	 * in place as one (OutputSet::commit()). */
+	void commit();
 
 	std::size_t objectsWritten() const { return count_; }
 
    private:
 	void startImages();
 
-	std::string path_, owner_, tmp_path_, images_, tmp_images_;
+	OutputSet set_;
+	std::string path_, tmp_path_, tmp_images_;
 	std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
-	bool has_images_{false}, committed_{false}, replace_any_{false};
+	bool has_images_{false};
 	std::size_t count_{0};
 };
 
