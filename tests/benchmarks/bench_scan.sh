@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
-# Frames/s of omnirange-scan on 1024x768 JPEG rawlogs with 2 threads, beside
-# the frames/s of only reading and decoding the same images (--decode-only).
-#   tests/benchmarks/bench_scan.sh [FRAMES] [RUNS]     (after scripts/setup.sh)
+# Frames/s of omnirange-scan on 1024x768 JPEG rawlogs on 1 and 2 threads:
+# decoding alone, the whole image and only the box the scan reads
+# (--decode-only, --whole-images), and scanning; checks that the scans of
+# both decodes are the same, byte for byte.
+#   tests/benchmarks/bench_scan.sh [FRAMES] [RUNS] [--fill FILE]   (after scripts/setup.sh)
 # Each figure is the median of RUNS whole-process runs (wall-clock time).
+# With --fill, the block between "<!-- bench_scan -->" and "<!-- end bench_scan -->"
+# in FILE (docs/results.md) is made again from the table printed.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-frames=${1:-200}; runs=${2:-5}
+frames=${1:-200}; runs=${2:-5}; fill=""
+[ "${3:-}" = "--fill" ] && fill=${4:?--fill needs a file}
 apps=build/apps
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 
@@ -20,10 +25,34 @@ timeit() {  # prints the median wall time in seconds of "$@" over $runs runs
     echo "$e - $s" | bc -l
   done | median
 }
-common=(-q -i "$work/factory.rawlog" -c ini/factory.ini -H "$work/f.hist" -j 2)
-t_decode=$(timeit "$apps/omnirange-scan" "${common[@]}" -o "$work/x.rawlog" --decode-only)
-t_scan=$(timeit "$apps/omnirange-scan" "${common[@]}" -o "$work/scanned.rawlog")
-printf 'frames: %d JPEG 1024x768, 2 threads, median of %d runs\n' "$frames" "$runs"
-printf 'decode only : %.2f s  %6.1f frames/s\n' "$t_decode" "$(echo "$frames / $t_decode" | bc -l)"
-printf 'scan        : %.2f s  %6.1f frames/s\n' "$t_scan" "$(echo "$frames / $t_scan" | bc -l)"
-printf 'scan / decode-only throughput: %.1f %%\n' "$(echo "100 * $t_decode / $t_scan" | bc -l)"
+common=(-i "$work/factory.rawlog" -c ini/factory.ini -H "$work/f.hist")
+box=$("$apps/omnirange-scan" "${common[@]}" -o "$work/x.rawlog" --decode-only 2>&1 </dev/null |
+  sed -n 's/.*the scan reads a \([0-9x]*\) box of the \([0-9x]*\) image (\([0-9.]*\) %).*/\1 box of \2, \3 %/p')
+"$apps/omnirange-scan" -q "${common[@]}" -o "$work/region.rawlog" </dev/null
+"$apps/omnirange-scan" -q "${common[@]}" -o "$work/whole.rawlog" --whole-images </dev/null
+cmp -s "$work/region.rawlog" "$work/whole.rawlog" && same=yes || same=NO
+
+fps() { echo "$frames / $1" | bc -l; }
+table="| threads | decode whole | decode the box | scan (box) | scan / whole decode |
+|---|---|---|---|---|"
+for j in 1 2; do
+  t_whole=$(timeit "$apps/omnirange-scan" -q "${common[@]}" -j "$j" -o "$work/x.rawlog" --decode-only --whole-images)
+  t_box=$(timeit "$apps/omnirange-scan" -q "${common[@]}" -j "$j" -o "$work/x.rawlog" --decode-only)
+  t_scan=$(timeit "$apps/omnirange-scan" -q "${common[@]}" -j "$j" -o "$work/scanned.rawlog")
+  table+=$(printf '\n| %d | %.0f frames/s | %.0f frames/s | %.0f frames/s | %.2f |' "$j" \
+    "$(fps "$t_whole")" "$(fps "$t_box")" "$(fps "$t_scan")" "$(echo "$t_whole / $t_scan" | bc -l)")
+done
+table+=$(printf '\n\n%d JPEG frames of the factory, median of %d runs; the scan reads a %s; scans of the box and of the whole image the same byte for byte: %s.' \
+  "$frames" "$runs" "$box" "$same")
+echo "$table"
+if [ -n "$fill" ]; then
+  grep -q '^<!-- bench_scan -->$' "$fill" && grep -q '^<!-- end bench_scan -->$' "$fill" ||
+    { echo "bench_scan.sh: no '<!-- bench_scan -->' ... '<!-- end bench_scan -->' block in '$fill'" >&2; exit 1; }
+  printf '%s\n' "$table" > "$work/table"
+  awk -v t="$work/table" '
+    /^<!-- bench_scan -->$/ {print; while ((getline l < t) > 0) print l; skip=1; next}
+    /^<!-- end bench_scan -->$/ {skip=0}
+    !skip' "$fill" > "$work/filled"
+  cat "$work/filled" > "$fill"
+fi
+[ "$same" = yes ]

@@ -31,6 +31,8 @@ ScanApp::Options ScanApp::parse(int argc, const char* const* argv)
 	bound.value("", "omni-label", "label of the images to scan", s.omni_label, "LABEL");
 	bound.value("j", "threads", "threads decoding and scanning images", s.threads, "N");
 	bound.flag("decode-only", "only read and decode the images, write nothing (to time decoding alone)", s.decode_only);
+	bound.flag("whole-images", "decode each image whole, not only the part the scan reads (the same scans, slower)",
+			   s.whole_images);
 	bound.flag("skip-bad-images",
 			   "skip a missing, cut or undecodable image (no scan for it; each named, and counted) instead of stopping",
 			   s.skip_bad_images);
@@ -71,6 +73,13 @@ RawlogScanSummary ScanApp::run()
 	if (rf.compensationMissing())
 		MRPT_LOG_WARN_FMT("'%s' records no floor colour from training: exposure compensation is off; train it again with "
 						  "this omnirange-train to have it", o_.histogram.c_str());
+	if (const PixelBox box = rf.pixelsRead(); !o_.scan.whole_images)
+	{
+		const int w = box.right - box.left + 1, h = box.bottom - box.top + 1;
+		MRPT_LOG_INFO_FMT("the scan reads a %dx%d box of the %dx%d image (%.1f %%): a JPEG is decoded only around it",
+						  w, h, params.camera.image_width, params.camera.image_height,
+						  100.0 * w * h / (double(params.camera.image_width) * params.camera.image_height));
+	}
 	Progress progress("objects read");
 	const auto s = scanRawlog(rf, o_.scan, progressAt(o_.verbosity, progress));
 	for (const auto& why : s.skipped_reasons) MRPT_LOG_WARN_FMT("skipped: %s", why.c_str());

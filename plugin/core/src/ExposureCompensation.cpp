@@ -23,6 +23,13 @@ FloorRing::FloorRing(const OmniCameraModel& camera, double inner, double width, 
 	if (pixels_.empty()) throw std::invalid_argument("the floor ring around the base lies outside the image");
 }
 
+PixelBox FloorRing::pixelsRead() const
+{
+	PixelBox box;
+	box.add(pixels_, width_);
+	return box;
+}
+
 std::vector<cv::Vec3b> FloorRing::colours(const cv::Mat& bgr) const
 {
 	if (bgr.type() != CV_8UC3 || bgr.cols != width_ || bgr.rows != height_)

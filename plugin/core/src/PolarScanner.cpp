@@ -224,6 +224,13 @@ PolarScanner::PolarScanner(const OmniCameraModel& cam, const PolarScannerParams&
 	}
 }
 
+PixelBox PolarScanner::pixelsRead() const
+{
+	PixelBox box;
+	box.add(pixel_, width_);
+	return box;
+}
+
 void PolarScanner::checkImage(const cv::Mat& image) const
 {
 	if (image.type() != CV_8UC3) throw std::invalid_argument("scanner: the image must be 8-bit, 3-channel BGR");

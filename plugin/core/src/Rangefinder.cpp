@@ -198,6 +198,14 @@ Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& col
 {
 }
 
+PixelBox Rangefinder::pixelsRead() const
+{
+	PixelBox box = scanner_.pixelsRead();
+	box.add(ring_.pixelsRead());
+	box.add(check_disc_.pixelsRead());
+	return box;
+}
+
 void Rangefinder::withClassifierFor(const cv::Mat& bgr, const PixelClassifier* adapted,
 								   const std::function<void(const PixelClassifier&)>& use) const
 {

@@ -1,5 +1,6 @@
 #include "JpegDecoder.h"
 
+#include <algorithm>
 #include <csetjmp>
 #include <cstdio>
 
@@ -38,16 +39,39 @@ void onMessage(j_common_ptr info, int level)
 	if (damaged) fail(info);
 }
 
+/** [px] decoded around a region: a pixel's colour takes its chroma from the
+ * samples beside it (fancy upsampling), and the decoder treats the edge of a
+ * crop as the image's; an iMCU (16 px at 4:2:0) keeps the region's pixels
+ * away from that edge. */
+constexpr int kRegionMargin = 16;
+
+/** The rows and columns of `region` (and the margin) into `image`, the rest left as it is. */
+void readRegion(jpeg_decompress_struct& info, const PixelBox& region, cv::Mat& image)
+{
+	const int w = image.cols, h = image.rows;
+	JDIMENSION x = static_cast<JDIMENSION>(std::max(0, region.left - kRegionMargin));
+	JDIMENSION width = static_cast<JDIMENSION>(std::min(w, region.right + 1 + kRegionMargin)) - x;
+	jpeg_crop_scanline(&info, &x, &width);  // widened to whole iMCUs
+	const auto top = static_cast<JDIMENSION>(std::max(0, region.top - kRegionMargin));
+	const auto bottom = static_cast<JDIMENSION>(std::min(h, region.bottom + 1 + kRegionMargin));
+	jpeg_skip_scanlines(&info, top);
+	while (info.output_scanline < bottom)
+	{
+		JSAMPROW row = image.ptr(static_cast<int>(info.output_scanline)) + x * image.elemSize();
+		jpeg_read_scanlines(&info, &row, 1);
+	}
+	jpeg_skip_scanlines(&info, info.output_height - info.output_scanline);  // still read: damage below is found
+}
+
 }  // namespace
 
-std::string decodeJpeg(const unsigned char* bytes, std::size_t size, bool grey, cv::Mat& image)
+std::string decodeJpeg(const unsigned char* bytes, std::size_t size, bool grey, cv::Mat& image, const PixelBox& region)
 {
 	jpeg_decompress_struct info;
 	Failure failure;
 	info.err = jpeg_std_error(&failure.manager);
 	failure.manager.error_exit = fail;
 	failure.manager.emit_message = onMessage;
-	image.release();
 	// Only `image`, the caller's, changes between setjmp and a longjmp (a local would be indeterminate after it).
 	if (setjmp(failure.jump))
 	{
@@ -61,8 +85,14 @@ std::string decodeJpeg(const unsigned char* bytes, std::size_t size, bool grey, 
 	const bool cmyk = info.jpeg_color_space == JCS_CMYK || info.jpeg_color_space == JCS_YCCK;
 	info.out_color_space = cmyk ? JCS_CMYK : grey ? JCS_GRAYSCALE : JCS_EXT_BGR;
 	jpeg_start_decompress(&info);
+	const uchar* before = image.data;
 	image.create(static_cast<int>(info.output_height), static_cast<int>(info.output_width),
 				 CV_8UC(info.output_components));
+	if (!region.empty() && region.right < image.cols && region.bottom < image.rows)  // else the size check refuses it
+	{
+		if (image.data != before) image = cv::Scalar::all(0);  // a new buffer: black; a reused one keeps what it had
+		readRegion(info, region, image);
+	}
 	while (info.output_scanline < info.output_height)
 	{
 		JSAMPROW row = image.ptr(static_cast<int>(info.output_scanline));

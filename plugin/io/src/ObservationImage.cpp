@@ -216,7 +216,7 @@ bool isImageFileName(const std::string& file)
 	return false;
 }
 
-cv::Mat decodeImageFile(const std::string& file, const std::string& label, int flags)
+void decodeImageFile(const std::string& file, const std::string& label, int flags, const PixelBox& region, cv::Mat& image)
 {
 	const std::string what = "image '" + file + "'" + (label.empty() ? "" : " of " + label);
 	std::error_code ec;
@@ -240,29 +240,36 @@ cv::Mat decodeImageFile(const std::string& file, const std::string& label, int f
 	if (const std::string why = imageProblem(Bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 		!why.empty())
 		throw std::runtime_error(what + " is " + why);
-	cv::Mat image;
 	const bool jpeg = bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8;
 	const bool png = bytes.size() >= 8 && std::memcmp(bytes.data(), "\x89PNG\r\n\x1a\n", 8) == 0;
 	if ((jpeg || png) && (flags == cv::IMREAD_COLOR || flags == cv::IMREAD_GRAYSCALE))
 	{
 		const bool grey = flags == cv::IMREAD_GRAYSCALE;
-		const std::string why = jpeg ? decodeJpeg(bytes.data(), bytes.size(), grey, image)
+		const std::string why = jpeg ? decodeJpeg(bytes.data(), bytes.size(), grey, image, region)
 									 : decodePng(bytes.data(), bytes.size(), grey, image);
 		if (!why.empty()) throw std::runtime_error(what + " is damaged: " + why);
 	}
+	else
+		image.release();
 	if (image.empty()) image = cv::imdecode(bytes, flags | cv::IMREAD_IGNORE_ORIENTATION);  // as decodeJpeg()
 	if (image.empty()) throw std::runtime_error(what + " cannot be decoded: damaged, or not an image of its kind");
+}
+
+cv::Mat decodeImageFile(const std::string& file, const std::string& label, int flags, const PixelBox& region)
+{
+	cv::Mat image;
+	decodeImageFile(file, label, flags, region, image);
 	return image;
 }
 
-cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
+cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const PixelBox& region)
 {
 	cv::Mat img;
 	if (obs.image.isExternallyStored())
 	{
 		// Read the file ourselves: CImage's lazy loading shares state between
 		// threads and reports a missing file with a stack trace.
-		return decodeImageFile(obs.image.getExternalStorageFileAbsolutePath(), obs.sensorLabel);
+		return decodeImageFile(obs.image.getExternalStorageFileAbsolutePath(), obs.sensorLabel, cv::IMREAD_COLOR, region);
 	}
 	if (obs.image.isEmpty())  // MRPT's own access would throw a stack trace
 		throw std::runtime_error("an empty " + obs.sensorLabel + " image stored in the rawlog");
@@ -272,10 +279,19 @@ cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs)
 	return img.clone();
 }
 
-cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& cam)
+void decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& cam, const PixelBox& region, cv::Mat& image)
 {
-	cv::Mat img = decodeImage(obs);
-	requireCameraSize(img, obs, cam);
+	if (obs.image.isExternallyStored())
+		decodeImageFile(obs.image.getExternalStorageFileAbsolutePath(), obs.sensorLabel, cv::IMREAD_COLOR, region, image);
+	else
+		image = decodeImage(obs);
+	requireCameraSize(image, obs, cam);
+}
+
+cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& cam, const PixelBox& region)
+{
+	cv::Mat img;
+	decodeImage(obs, cam, region, img);
 	return img;
 }
 

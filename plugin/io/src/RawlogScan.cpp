@@ -40,9 +40,13 @@ struct Batch
 	std::vector<std::exception_ptr> errors;
 };
 
-/** Whether the BGR `image` has three equal channels: a grey camera's, or a log converted to grey. */
-bool isGrey(const cv::Mat& image)
+/** Whether the BGR `image` has three equal channels in `region` (the whole
+ * image if empty): a grey camera's, or a log converted to grey. */
+bool isGrey(const cv::Mat& whole, const PixelBox& region)
 {
+	const cv::Mat image = region.empty() ? whole
+										 : whole(cv::Rect(region.left, region.top, region.right - region.left + 1,
+														  region.bottom - region.top + 1));
 	cv::Mat channels[3];
 	cv::split(image, channels);
 	return cv::countNonZero(channels[0] != channels[1]) == 0 && cv::countNonZero(channels[1] != channels[2]) == 0;
@@ -52,7 +56,8 @@ bool isGrey(const cv::Mat& image)
  * the floor is learned from each decoded image in file order first, and each
  * image is scanned with what was learned up to and including it: the result
  * does not depend on the number of threads. */
-void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdaptation* adaptation)
+void processBatch(Batch& b, const Rangefinder& rf, const PixelBox& region, std::vector<cv::Mat>& decoded, bool decode_only,
+				  FloorAdaptation* adaptation)
 {
 	const int n = static_cast<int>(b.images.size());
 	b.scans.assign(n, nullptr);
@@ -61,7 +66,7 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 	b.statuses.assign(n, {0, 0, 0, 0, 0});
 	b.errors.assign(n, nullptr);
 	b.grey.assign(n, 0);
-	std::vector<cv::Mat> decoded(n);
+	decoded.resize(std::max<std::size_t>(decoded.size(), n));  // the last batch's buffers, reused
 	const auto& cam = rf.params().camera;
 	const auto scan = [&](int k, const PixelClassifier* classifier) {
 		const RangeScan scan = rf.process(decoded[k], classifier);
@@ -72,9 +77,9 @@ void processBatch(Batch& b, const Rangefinder& rf, bool decode_only, FloorAdapta
 	cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& r) {
 		for (int k = r.start; k < r.end; ++k) try
 			{
-				decoded[k] = decodeImage(*b.images[k], cam);
+				decodeImage(*b.images[k], cam, region, decoded[k]);
 				if (decode_only) continue;
-				b.grey[k] = isGrey(decoded[k]);
+				b.grey[k] = isGrey(decoded[k], region);
 				if (!adaptation) scan(k, nullptr);
 			}
 			catch (...)
@@ -200,11 +205,13 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	if (rf.params().floor_adaptation) adaptation.emplace(rf, rf.params().adaptation_memory);
 	Batch b;
 	const bool fusing = !o.fuse_with.empty() && !o.decode_only;
+	const PixelBox region = o.whole_images ? PixelBox{} : rf.pixelsRead();
+	std::vector<cv::Mat> decoded;
 	// A batch ends only between objects: a sensory frame may hold several images. When fusing,
 	// an image still without its laser scan goes on into the next batch with what follows it.
 	const auto flush = [&](bool at_end) {
 		Batch tail = fusing && !at_end && !b.images.empty() && !b.lasers.back() ? tailFrom(b) : Batch{};
-		processBatch(b, rf, o.decode_only, adaptation ? &*adaptation : nullptr);
+		processBatch(b, rf, region, decoded, o.decode_only, adaptation ? &*adaptation : nullptr);
 		writeBatch(b, writer ? &*writer : nullptr, o.skip_bad_images, sum);
 		b = std::move(tail);
 	};

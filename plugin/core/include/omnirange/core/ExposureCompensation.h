@@ -40,6 +40,8 @@ class FloorRing
 	std::array<double, 3> medianColour(const cv::Mat& bgr) const;
 	/** How many of the ring's pixels `classifier` calls free floor. */
 	int countFree(const cv::Mat& bgr, const PixelClassifier& classifier) const;
+	/** The box of the image the ring reads. */
+	PixelBox pixelsRead() const;
 
    private:
 	std::vector<std::int32_t> pixels_;  // row * width + col

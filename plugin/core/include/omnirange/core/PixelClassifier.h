@@ -5,7 +5,10 @@
 // hit search's decision are never classified. Another model (two-class,
 // other features) plugs in by implementing classify().
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
+#include <vector>
 
 namespace omnirange
 {
@@ -14,6 +17,31 @@ namespace omnirange
 inline constexpr std::uint8_t kNotFree = 0;
 inline constexpr std::uint8_t kFree = 1;  ///< free, and the colour is sure floor
 inline constexpr std::uint8_t kDoubtfulFree = 3;  ///< free, but a colour the floor rarely shows
+
+/** The smallest box of an image's pixels that holds a set of pixel indices
+ * (row * width + col): what a stage reads of an image, so that a decoder may
+ * decode only that (ObservationImage.h). */
+struct PixelBox
+{
+	int left{std::numeric_limits<int>::max()}, top{std::numeric_limits<int>::max()};
+	int right{-1}, bottom{-1};  ///< inclusive; the box is empty while right < left
+
+	void add(const std::vector<std::int32_t>& pixels, int width)
+	{
+		for (const std::int32_t p : pixels)
+		{
+			const int row = p / width, col = p % width;
+			left = std::min(left, col), right = std::max(right, col);
+			top = std::min(top, row), bottom = std::max(bottom, row);
+		}
+	}
+	void add(const PixelBox& b)
+	{
+		left = std::min(left, b.left), right = std::max(right, b.right);
+		top = std::min(top, b.top), bottom = std::max(bottom, b.bottom);
+	}
+	bool empty() const { return right < left; }
+};
 
 class PixelClassifier
 {

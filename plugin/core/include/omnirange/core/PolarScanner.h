@@ -132,6 +132,8 @@ class PolarScanner
 	/** Scans one BGR image of the camera's size. */
 	std::vector<Ray> scan(const cv::Mat& bgr, const PixelClassifier& classifier) const;
 
+	/** The box of the image the scanlines read (every stage of a ray reads only its scanline's pixels). */
+	PixelBox pixelsRead() const;
 	/** Pixel indices (row * width + col) of scanline s, innermost first. */
 	std::vector<std::int32_t> scanlinePixels(int s) const;
 

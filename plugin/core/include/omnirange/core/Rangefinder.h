@@ -199,6 +199,11 @@ class Rangefinder
 	/** The floor just beyond the base (ExposureCompensation.h, FloorAdaptation.h). */
 	const FloorRing& floorRing() const { return ring_; }
 
+	/** The box of the image process() and FloorAdaptation read: the
+	 * scanlines, the floor ring and the exposure check's disc. A scan of an
+	 * image decoded only there is the scan of the whole image. */
+	PixelBox pixelsRead() const;
+
 	/** One decoded BGR image of the camera's size -> one scan. `adapted`:
 	 * classify with it instead of the trained classifier (FloorAdaptation).
 	 * `times`: where to put what each stage took (the benchmark's shares). */

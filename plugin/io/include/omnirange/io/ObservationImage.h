@@ -3,6 +3,7 @@
 // externally in NAME_Images/, with errors that name the file.
 
 #include <omnirange/core/CameraModel.h>
+#include <omnirange/core/PixelClassifier.h>
 
 #include <mrpt/obs/CObservationImage.h>
 #include <opencv2/core.hpp>
@@ -21,16 +22,27 @@ bool isImageFileName(const std::string& file);
  * JPEG or PNG, a JPEG whose coded data libjpeg finds damaged (both would
  * decode with grey blocks and only a warning; a camera's trailer after the
  * end marker is fine), does not decode, or its header says it has more than
- * kMaxImagePixels. */
-cv::Mat decodeImageFile(const std::string& file, const std::string& label, int flags = cv::IMREAD_COLOR);
+ * kMaxImagePixels. A JPEG with a `region` is decoded only around it (the
+ * rest black), its pixels there those of the whole decode; other formats
+ * and an empty region, whole. */
+cv::Mat decodeImageFile(const std::string& file, const std::string& label, int flags = cv::IMREAD_COLOR,
+						const PixelBox& region = {});
+/** The same into `image`, a JPEG's buffer reused when it has the size
+ * already (outside `region`, what it held: black when new). */
+void decodeImageFile(const std::string& file, const std::string& label, int flags, const PixelBox& region,
+					 cv::Mat& image);
 
-/** The observation's image as 8-bit BGR. Throws std::runtime_error naming
- * the file if an external image is missing or unreadable. Thread-safe. */
-cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs);
+/** The observation's image as 8-bit BGR; an external JPEG only around
+ * `region` (decodeImageFile). Throws std::runtime_error naming the file if
+ * an external image is missing or unreadable. Thread-safe. */
+cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const PixelBox& region = {});
 
 /** The same, and throws std::runtime_error naming the image unless it has
  * the camera's size. */
-cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& camera);
+cv::Mat decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& camera, const PixelBox& region = {});
+/** The same into `image` (decodeImageFile): a log's scan decodes into a few buffers, not a new one per image. */
+void decodeImage(const mrpt::obs::CObservationImage& obs, const CameraParams& camera, const PixelBox& region,
+				 cv::Mat& image);
 
 /** Throws std::runtime_error naming the image `obs` unless `img` has the camera's size. */
 void requireCameraSize(const cv::Mat& img, const mrpt::obs::CObservationImage& obs, const CameraParams& camera);

@@ -27,6 +27,9 @@ struct RawlogScanOptions
 	/** Read and decode only: no scan, nothing written (the baseline the
 	 * benchmark compares against). */
 	bool decode_only{false};
+	/** Decode each image whole, not only the box the scan reads
+	 * (Rangefinder::pixelsRead): the same scans, slower (to time and check it). */
+	bool whole_images{false};
 	/** A missing, cut or undecodable image is skipped (no scan for it, counted
 	 * in the summary and named in `skipped_names`) instead of stopping the run. */
 	bool skip_bad_images{false};
