@@ -31,7 +31,7 @@ namespace omnirange::sim
 namespace
 {
 constexpr double kEpoch = 1767225600.0;  // 2026-01-01T00:00:00Z: timestamps start here
-constexpr char kProgram[] = "omnirange-sim";  // the outputs' owner (OutputRule.h)
+constexpr char kProgram[] = "omnirange-sim";  // the outputs' owner (config/Output.h)
 
 /** The rawlog's path without ".rawlog", through a link to it: the true maps go
  * beside the file written, as its images folder does. */

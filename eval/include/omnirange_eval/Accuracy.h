@@ -21,7 +21,7 @@ namespace omnirange::eval
 {
 /** The Table II figures and the exclusions. */
 /** How the accuracy's files begin: an existing PREFIX_pairs.csv or
- * PREFIX_table.md that does not is not one to replace (OutputRule.h). */
+ * PREFIX_table.md that does not is not one to replace (config/Output.h). */
 inline constexpr char kPairsCsvBegins[] = "frame,laser_ray,omni_ray,";
 inline constexpr char kAccuracyTableBegins[] = "| frames | pairs |";
 

@@ -83,7 +83,7 @@ class Experiment : public mrpt::system::COutputLogger
 	 * the route against the truth, into `candidates_on_route.csv` in the
 	 * report folder (CandidateStudy.h; a minute or more per run). */
 	void setCandidateStudy(bool on) { study_candidates_ = on; }
-	/** Replace a report folder this program did not write (never an input; OutputRule.h). */
+	/** Replace a report folder this program did not write (never an input; config/Output.h). */
 	void setForce(bool on) { force_ = on; }
 	/** Progress lines within the long stages: only at INFO and below. */
 	bool showsProgress() const { return getMinLoggingLevel() <= mrpt::system::LVL_INFO; }

@@ -25,7 +25,7 @@ using Summary = std::vector<SummaryRow>;
  * std::runtime_error naming a report that is missing or unreadable. */
 Summary collectMetrics(const std::vector<SuiteEntry>& entries, const std::string& results_dir);
 
-/** How toCsv() begins (OutputRule.h's begins_with). */
+/** How toCsv() begins (config/Output.h's begins_with). */
 inline constexpr char kSummaryCsvBegins[] = "name,group";
 /** One row per experiment: name, group, then every metric (sorted by key). */
 std::string toCsv(const Summary& s);

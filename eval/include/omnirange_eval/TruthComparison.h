@@ -16,7 +16,7 @@
 namespace omnirange::eval
 {
 /** The counts for the rays whose true boundary lies in one band of range. */
-/** How TruthStats::table() begins (OutputRule.h's begins_with). */
+/** How TruthStats::table() begins (config/Output.h's begins_with). */
 inline constexpr char kTruthTableBegins[] = "| true distance | rays |";
 
 struct TruthBand

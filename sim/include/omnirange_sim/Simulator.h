@@ -23,7 +23,7 @@ struct SimOptions
 	int threads{2};
 	std::string image_format;  ///< png or jpg; empty: the robot ini's
 	double map_resolution{0.05};  ///< [m] of the true grid map
-	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; OutputRule.h). */
+	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; config/Output.h). */
 	bool force{false};
 };
 

@@ -37,7 +37,7 @@ struct VerbosityArgs
 };
 
 /** --force, added to a command line: replace an output that this program
- * did not write (the output rule, OutputRule.h; never an input). */
+ * did not write (the output rule, config/Output.h; never an input). */
 struct ForceArg
 {
 	explicit ForceArg(TCLAP::CmdLine& cmd);

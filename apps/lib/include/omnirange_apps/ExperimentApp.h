@@ -16,7 +16,7 @@ class ExperimentApp
 		int max_frames{-1};  ///< overrides the ini's when >= 0
 		std::string robot;  ///< overrides the ini's robot when not empty (e.g. the lossless camera)
 		bool study_candidates{false};  ///< Experiment::setCandidateStudy
-		bool force{false};  ///< replace a report folder this program did not write (OutputRule.h)
+		bool force{false};  ///< replace a report folder this program did not write (config/Output.h)
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */

@@ -23,7 +23,7 @@
 
 namespace omnirange
 {
-/** The program whose outputs (a rawlog, its images) these are (OutputRule.h). */
+/** The program whose outputs (a rawlog, its images) these are (config/Output.h). */
 inline constexpr char kImportProgram[] = "omnirange-import";
 
 struct TimedImage
@@ -82,7 +82,7 @@ struct LogImportOptions
 	double laser_fov{3.14159265358979323846};  ///< [rad] from the first ray to the last
 	double laser_max_range{19.8};  ///< [m] a range <= 0 or >= this is no return
 	double laser_std_error{0.01};  ///< [m]
-	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; OutputRule.h). */
+	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; config/Output.h). */
 	bool force{false};
 };
 

@@ -13,7 +13,7 @@
 
 namespace omnirange
 {
-/** The program whose outputs (a rawlog, its images) these are (OutputRule.h). */
+/** The program whose outputs (a rawlog, its images) these are (config/Output.h). */
 inline constexpr char kScanProgram[] = "omnirange-scan";
 
 class Progress;
@@ -33,7 +33,7 @@ struct RawlogScanOptions
 	/** A missing, cut or undecodable image is skipped (no scan for it, counted
 	 * in the summary and named in `skipped_names`) instead of stopping the run. */
 	bool skip_bad_images{false};
-	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; OutputRule.h). */
+	/** Replace an output (or NAME_Images) no program of ours wrote (never an input; config/Output.h). */
 	bool force{false};
 	/** Label of a laser on the same robot: each scan is also fused with the
 	 * laser scan taken within max_dt of its image into a FUSED scan

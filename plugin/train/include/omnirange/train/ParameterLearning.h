@@ -224,7 +224,7 @@ std::string candidateColumns(const LearnedCandidate& c);
 std::string spaceSeparated(const std::vector<double>& values);
 
 /** How learnedIni() begins: an ini that does not was written by hand, and
- * --learn does not replace it (OutputRule.h's begins_with). */
+ * --learn does not replace it (config/Output.h's begins_with). */
 inline constexpr char kLearnedIniBegins[] = "; Learned by omnirange-train --learn: ";
 
 /** "colour space CHROMA, 13 bins, threshold 0.005, obstacle_ratio 0, smoothing 0, N 20, K 4, subpixel boundary, step 0.25". */
