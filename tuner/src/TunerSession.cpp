@@ -125,11 +125,11 @@ const Rangefinder& TunerSession::rangefinder() const
 
 void TunerSession::setParams(const RangefinderParams& params)
 {
-	params.validate();
+	auto rf = hasColours() ? std::make_unique<Rangefinder>(params, colours_) : nullptr;  // validates params
+	if (!rf) params.validate();
 	if (params.camera.image_width != params_.camera.image_width ||
 		params.camera.image_height != params_.camera.image_height)
 		cached_ = -1;
-	auto rf = hasColours() ? std::make_unique<Rangefinder>(params, colours_) : nullptr;
 	params_ = params;
 	rf_ = std::move(rf);
 }

@@ -1,12 +1,9 @@
 #include "omnirange/core/FloorAdaptation.h"
 
-#include "omnirange/core/Rangefinder.h"
-
-#include <opencv2/core.hpp>
+#include "omnirange/core/ExposureCompensation.h"
 
 #include <cmath>
 #include <cstdlib>
-#include <stdexcept>
 
 namespace omnirange
 {
@@ -22,19 +19,14 @@ bool nearMedian(const cv::Vec3b& bgr, const std::array<double, 3>& median)
 }
 }  // namespace
 
-FloorAdaptation::FloorAdaptation(const Rangefinder& rangefinder, double memory)
-	: rf_(rangefinder),
-	  keep_(std::exp(-1.0 / memory)),
-	  counts_(rangefinder.classifier().binner().binCount(), 0.0)
+FloorAdaptation::FloorAdaptation(const FreeSpaceClassifier& trained, double memory)
+	: keep_(std::exp(-1.0 / memory)), counts_(trained.binner().binCount(), 0.0)
 {
-	if (!(memory >= 1.0 && memory <= 1e6)) throw std::invalid_argument("adaptation_memory must be within [1, 1e6] images");
 }
 
-void FloorAdaptation::learn(const cv::Mat& bgr)
+void FloorAdaptation::learn(const std::vector<cv::Vec3b>& ring, const ColourBinner& binner)
 {
-	const std::vector<cv::Vec3b> ring = rf_.floorRing().colours(bgr);
 	const auto median = FloorRing::median(ring);
-	const ColourBinner& binner = rf_.classifier().binner();
 	for (double& c : counts_) c *= keep_;
 	total_ *= keep_;
 	for (const cv::Vec3b& px : ring)
@@ -46,12 +38,12 @@ void FloorAdaptation::learn(const cv::Mat& bgr)
 	++images_;
 }
 
-FreeSpaceClassifier FloorAdaptation::classifier() const
+FreeSpaceClassifier FloorAdaptation::classifier(const FreeSpaceClassifier& trained) const
 {
-	if (total_ <= 0) return rf_.classifier();
+	if (total_ <= 0) return trained;
 	std::vector<double> p(counts_.size());
 	for (std::size_t b = 0; b < p.size(); ++b) p[b] = counts_[b] / total_;
-	return rf_.classifier().alsoFreeUnder(p);
+	return trained.alsoFreeUnder(p);
 }
 
 }  // namespace omnirange

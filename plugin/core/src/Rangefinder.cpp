@@ -142,9 +142,6 @@ void RangefinderParams::loadFromConfig(const mrpt::config::CConfigFileBase& c, c
 	try
 	{
 		validate();
-		// The scan circle must fit in the image: keys of several kinds (N, K, max_range, the camera) at once,
-		// found here while the ini is known rather than when a scanner is made.
-		PolarScanner(OmniCameraModel(camera), scanner);
 	}
 	catch (const std::invalid_argument& e)
 	{
@@ -154,8 +151,9 @@ void RangefinderParams::loadFromConfig(const mrpt::config::CConfigFileBase& c, c
 
 void RangefinderParams::validate() const
 {
-	camera.validate();
-	scanner.validate(OmniCameraModel(camera));
+	// The camera model and the scanner check their keys as they are made, and the scanner that its circle
+	// (N, K, max_range and the camera at once) fits in the image.
+	PolarScanner(OmniCameraModel(camera), scanner);
 	outliers.validate();
 	walls.validate();
 	table().requireRanges(*this);
@@ -196,6 +194,21 @@ Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& col
 									camera_.rhoFromDistance(floorBeyondBase(camera_, p_.scanner))),
 				  4.0)
 {
+	if (p_.floor_adaptation) adaptation_.emplace(classifier_, p_.adaptation_memory);
+}
+
+std::optional<FreeSpaceClassifier> Rangefinder::learnFloor(const cv::Mat& bgr)
+{
+	if (!adaptation_) return std::nullopt;
+	scanner_.checkImage(bgr);
+	adaptation_->learn(ring_.colours(bgr), classifier_.binner());
+	return adaptation_->classifier(classifier_);
+}
+
+RangeScan Rangefinder::processNext(const cv::Mat& bgr)
+{
+	const auto adapted = learnFloor(bgr);
+	return process(bgr, adapted ? &*adapted : nullptr);
 }
 
 PixelBox Rangefinder::pixelsRead() const

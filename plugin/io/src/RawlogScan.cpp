@@ -2,7 +2,6 @@
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
-#include "omnirange/core/FloorAdaptation.h"
 #include "omnirange/core/ScanFusion.h"
 #include <omnirange/config/Output.h>
 #include "omnirange/core/Threads.h"
@@ -52,12 +51,11 @@ bool isGrey(const cv::Mat& whole, const PixelBox& region)
 	return cv::countNonZero(channels[0] != channels[1]) == 0 && cv::countNonZero(channels[1] != channels[2]) == 0;
 }
 
-/** Decodes (and scans) the batch's images in parallel. With `adaptation`,
- * the floor is learned from each decoded image in file order first, and each
- * image is scanned with what was learned up to and including it: the result
- * does not depend on the number of threads. */
-void processBatch(Batch& b, const Rangefinder& rf, const PixelBox& region, std::vector<cv::Mat>& decoded, bool decode_only,
-				  FloorAdaptation* adaptation)
+/** Decodes (and scans) the batch's images in parallel. With floor
+ * adaptation, the floor is learned from each decoded image in file order
+ * first, and each image is scanned with what was learned up to and including
+ * it: the result does not depend on the number of threads. */
+void processBatch(Batch& b, Rangefinder& rf, const PixelBox& region, std::vector<cv::Mat>& decoded, bool decode_only)
 {
 	const int n = static_cast<int>(b.images.size());
 	b.scans.assign(n, nullptr);
@@ -80,17 +78,17 @@ void processBatch(Batch& b, const Rangefinder& rf, const PixelBox& region, std::
 				decodeImage(*b.images[k], cam, region, decoded[k]);
 				if (decode_only) continue;
 				b.grey[k] = isGrey(decoded[k], region);
-				if (!adaptation) scan(k, nullptr);
+				if (!rf.adaptsToFloor()) scan(k, nullptr);
 			}
 			catch (...)
 			{
 				b.errors[k] = std::current_exception();
 			}
 	});
-	if (decode_only || !adaptation) return;
+	if (decode_only || !rf.adaptsToFloor()) return;
 	std::vector<std::optional<FreeSpaceClassifier>> classifiers(n);
 	for (int k = 0; k < n; ++k)
-		if (!b.errors[k]) adaptation->learn(decoded[k]), classifiers[k] = adaptation->classifier();
+		if (!b.errors[k]) classifiers[k] = rf.learnFloor(decoded[k]);
 	cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& r) {
 		for (int k = r.start; k < r.end; ++k) try
 			{
@@ -185,7 +183,7 @@ Batch tailFrom(Batch& b)
 }
 }  // namespace
 
-RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, Progress* progress)
+RawlogScanSummary scanRawlog(Rangefinder rf, const RawlogScanOptions& o, Progress* progress)
 {
 	if (o.threads < 1 || o.threads > 256) throw std::invalid_argument("threads must be within [1, 256]");
 	if (!o.decode_only) requireRawlogOutputAllowed(o.output, kScanProgram, {o.input, imagesDirToRead(o.input)}, o.force);
@@ -201,8 +199,6 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 		sum.images_copied = writer->shareImagesOf(imagesDirToRead(o.input));
 	}
 	const std::size_t batch_images = 8 * static_cast<std::size_t>(o.threads);
-	std::optional<FloorAdaptation> adaptation;
-	if (rf.params().floor_adaptation) adaptation.emplace(rf, rf.params().adaptation_memory);
 	Batch b;
 	const bool fusing = !o.fuse_with.empty() && !o.decode_only;
 	const PixelBox region = o.whole_images ? PixelBox{} : rf.pixelsRead();
@@ -211,7 +207,7 @@ RawlogScanSummary scanRawlog(const Rangefinder& rf, const RawlogScanOptions& o, 
 	// an image still without its laser scan goes on into the next batch with what follows it.
 	const auto flush = [&](bool at_end) {
 		Batch tail = fusing && !at_end && !b.images.empty() && !b.lasers.back() ? tailFrom(b) : Batch{};
-		processBatch(b, rf, region, decoded, o.decode_only, adaptation ? &*adaptation : nullptr);
+		processBatch(b, rf, region, decoded, o.decode_only);
 		writeBatch(b, writer ? &*writer : nullptr, o.skip_bad_images, sum);
 		b = std::move(tail);
 	};

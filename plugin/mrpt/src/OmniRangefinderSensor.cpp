@@ -45,8 +45,6 @@ void COmniRangefinderSensor::initialize()
 	rangefinder_ = std::make_unique<Rangefinder>(params_, ColourModel::load(histogram_file_));
 	if (rangefinder_->compensationMissing())
 		MRPT_LOG_WARN_STREAM(histogram_file_ << " records no floor colour from training: exposure compensation is off");
-	if (params_.floor_adaptation)
-		adaptation_ = std::make_unique<FloorAdaptation>(*rangefinder_, params_.adaptation_memory);
 	MRPT_LOG_INFO_STREAM("histogram " << histogram_file_ << ", rangefinder options:\n" << params_.asIni());
 	camera_->initialize();
 }
@@ -66,9 +64,7 @@ void COmniRangefinderSensor::doProcess()
 	// Keep the image inside the observation: a replayed frame's external file
 	// is not beside the rawlog being grabbed.
 	img->image = mrpt::img::CImage(bgr, mrpt::img::DEEP_COPY);
-	std::optional<FreeSpaceClassifier> adapted;
-	if (adaptation_) adaptation_->learn(bgr), adapted = adaptation_->classifier();
-	auto scan = rangefinder_->toObservation(rangefinder_->process(bgr, adapted ? &*adapted : nullptr), img->timestamp);
+	auto scan = rangefinder_->toObservation(rangefinder_->processNext(bgr), img->timestamp);
 	MRPT_LOG_DEBUG_STREAM("frame scanned: " << scan->getScanSize() << " rays");
 	appendObservations({img, scan});
 }

@@ -11,37 +11,32 @@
 // touches a few directions of the ring (the robot passing a wall) is not
 // learned as floor; one that fills most of it would be (docs/method.md
 // measures what that costs). Images must come in the order they were taken.
+// The Rangefinder owns one (Rangefinder::learnFloor) when floor_adaptation is on.
 
 #include <omnirange/core/FreeSpaceClassifier.h>
+
+#include <opencv2/core/matx.hpp>
 
 #include <cstddef>
 #include <vector>
 
-namespace cv
-{
-class Mat;
-}
-
 namespace omnirange
 {
-class Rangefinder;
-
 class FloorAdaptation
 {
    public:
-	/** Adapts `rangefinder`'s trained classifier; `memory` [images] is how
+	/** Over the bins of `trained`; `memory` [images] (at least 1) is how
 	 * many images a colour seen once takes to fade to 1/e. */
-	FloorAdaptation(const Rangefinder& rangefinder, double memory);
+	FloorAdaptation(const FreeSpaceClassifier& trained, double memory);
 
-	/** Learns the floor ring of the next image (8-bit BGR, the camera's size). */
-	void learn(const cv::Mat& bgr);
-	/** The trained classifier with the recent floor's colours also free. */
-	FreeSpaceClassifier classifier() const;
+	/** Learns the colours of the next image's floor ring (FloorRing::colours). */
+	void learn(const std::vector<cv::Vec3b>& ring, const ColourBinner& binner);
+	/** `trained` with the recent floor's colours also free. */
+	FreeSpaceClassifier classifier(const FreeSpaceClassifier& trained) const;
 
 	std::size_t imagesLearned() const { return images_; }
 
    private:
-	const Rangefinder& rf_;
 	double keep_;  // per image, the weight old counts keep
 	std::vector<double> counts_;  // per bin, decayed
 	double total_{0};

@@ -6,6 +6,7 @@
 #include <omnirange/core/CameraModel.h>
 #include <omnirange/core/ColourModel.h>
 #include <omnirange/core/ExposureCompensation.h>
+#include <omnirange/core/FloorAdaptation.h>
 #include <omnirange/core/FreeSpaceClassifier.h>
 #include <omnirange/core/OutlierFilter.h>
 #include <omnirange/core/WallFit.h>
@@ -16,6 +17,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -143,6 +145,9 @@ struct RangefinderParams
 	 * an unparsable or an impossible value. */
 	void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
 						const std::vector<std::string>& also_allowed = {});
+	/** Throws std::invalid_argument on the first impossible value or
+	 * combination (the scan circle must fit in the image): the one check
+	 * loading, the tuner and the Rangefinder's constructor run. */
 	void validate() const;
 	/** One "key = value" line per parameter, in ini syntax. */
 	std::string asIni() const;
@@ -205,9 +210,18 @@ class Rangefinder
 	PixelBox pixelsRead() const;
 
 	/** One decoded BGR image of the camera's size -> one scan. `adapted`:
-	 * classify with it instead of the trained classifier (FloorAdaptation).
+	 * classify with it instead of the trained classifier (learnFloor()).
 	 * `times`: where to put what each stage took (the benchmark's shares). */
 	RangeScan process(const cv::Mat& bgr, const PixelClassifier* adapted = nullptr, StageTimes* times = nullptr) const;
+
+	/** With floor_adaptation: learns the floor ring of the next image, in the
+	 * order the images were taken, and returns the classifier to scan it
+	 * with (FloorAdaptation.h); without, nothing. The one call that changes
+	 * the Rangefinder: process() stays free to run on many threads. */
+	std::optional<FreeSpaceClassifier> learnFloor(const cv::Mat& bgr);
+	/** learnFloor() then process(): the next image of a live camera or a log. */
+	RangeScan processNext(const cv::Mat& bgr);
+	bool adaptsToFloor() const { return adaptation_.has_value(); }
 
 	/** Calls `use` with the classifier process() classifies `bgr` through
 	 * (`adapted` or the trained one, seen through exposure compensation when
@@ -231,6 +245,7 @@ class Rangefinder
 	bool compensate_{false};
 	FloorRing ring_;
 	FloorRing check_disc_;  // from the ring out to max range, every fourth pixel of radius
+	std::optional<FloorAdaptation> adaptation_;  // with floor_adaptation
 };
 
 }  // namespace omnirange

@@ -61,8 +61,8 @@ struct RawlogScanSummary
 /** In the observations-only format each scan is written right after its
  * image; in the actions/sensory-frames format it goes into the image's frame,
  * so the output keeps the input's format. Throws std::runtime_error naming
- * the file or image on any bad input; the output then does not exist. `progress` counts the objects read. */
-RawlogScanSummary scanRawlog(const Rangefinder& rangefinder, const RawlogScanOptions& options,
-							 Progress* progress = nullptr);
+ * the file or image on any bad input; the output then does not exist. `progress` counts the objects read.
+ * `rangefinder` is a copy: with floor_adaptation each log starts from what training saw. */
+RawlogScanSummary scanRawlog(Rangefinder rangefinder, const RawlogScanOptions& options, Progress* progress = nullptr);
 
 }  // namespace omnirange

@@ -15,7 +15,6 @@
 //   camera_sensorLabel  = OMNICAM
 //   ; ...and any key of docs/parameters.md (N, K, threshold, R, h, ...)
 
-#include <omnirange/core/FloorAdaptation.h>
 #include <omnirange/core/Rangefinder.h>
 
 namespace mrpt::hwdrivers
@@ -51,7 +50,6 @@ class COmniRangefinderSensor : public mrpt::hwdrivers::CGenericSensor, public mr
 	RangefinderParams params_;
 	std::string histogram_file_;
 	std::unique_ptr<Rangefinder> rangefinder_;
-	std::unique_ptr<FloorAdaptation> adaptation_;  // with floor_adaptation only
 	std::unique_ptr<mrpt::hwdrivers::CCameraSensor> camera_;
 };
 
