@@ -150,9 +150,14 @@ printf '' > nolaser.txt
 train "histogram output is the input rawlog" error s.rawlog.none -i s.rawlog -c f.ini -o s.rawlog
 train "histogram output is the ini" error f.ini.none -i s.rawlog -c f.ini -o f.ini
 train "no laser under the label" error t.hist -i s.rawlog -c f.ini -o t.hist --laser-label NOSUCH
-train "bins 0" error t.hist -i s.rawlog -c f.ini -o t.hist --bins 0
-train "bins 100000" error t.hist -i s.rawlog -c f.ini -o t.hist --bins 100000
-train "colour space XYZ" error t.hist -i s.rawlog -c f.ini -o t.hist --colour-space XYZ
+training() { { cat f.ini; printf '\n[%s]\n%s\n' "$2" "$3"; } > "$1.ini"; }
+training bins0 training 'bins = 0' && train "[training] bins = 0" "error:bins = '0'" t.hist -i s.rawlog -c bins0.ini -o t.hist
+training bins_huge training 'bins = 100000' && train "[training] bins = 100000" "error:bins = '100000'" t.hist -i s.rawlog -c bins_huge.ini -o t.hist
+training space_xyz training 'colour_space = XYZ' && train "[training] colour_space = XYZ" error t.hist -i s.rawlog -c space_xyz.ini -o t.hist
+training margin_huge training 'laser_margin = 1e6' && train "[training] laser_margin = 1e6" "error:laser_margin = '1e6'" t.hist -i s.rawlog -c margin_huge.ini -o t.hist
+training misspelt training 'binz = 8' && train "[training] an unknown key" "error:binz" t.hist -i s.rawlog -c misspelt.ini -o t.hist
+training no_grid learning 'thresholds =' && train "[learning] thresholds empty" "error:thresholds" t.hist -i s.rawlog -c no_grid.ini -o t.hist --learn l.ini
+train "--bins is an ini key" error t.hist -i s.rawlog -c f.ini -o t.hist --bins 8
 train "--figures-frame past the end" error t.hist -i s.rawlog -c f.ini -o t.hist --figures t --figures-frame 500
 train "--every -3" error t.hist -i s.rawlog -c f.ini -o t.hist --every -3
 
@@ -368,7 +373,6 @@ mkdir -p midcut && cp s.rawlog midcut.rawlog && cp s_Images/* midcut/ && f=$(ls 
 size=$(stat -c %s "midcut/$f") && { head -c $((size / 3)) "midcut/$f"; tail -c $((size / 3)) "midcut/$f"; } > midcut.jpg
 mkdir -p midcut_Images && cp s_Images/* midcut_Images/ && cp midcut.jpg "midcut_Images/$f"
 run_case "scan: a JPEG cut in the middle (its end marker kept)" "error:is damaged" mc.rawlog -- "$apps/omnirange-scan" -q -i midcut.rawlog -c f.ini -H floor.hist -o mc.rawlog
-run_case "train: --laser-margin 1e6" "error:laser_margin must be within" lm.hist -- "$apps/omnirange-train" -q -i s.rawlog -c f.ini -o lm.hist --laser-margin 1e6
 variant azimuth_huge 'forward_azimuth_deg = 1e308'
 run_case "scan: forward_azimuth_deg = 1e308" "error:forward_azimuth_deg = '1e308'" az.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c azimuth_huge.ini -H floor.hist -o az.rawlog
 run_case "import: --laser-max-range 1e308" "error:max range" imp.rawlog -- "$apps/omnirange-import" -q --images imp --laser imp_laser.csv --laser-max-range 1e308 -o imp.rawlog

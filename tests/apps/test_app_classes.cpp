@@ -414,21 +414,29 @@ TEST(AppClasses, CalibrateFindsTheOrientationThroughAWrongScale)
 
 TEST(AppClasses, CommandLinesFillTheOptions)
 {
-	const char* argv[] = {"omnirange-train", "-i", "in.rawlog", "-o", "out.hist", "-c", "x.ini", "--every", "3",
-						  "--colour-space", "HSV", "-q"};
-	const TrainApp::Options o = TrainApp::parse(12, argv);
+	const char* argv[] = {"omnirange-train", "-i", "in.rawlog", "-o", "out.hist", "-c", "x.ini", "--every", "3", "-q"};
+	const TrainApp::Options o = TrainApp::parse(10, argv);
 	EXPECT_EQ(o.training.input, "in.rawlog");
 	EXPECT_EQ(o.output, "out.hist");
 	EXPECT_EQ(o.training.every, 3);
-	EXPECT_EQ(o.training.training.space, ColourSpace::HSV);
 	EXPECT_EQ(o.training.laser_label, "LASER");  // the default, from the options struct
 	EXPECT_EQ(o.verbosity, mrpt::system::LVL_ERROR);
 	EXPECT_TRUE(o.learning.chroma_on_tie);  // the default
 	const char* learn[] = {"omnirange-train", "-i", "in.rawlog", "-o", "out.hist", "-c", "x.ini", "--learn", "l.ini",
-						   "--learn-candidates", "c.csv", "--learn-no-chroma-on-tie"};
-	const TrainApp::Options l = TrainApp::parse(12, learn);
+						   "--learn-candidates", "c.csv"};
+	const TrainApp::Options l = TrainApp::parse(11, learn);
 	EXPECT_EQ(l.learn_candidates, "c.csv");
-	EXPECT_FALSE(l.learning.chroma_on_tie);
+	// The training's and learning's knobs are the ini's, not the command line's.
+	const char* knob[] = {"omnirange-train", "-i", "in.rawlog", "-o", "out.hist", "-c", "x.ini", "--bins", "8"};
+	try
+	{
+		TrainApp::parse(9, knob);
+		FAIL() << "--bins is an ini key now";
+	}
+	catch (const ExitRequest& e)
+	{
+		EXPECT_EQ(e.code, 2);
+	}
 	const char* candidates_alone[] = {"omnirange-train", "-i", "in.rawlog", "-o", "out.hist", "-c", "x.ini",
 									  "--learn-candidates", "c.csv"};
 	EXPECT_THROW(TrainApp::parse(9, candidates_alone), std::invalid_argument);
@@ -443,6 +451,30 @@ TEST(AppClasses, CommandLinesFillTheOptions)
 	{
 		EXPECT_EQ(e.code, 2);
 	}
+}
+
+TEST(AppClasses, TrainingReadsItsKeysFromTheIni)
+{
+	const std::string dir = workDir("training_section");
+	std::ofstream(dir + "/t.ini") << "base = " << kIni << "\n[training]\ncolour_space = HSV\nbins = 8\nobstacle_band = 0\n";
+	TrainApp::Options o;
+	o.ini = dir + "/t.ini";
+	o.output = dir + "/t.hist";
+	o.training.input = kSample;
+	o.verbosity = mrpt::system::LVL_ERROR;
+	TrainApp(o).run();
+	const ColourModel model = ColourModel::load(o.output);
+	EXPECT_EQ(model.floor.space(), ColourSpace::HSV);
+	EXPECT_EQ(model.floor.binsPerChannel(), 8);
+	EXPECT_EQ(model.obstacles.total(), 0u);  // obstacle_band 0: the floor only
+	// A bad key names its file; nothing is written.
+	std::ofstream(dir + "/bad.ini") << "base = " << kIni << "\n[learning]\nhold_out_every = 1\n";
+	o.ini = dir + "/bad.ini";
+	o.output = dir + "/bad.hist";
+	o.learn_ini = dir + "/bad-learned.ini";
+	EXPECT_EQ(test::errorOf([&] { TrainApp(o).run(); }).rfind(dir + "/bad.ini: [learning] hold_out_every = '1': must be within [2, 1000]", 0), 0u)
+		<< test::errorOf([&] { TrainApp(o).run(); });
+	EXPECT_FALSE(fs::exists(o.output));
 }
 
 TEST(AppClasses, ATrainingThatFailsLeavesTheOldHistogramAndItsFiguresAsTheyWere)

@@ -199,7 +199,7 @@ TEST(ParameterLearning, TheEdgeBiasIsLearnedForTheWinnerAndKeptOnlyWhenItLowersI
 	RangefinderParams rp;
 	RawlogTrainingOptions o = samplePairs(12);
 	LearningOptions lo = oneCandidate();
-	lo.edge_bias = false;
+	lo.fit_edge_bias = false;
 	const LearningResult without = learnParameters(rp, o, lo);
 	EXPECT_TRUE(without.edge_bias.empty());
 	EXPECT_TRUE(without.params.scanner.edge_bias.empty());
@@ -207,7 +207,7 @@ TEST(ParameterLearning, TheEdgeBiasIsLearnedForTheWinnerAndKeptOnlyWhenItLowersI
 	// A start ini that carries an edge bias (an earlier learning's) does not
 	// enter the candidates' scores: it is learned again for the winner.
 	rp.scanner.edge_bias.assign(kEdgeContrastBins, 0.3);
-	lo.edge_bias = true;
+	lo.fit_edge_bias = true;
 	const LearningResult r = learnParameters(rp, o, lo);
 	ASSERT_EQ(r.tried.size(), 1u);
 	EXPECT_EQ(r.tried[0].score, without.tried[0].score);

@@ -82,9 +82,7 @@ CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 	BoundArgs bound(cmd);
 	bound.value("", "square", "side of a board square [m]", o.board.square, "M");
 	TCLAP::ValueArg<std::string> out("o", "output", "with --checkerboard: write the intrinsics here (OpenCV YAML)", false, "", "FILE", cmd);
-	bound.value("", "omni-label", "label of the images", c.omni_label, "LABEL");
-	bound.value("", "laser-label", "label of the laser scans", c.laser_label, "LABEL");
-	bound.value("", "max-dt", "largest time between an image and its scan [s]", c.max_dt, "S");
+	bound.pairing(c.omni_label, c.laser_label, c.max_dt);
 	bound.value("", "every", "use every N-th image/scan pair", c.every, "N");
 	TCLAP::SwitchArg accept("", "accept",
 							"save and exit 0 even when the result looks unsure (RMS over 1 px, an implausible mirror disc)",

@@ -2,6 +2,7 @@
 
 #include "omnirange_apps/CommandLine.h"
 
+#include <omnirange/config/LayeredIni.h>
 #include <omnirange/config/Output.h>
 #include <omnirange/io/ImageFile.h>
 #include <omnirange/io/RawlogWriter.h>
@@ -26,24 +27,13 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	TCLAP::CmdLine cmd("omnirange-train: learn the floor's colours from a rawlog with an omnicam and a laser", ' ', "0.1");
 	TCLAP::ValueArg<std::string> in("i", "input", "rawlog with omnicam images and laser scans", true, "", "RAWLOG", cmd);
 	TCLAP::ValueArg<std::string> out("o", "output", "histogram file to write", true, "", "FILE", cmd);
-	RangefinderIniArgs ini(cmd, "the camera (docs/parameters.md)", true);
+	RangefinderIniArgs ini(cmd, "the camera, and the [training] and [learning] keys (docs/parameters.md)", true);
 	BoundArgs bound(cmd);
-	bound.value("", "omni-label", "label of the images", t.omni_label, "LABEL");
-	bound.value("", "laser-label", "label of the laser scans", t.laser_label, "LABEL");
-	bound.value("", "max-dt", "largest time between an image and its scan [s]", t.max_dt, "S");
+	bound.pairing(t.omni_label, t.laser_label, t.max_dt);
 	bound.value("", "every", "use every N-th image/scan pair", t.every, "N");
 	bound.value("", "first", "skip the pairs before this one (0-based)", t.first, "N");
 	const auto& max_frames = bound.value("n", "max-frames", "use at most this many pairs (0: all)", t.max_frames, "N");
 	bound.value("", "until", "use only the pairs before this one (0: to the end)", t.until, "N");
-	bound.value("", "bins", "bins per colour channel", t.training.bins, "N");
-	bound.named("colour-space", "RGB, HSV or CHROMA", t.training.space, toString(t.training.space), colourSpaceFromString,
-				"SPACE");
-	bound.value("", "laser-margin", "distance kept from laser hits [m]", t.training.laser_margin, "M");
-	bound.value("", "obstacle-band", "how far beyond each laser hit obstacle colours are counted [m]; 0: floor only",
-				t.training.obstacle_band, "M");
-	bound.value("", "light-change",
-				"also count every floor pixel as seen in light this much dimmer and brighter (gains 1-A, 1+A); 0: as seen",
-				t.training.light_change, "A");
 	bound.flag("near-disc-only",
 			   "count only the floor nearer than every laser hit, all round: a first histogram for omnirange-calibrate that "
 			   "does not depend on the ini's orientation",
@@ -51,7 +41,6 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	const auto& figures_frame =
 		bound.value("", "figures-frame", "which used pair the figures show (0-based)", t.figures_frame, "N");
 	TCLAP::ValueArg<std::string> learn("", "learn", "also learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser on held-aside pairs, and write them to this ini", false, "", "INI", cmd);
-	TCLAP::SwitchArg no_chroma_tie("", "learn-no-chroma-on-tie", "with --learn: take the lowest score even when the best CHROMA candidate is behind it by no more than the held-aside frames' noise", cmd);
 	TCLAP::ValueArg<std::string> candidates("", "learn-candidates", "with --learn: also write every candidate tried and its score to this CSV", false, "", "CSV", cmd);
 	TCLAP::ValueArg<std::string> figures("", "figures", "write PREFIX_birdseye.png, PREFIX_laser.png, PREFIX_fused.png (paper Fig. 1)", false, "", "PREFIX", cmd);
 	VerbosityArgs verbosity(cmd);
@@ -62,10 +51,8 @@ TrainApp::Options TrainApp::parse(int argc, const char* const* argv)
 	if (!o.learn_candidates.empty() && o.learn_ini.empty())
 		throw std::invalid_argument("--learn-candidates needs --learn");
 	t.input = in.getValue();
-	o.learning.chroma_on_tie = !no_chroma_tie.getValue();
 	t.figures_prefix = prefixPath(figures, "fig");
 	// Options that only mean something beside another: given without it, say so rather than ignore them.
-	if (no_chroma_tie.isSet() && o.learn_ini.empty()) throw std::invalid_argument("--learn-no-chroma-on-tie needs --learn");
 	if (figures_frame.isSet() && t.figures_prefix.empty()) throw std::invalid_argument("--figures-frame needs --figures");
 	if (max_frames.isSet() && !o.learn_ini.empty())
 		throw std::invalid_argument("-n is not read by --learn, which splits every pair of the range it is given: "
@@ -91,6 +78,8 @@ RawlogTrainingResult TrainApp::run()
 						   figure("_fused.png")},
 						  kProgram, inputs());
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
+	loadIniSection(o_.ini, kTrainingSection, RawlogTrainingOptions::table(), o_.training);
+	loadIniSection(o_.ini, kLearningSection, LearningOptions::table(), o_.learning);
 	Progress progress("objects read");
 	if (!o_.learn_ini.empty()) return learn(params);
 	const RawlogTrainingResult r =

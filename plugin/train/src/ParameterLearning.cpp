@@ -129,13 +129,6 @@ std::vector<EdgeSample> edgeSamples(const Rangefinder& rf, const RawlogTrainingO
 
 namespace
 {
-void validateLearning(const LearningOptions& lo)
-{
-	require(lo.hold_out_every >= 2, "hold_out_every must be >= 2");
-	require(lo.max_validation_pairs >= 1, "max_validation_pairs must be >= 1");
-	for (const double step : lo.step_thresholds) require(step > 0 && step <= 5, "step_thresholds must be within (0, 5]");
-}
-
 /** `v` sorted, each value once: each is scored once. */
 template <class T>
 std::vector<T> sortedOnce(std::vector<T> v)
@@ -365,7 +358,9 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 {
 	o.validate();
 	start.validate();
-	validateLearning(lo);
+	LearningOptions::table().requireRanges(lo);
+	require(!lo.thresholds.empty() && !lo.smoothings.empty() && !lo.obstacle_ratios.empty(),
+			"[learning] thresholds, smoothings and obstacle_ratios need one value at least");
 	Learning l(start, o, lo);
 	l.makeTrainers();
 	l.collect(progress);
@@ -379,7 +374,7 @@ LearningResult learnParameters(const RangefinderParams& start, const RawlogTrain
 		l.r.best = *chroma, l.r.params = withCandidate(start, *chroma);
 	}
 	l.refit();
-	if (lo.edge_bias) l.fitEdgeBias();
+	if (lo.fit_edge_bias) l.fitEdgeBias();
 	l.learnDoubt();
 	l.r.separation = colourSeparation(l.r.model, Rangefinder(l.r.params, l.r.model).classifier(), l.r.params.histogram_smoothing);
 	return l.r;
@@ -636,6 +631,43 @@ std::string learnedIni(const LearningResult& r, const std::string& section)
 	const std::string warning = poorLearningWarning(r);
 	return head + otherSpaceComment(r) + edgeBiasComment(r) + rivalsComment(r) + doubtComment(r) +
 		   (warning.empty() ? "" : "; WARNING: " + warning + "\n") + "[" + section + "]\n" + r.params.asIni();
+}
+
+const OptionsTable<LearningOptions>& LearningOptions::table()
+{
+	using L = LearningOptions;
+	static const auto t =
+		OptionsTable<L>()
+			.add("thresholds", "-", "the Theta values tried", [](L& l) -> auto& { return l.thresholds; })
+			.within(kThresholdRange)
+			.add("smoothings", "bins", "the histogram_smoothing values tried", [](L& l) -> auto& { return l.smoothings; })
+			.within(kSmoothingRange)
+			.add("obstacle_ratios", "-", "the obstacle_ratio values tried (0: the one-class model)",
+				 [](L& l) -> auto& { return l.obstacle_ratios; })
+			.within(kObstacleRatioRange)
+			.add("step_thresholds", "-",
+				 "the brightness step's step_threshold values tried on the best candidates (none: not tried)",
+				 [](L& l) -> auto& { return l.step_thresholds; })
+			.within(Range::openLow(0, 5))
+			.add("step_candidates", "-", "how many of the best candidates the brightness step is tried on",
+				 [](L& l) -> auto& { return l.step_candidates; })
+			.within(Range::closed(1, 1000))
+			.add("hold_out_every", "-", "every hold_out_every-th selected pair is held aside to score on",
+				 [](L& l) -> auto& { return l.hold_out_every; })
+			.within(Range::closed(2, 1000))
+			.add("max_validation_pairs", "-", "at most this many held-aside pairs (their images are kept in memory)",
+				 [](L& l) -> auto& { return l.max_validation_pairs; })
+			.within(Range::closed(1, 10000))
+			.add("chroma_on_tie", "bool",
+				 "take the best CHROMA candidate when the lowest score is behind it by no more than the held-aside "
+				 "frames' noise",
+				 [](L& l) -> auto& { return l.chroma_on_tie; })
+			.add("fit_edge_bias", "bool", "learn the winner's edge bias and keep it when the held-aside pairs agree",
+				 [](L& l) -> auto& { return l.fit_edge_bias; })
+			.add("edge_bias_min_samples", "-", "laser-confirmed hits a contrast bin of the edge bias needs",
+				 [](L& l) -> auto& { return l.edge_bias_min_samples; })
+			.within(Range::closed(1, 1e6));
+	return t;
 }
 
 }  // namespace omnirange

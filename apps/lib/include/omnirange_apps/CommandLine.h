@@ -93,6 +93,13 @@ class BoundArgs
 		args_.push_back(std::move(arg));
 		return given;
 	}
+	/** --omni-label, --laser-label and --max-dt: how a log's images pair with its laser scans. */
+	void pairing(std::string& omni_label, std::string& laser_label, double& max_dt)
+	{
+		value("", "omni-label", "label of the images", omni_label, "LABEL");
+		value("", "laser-label", "label of the laser scans", laser_label, "LABEL");
+		value("", "max-dt", "largest time between an image and its scan [s]", max_dt, "S");
+	}
 	/** After parseArgs(): every bound field takes its option's value. */
 	void fill() const
 	{

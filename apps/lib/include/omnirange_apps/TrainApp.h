@@ -16,12 +16,12 @@ class TrainApp : public mrpt::system::COutputLogger
 	{
 		std::string output;  ///< histogram file to write
 		std::string ini, section{kRangefinderSection};
-		RawlogTrainingOptions training;
+		RawlogTrainingOptions training;  ///< run() reads its [training] keys from `ini` over these
 		/** If not empty: learn the parameters too (ParameterLearning.h) and
 		 * write them, as a [rangefinder] section, to this ini. */
 		std::string learn_ini;
 		std::string learn_candidates;  ///< with learn_ini: every candidate and its score, as CSV
-		LearningOptions learning;
+		LearningOptions learning;  ///< run() reads its [learning] keys from `ini` over these
 		mrpt::system::VerbosityLevel verbosity{mrpt::system::LVL_INFO};
 	};
 	/** Throws ExitRequest on --help or a command-line mistake. */

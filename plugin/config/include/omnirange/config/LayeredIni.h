@@ -5,6 +5,8 @@
 // have a base of its own. Experiment inis use it to hold only what differs
 // from ini/experiment-base.ini, so a default is written once.
 
+#include <omnirange/config/OptionsTable.h>
+
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <filesystem>
@@ -53,5 +55,23 @@ std::vector<std::string> iniBasesOf(const std::string& path);
  * repeated in a section; a missing base or a cycle of bases is an error.
  * Throws std::runtime_error naming the file. */
 LayeredIni readLayeredIni(const std::string& path);
+
+/** Reads [section] of the ini `path` (with its bases) into `s` through
+ * `table`: an absent section or key keeps its value. Throws
+ * std::runtime_error "FILE: why" on an unknown key or a bad value. */
+template <class S>
+void loadIniSection(const std::string& path, const std::string& section, const OptionsTable<S>& table, S& s)
+{
+	const LayeredIni ini = readLayeredIni(path);
+	if (!ini.merged->sectionExists(section)) return;
+	try
+	{
+		table.load(s, *ini.merged, section);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(namingItsFile(ini, path, e));
+	}
+}
 
 }  // namespace omnirange

@@ -65,9 +65,17 @@ struct LearningOptions
 	/** Learn the winner's edge bias (EdgeBias.h) from its hits on every
 	 * selected pair, scanned with the histogram it runs with, and keep it
 	 * when it lowers the winner's score on the held-aside pairs. */
-	bool edge_bias{true};
+	bool fit_edge_bias{true};
 	int edge_bias_min_samples{30};  ///< laser-confirmed hits a contrast bin needs
+
+	/** The keys of [learning] in omnirange-train's ini: the grids of numbers
+	 * and the switches above (the colour spaces, N, K and boundary models
+	 * stay the code's). */
+	static const OptionsTable<LearningOptions>& table();
 };
+
+/** The section of omnirange-train's ini (-c) that holds LearningOptions' keys. */
+inline constexpr char kLearningSection[] = "learning";
 
 /** One candidate and how it did on the held-aside pairs. */
 struct LearnedCandidate

@@ -16,6 +16,11 @@ namespace omnirange
 {
 class Progress;
 
+/** The section of omnirange-train's ini (-c) that holds the histogram's
+ * keys: what a floor's training fixes once. The command line says which
+ * log, its labels and which of its pairs a run uses. */
+inline constexpr char kTrainingSection[] = "training";
+
 struct RawlogTrainingOptions
 {
 	std::string input;
@@ -34,6 +39,8 @@ struct RawlogTrainingOptions
 
 	/** Whether the k-th image/laser pair of the rawlog is used (first, every, until). */
 	bool selects(int k) const { return !((until > 0 && k >= until) || k < first || (k - first) % every != 0); }
+	/** The keys of [training]: the histogram's (TrainingParams). */
+	static const OptionsTable<RawlogTrainingOptions>& table();
 	/** Throws std::invalid_argument on an impossible value. */
 	void validate() const;
 };
