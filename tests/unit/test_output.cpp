@@ -250,10 +250,13 @@ TEST(Output, ALiveRunsStagingIsLeftAlone)
 	EXPECT_EQ(stagingIn(d), 0);
 }
 
-TEST(Output, ARunKilledInTheMiddleOfItsCommitIsFinishedByTheNextRun)
+namespace
 {
-	// As a run killed after its list and its first move leaves the folder: the list, one file moved, the rest staged.
-	const std::string d = fresh("half_committed"), staging = d + "/.omnirange-Killed";
+/** In a fresh folder `name`, what a run killed after its list and its first
+ * moves leaves: the list, report/ exchanged, a.csv moved in, b.csv staged. */
+std::string halfCommitted(const std::string& name)
+{
+	const std::string d = fresh(name), staging = d + "/.omnirange-Killed";
 	put(d + "/a.csv", "old a"), put(d + "/b.csv", "old b");
 	fs::create_directories(d + "/report"), put(d + "/report/x.md", "old report");
 	fs::create_directories(staging + "/report");
@@ -269,10 +272,28 @@ TEST(Output, ARunKilledInTheMiddleOfItsCommitIsFinishedByTheNextRun)
 	fs::rename(staging + "/report", d + "/report.tmp"), fs::rename(d + "/report", staging + "/report"),
 		fs::rename(d + "/report.tmp", d + "/report");  // the folder exchanged
 	fs::rename(staging + "/a.csv", d + "/a.csv");  // a.csv moved; killed before b.csv
+	return d;
+}
+}  // namespace
+
+TEST(Output, ARunKilledInTheMiddleOfItsCommitIsFinishedByTheNextRun)
+{
+	const std::string d = halfCommitted("half_committed");
 	writeFileAtomically(d + "/other.txt", "another run beside them");
 	EXPECT_EQ(read(d + "/report/x.md"), "new report");
 	EXPECT_EQ(read(d + "/a.csv"), "new a");
 	EXPECT_EQ(read(d + "/b.csv"), "new b");
+	EXPECT_EQ(stagingIn(d), 0);
+}
+
+TEST(Output, ARunReadingAHalfCommittedSetFinishesItBeforeReading)
+{
+	// From another folder: the reader's own outputs go elsewhere, its input is the killed run's b.csv.
+	const std::string d = halfCommitted("half_read"), elsewhere = fresh("half_read_out");
+	ASSERT_EQ(read(d + "/b.csv"), "old b");
+	requireOutputAllowed(elsewhere + "/out.csv", OutputKind::Text, "p", {d + "/b.csv"});
+	EXPECT_EQ(read(d + "/b.csv"), "new b");
+	EXPECT_EQ(read(d + "/report/x.md"), "new report");
 	EXPECT_EQ(stagingIn(d), 0);
 }
 
@@ -300,6 +321,36 @@ TEST(Output, ALinkToAFileIsWrittenThroughAndKeepsTheFilesMode)
 	EXPECT_EQ(read(d + "/real.ini"), "[b]\n");
 	EXPECT_EQ(fs::status(d + "/real.ini").permissions() & fs::perms::all,
 			  fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+}
+
+TEST(Output, ALinkToAFolderIsWrittenThroughWhenItLeadsToTheProgramsOwn)
+{
+	const std::string d = fresh("folder_link");
+	commitFolder(d + "/run1", "p", {{"a.csv", "old"}});
+	fs::create_symlink("run1", d + "/latest");
+	commitFolder(d + "/latest", "p", {{"a.csv", "new"}});
+	EXPECT_TRUE(fs::is_symlink(d + "/latest"));
+	EXPECT_EQ(read(d + "/run1/a.csv"), "new");
+	// A link to a user's folder is theirs, as the folder is.
+	fs::create_directories(d + "/mine"), put(d + "/mine/notes.txt", "mine");
+	fs::create_symlink("mine", d + "/to_mine");
+	EXPECT_REFUSED(requireOutputAllowed(d + "/to_mine", OutputKind::Folder, "p", {}), "did not write");
+}
+
+TEST(Output, AnUpdateReplacedByAnEditorBeforeItsMoveIsExchangedBack)
+{
+	// The editor saves by rename after the run read the file: the update's move finds another file there.
+	const std::string d = fresh("update_race"), ini = d + "/my.ini";
+	put(ini, "[a]\n");
+	const std::string state = fileStateOf(ini);
+	put(d + "/saved.ini", "[edited]\n"), fs::rename(d + "/saved.ini", ini);
+	OutputSet set;
+	set.write({ini, OutputKind::Ini}, "[ours]\n");
+	set.write({d + "/other.csv", OutputKind::Text}, "x");
+	set.requireUnchanged(ini, state);
+	EXPECT_THROW(set.commit(), ChangedMeanwhile);
+	EXPECT_EQ(read(ini), "[edited]\n");
+	EXPECT_FALSE(fs::exists(d + "/other.csv"));  // nothing of the set went in
 }
 
 TEST(Output, NamesNoRunCanKeepItsPromiseForAreRefused)
@@ -342,6 +393,8 @@ TEST(Output, ARawlogIsNamedSoThatMrptFindsItsImagesAndNoOtherRawlogReadsThem)
 	EXPECT_REFUSED(requireRawlogOutputAllowed(d + "/log.rlog", "omnirange-scan", {}, false), "is not named NAME.rawlog");
 	writeImageLog(d + "/log.rawlog.gz", 10);
 	EXPECT_REFUSED(requireRawlogOutputAllowed(d + "/log.rawlog", "omnirange-test", {}, false), "reads '");
+	// --force replaces what is there, not what another rawlog would then read.
+	EXPECT_REFUSED(requireRawlogOutputAllowed(d + "/log.rawlog", "omnirange-test", {}, true), "reads '");
 	// A user's folder at NAME_Images is theirs.
 	fs::create_directories(d + "/mine_Images"), put(d + "/mine_Images/photo.jpg", "\xff\xd8\xff");
 	EXPECT_REFUSED(requireRawlogOutputAllowed(d + "/mine.rawlog", "omnirange-scan", {}, false), "did not write");

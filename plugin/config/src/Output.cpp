@@ -206,9 +206,7 @@ void requireNotAnothersPart(const std::string& output, const std::string& progra
 void requireFolderAllowed(const std::string& output, const std::string& program, bool force)
 {
 	std::error_code ec;
-	if (fs::is_symlink(output, ec) && !force)
-		throw std::runtime_error("the output folder '" + output + "' is a symbolic link (remove it, or give another output)");
-	if (!fs::exists(output, ec) || force || fs::is_symlink(output, ec)) return;
+	if (!fs::exists(output, ec) || force) return;
 	if (!fs::is_directory(output, ec))
 		throw std::runtime_error("the output folder '" + output + "' is a file (give another output)");
 	// Moved to the staging folder by the exchange, a folder must be writable (its ".." changes).
@@ -227,9 +225,6 @@ void requireFileAllowed(const Output& o, const std::string& output, const std::s
 {
 	std::error_code ec;
 	const auto status = fs::status(output, ec);
-	if (!fs::exists(status) && fs::is_symlink(output, ec))
-		throw std::runtime_error("the output '" + output + "' is a symbolic link to '" + fs::read_symlink(output, ec).string() +
-								 "', which does not exist (remove the link, or give another output)");
 	if (!fs::exists(status)) return;
 	if (!fs::is_regular_file(status)) throw std::runtime_error("the output '" + output + "' exists and is not a file");
 	if (::access(output.c_str(), W_OK) != 0 || (status.permissions() & fs::perms::owner_write) == fs::perms::none)
@@ -251,13 +246,19 @@ void requireFileAllowed(const Output& o, const std::string& output, const std::s
 
 void requireAllowed(const Output& o, const std::string& program, const std::vector<std::string>& inputs, bool force)
 {
-	const std::string output = outputPath(o.path);
-	if (output.empty()) return;
+	const std::string given = outputPath(o.path);
+	if (given.empty()) return;
 	if (o.kind != OutputKind::Folder && o.path.back() == '/')
 		throw std::runtime_error("'" + o.path + "' ends with '/', which names a folder: this output is a file");
-	requireNameFits(output);
-	requireApartFromInputs(output, o.kind, inputs);
-	if (!force && !program.empty()) requireNotAnothersPart(output, program);
+	requireNameFits(given);
+	requireApartFromInputs(given, o.kind, inputs);
+	if (!force && !program.empty()) requireNotAnothersPart(given, program);
+	// A link, to a file or a folder, is written through: what it leads to is replaced, the link stays.
+	std::error_code ec;
+	if (fs::is_symlink(given, ec) && !fs::exists(given, ec))
+		throw std::runtime_error("the output '" + given + "' is a symbolic link to '" + fs::read_symlink(given, ec).string() +
+								 "', which does not exist (remove the link, or give another output)");
+	const std::string output = fs::is_symlink(given, ec) ? fileLedTo(given) : given;
 	if (o.kind == OutputKind::Folder) return requireFolderAllowed(output, program, force);
 	requireFileAllowed(o, output, program, force);
 }
@@ -392,9 +393,23 @@ std::vector<std::string> markerLines(const std::string& dir)
 	return lines;
 }
 
+void finishKilledCommitsBeside(const std::vector<std::string>& paths)
+{
+	std::error_code ec;
+	for (const auto& path : paths)
+	{
+		if (path.empty() || !fs::exists(path, ec)) continue;
+		const fs::path parent = fs::path(fileLedTo(path)).parent_path();
+		if (!fs::is_directory(parent, ec)) continue;
+		const FolderLock beside(parent.string());
+		recoverLeftoversIn(parent.string());
+	}
+}
+
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force)
 {
+	finishKilledCommitsBeside(inputs);  // an input is read whole: a killed run's commit there is finished first
 	for (std::size_t i = 0; i < outputs.size(); ++i)
 		for (std::size_t j = i + 1; j < outputs.size() && !outputs[i].path.empty(); ++j)
 		{
@@ -457,9 +472,8 @@ std::string OutputSet::stage(const Output& output)
 {
 	std::error_code ec;
 	const std::string given = outputPath(output.path);
-	// A file is written through a link (the file it names is replaced, the link stays); a folder replaces the link.
-	const std::string target =
-		output.kind != OutputKind::Folder && fs::is_symlink(given, ec) ? fs::weakly_canonical(given, ec).string() : given;
+	// Written through a link: the file or folder it leads to is replaced, the link stays.
+	const std::string target = fs::is_symlink(given, ec) ? fileLedTo(given) : given;
 	const fs::path p(target);
 	const std::string parent = p.parent_path().empty() ? "." : p.parent_path().string();
 	const std::string staged = folderFor(parent, output.path).path + "/" + p.filename().string();
@@ -490,21 +504,20 @@ void OutputSet::requireUnchanged(const std::string& path, const std::string& sta
 void OutputSet::check(const Staged& s) const
 {
 	if (!program_.empty()) requireAllowed({s.target, s.output.kind, s.output.begins_with}, program_, inputs_, force_);
-	if (s.state && fileStateOf(s.target) != *s.state)
-		throw ChangedMeanwhile("'" + s.output.path + "' changed while the run went (another run or an editor wrote it): nothing was saved");
 }
 
 std::vector<const OutputSet::Staged*> OutputSet::commitOrder() const
 {
 	std::error_code ec;
-	std::vector<const Staged*> order;  // folders first: the files (a rawlog) name what is in them
+	// Updates first (their check comes with their move: one found changed stops the commit before any other
+	// move), then folders, then files: the files (a rawlog) name what is in the folders.
+	std::vector<const Staged*> updates, folders, files;
 	for (const auto& s : staged_)
 		if (fs::exists(fs::symlink_status(s.staged, ec)))  // staged and never written: nothing to put in
-		{
-			if (fs::is_directory(fs::symlink_status(s.staged, ec))) order.insert(order.begin(), &s);
-			else order.push_back(&s);
-		}
-	return order;
+			(s.state ? updates : fs::is_directory(fs::symlink_status(s.staged, ec)) ? folders : files).push_back(&s);
+	updates.insert(updates.end(), folders.begin(), folders.end());
+	updates.insert(updates.end(), files.begin(), files.end());
+	return updates;
 }
 
 void OutputSet::ready(const Staged& s) const
@@ -533,16 +546,40 @@ void OutputSet::writeLists(const std::vector<const Staged*>& order) const
 	}
 }
 
+/** An update (requireUnchanged) put in by exchange, so that what it replaced
+ * can be looked at after the move: changed since check() (an editor saved in
+ * between), it is exchanged back and nothing is replaced. Created meanwhile
+ * where there was nothing: refused the same way. */
+void OutputSet::placeUpdate(const Staged& s) const
+{
+	const std::string changed = "'" + s.output.path + "' changed while the run went (another run or an editor wrote it): nothing was saved";
+	const bool existed = !s.state->empty();
+	if (::renameat2(AT_FDCWD, s.staged.c_str(), AT_FDCWD, s.target.c_str(), existed ? RENAME_EXCHANGE : RENAME_NOREPLACE) != 0)
+	{
+		if (errno == EEXIST || errno == ENOENT) throw ChangedMeanwhile(changed);
+		throw std::runtime_error("cannot put '" + s.target + "' in place (" + std::strerror(errno) + ")");
+	}
+	if (existed && fileStateOf(s.staged) != *s.state)
+	{
+		// Back, and the refused update removed: a later run finishing this commit must not put it in.
+		::renameat2(AT_FDCWD, s.staged.c_str(), AT_FDCWD, s.target.c_str(), RENAME_EXCHANGE);
+		::unlink(s.staged.c_str());
+		throw ChangedMeanwhile(changed);
+	}
+}
+
 void OutputSet::placeAll(const std::vector<const Staged*>& order)
 {
 	const auto whole = temporaries::interruptsDeferred();  // an interrupt waits for the last move
 	for (std::size_t i = 0; i < order.size(); ++i)
 		try
 		{
-			place(order[i]->staged, order[i]->target);
+			if (order[i]->state) placeUpdate(*order[i]);
+			else place(order[i]->staged, order[i]->target);
 		}
 		catch (const std::exception& e)
 		{
+			if (i == 0 && dynamic_cast<const ChangedMeanwhile*>(&e)) throw;
 			if (i == 0) throw std::runtime_error(std::string(e.what()) + "; the old outputs are as they were");
 			kept_ = true;  // the next run beside it puts the rest in; an interrupt does not remove it
 			for (const auto& f : folders_) temporaries::forget(f.path);

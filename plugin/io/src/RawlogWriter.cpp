@@ -67,7 +67,7 @@ void requireRawlogOutputAllowed(const std::string& rawlog, const std::string& pr
 	requireOutputsAllowed({{rawlog, OutputKind::Rawlog}, {images, OutputKind::Folder}}, program, inputs, force);
 	requireRawlogName(rawlog);
 	if (file != outputPath(rawlog)) requireRawlogName(file);
-	if (!force) requireImagesOf(images, file);
+	requireImagesOf(images, file);  // even with --force: that other rawlog is not replaced, it would read wrong images
 }
 
 RawlogWriter::RawlogWriter(const std::string& path, const std::string& program, bool force)
