@@ -209,9 +209,7 @@ void Experiment::train()
 	RawlogTrainingOptions o;
 	o.input = dataset_;
 	o.every = c_.train_every;
-	o.training.space = c_.colour_space;
-	o.training.bins = c_.bins;
-	o.training.obstacle_band = c_.obstacle_band;
+	o.training = c_.training;
 	r_.training_until = c_.trainingFrames(r_.simulated.frames);
 	o.until = r_.training_until;
 	o.figures_prefix = out_ + "/fig1";
@@ -227,7 +225,7 @@ void Experiment::learn(const RawlogTrainingOptions& o)
 {
 	const RangefinderParams start = c_.rangefinder;
 	Progress progress("training pairs read for learning");
-	const LearningResult l = learnParameters(start, o, {}, showsProgress() ? &progress : nullptr);
+	const LearningResult l = learnParameters(start, o, c_.learning, showsProgress() ? &progress : nullptr);
 	c_.rangefinder = l.params;
 	histogram_data_ = l.model;
 	histogram_data_.save(histogram_);

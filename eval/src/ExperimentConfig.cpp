@@ -33,12 +33,9 @@ const OptionsTable<ExperimentConfig>& ExperimentConfig::table()
 			 [](C& c) -> auto& { return c.train_fraction; })
 		.add("learn", "bool", "learn colour space, bins, threshold, obstacle_ratio, N, K and the boundary model against the laser",
 			 [](C& c) -> auto& { return c.learn; })
-		.addEnum("colour_space", "the histogram's colour space: RGB (the paper's), HSV or CHROMA",
-				 [](C& c) -> auto& { return c.colour_space; }, colourSpaceFromString,
-				 {ColourSpace::RGB, ColourSpace::HSV, ColourSpace::Chroma})
-		.add("bins", "-", "histogram bins per colour channel", [](C& c) -> auto& { return c.bins; })
-		.add("obstacle_band", "m", "obstacle colours counted this far beyond the laser's hits (0: floor only)",
-			 [](C& c) -> auto& { return c.obstacle_band; })
+		.renamed("colour_space", "set colour_space in [training], as omnirange-train reads it")
+		.renamed("bins", "set bins in [training], as omnirange-train reads it")
+		.renamed("obstacle_band", "set obstacle_band in [training], as omnirange-train reads it")
 		.add("match_tolerance", "m", "a map's occupied cell within this of a true wall counts as correct",
 			 [](C& c) -> auto& { return c.match_tolerance; })
 		.add("icp_laser_ini", "file", "icp-slam configuration for the laser", [](C& c) -> auto& { return c.icp_laser_ini; })
@@ -102,18 +99,8 @@ void validate(ExperimentConfig& c)
 	require(c.max_frames >= 0, "[experiment] max_frames must be >= 0");
 	require(c.train_every >= 1, "[experiment] train_every must be >= 1");
 	require(c.train_fraction > 0 && c.train_fraction < 1, "[experiment] train_fraction must be within (0, 1)");
-	require(c.bins >= 1 && c.bins <= 64, "[experiment] bins must be within [1, 64]");
-	// The training's own checks, now: a bad value fails before the simulation, not after it.
-	RawlogTrainingOptions training;
-	training.every = c.train_every, training.training.bins = c.bins, training.training.obstacle_band = c.obstacle_band;
-	try
-	{
-		training.validate();
-	}
-	catch (const std::invalid_argument& e)
-	{
-		throw std::invalid_argument(std::string("[experiment] ") + e.what());
-	}
+	// Learning tries bins and twice as many: within what a report's histograms hold.
+	require(c.training.bins <= 64, "[training] bins must be within [1, 64] in an experiment");
 	require(c.match_tolerance >= 0, "[experiment] match_tolerance must be >= 0 m");
 	if (!c.hasCheckRegion()) return;
 	std::istringstream in(c.check_region);
@@ -161,7 +148,7 @@ void ExperimentConfig::requireEnoughFrames() const
 	training.every = train_every, training.until = trained_on;
 	int selected = 0;
 	for (int k = 0; k < trained_on; ++k) selected += training.selects(k);
-	if (learn && !enoughToLearn(LearningOptions{}, selected))
+	if (learn && !enoughToLearn(learning, selected))
 		throw std::runtime_error(planned + " give " + std::to_string(selected) +
 								 (selected == 1 ? " training pair" : " training pairs") + " (train_fraction " + formatDouble(train_fraction) + ", train_every " +
 								 std::to_string(train_every) + "): too few for learn = true to train on some and validate on others");
@@ -185,6 +172,9 @@ ExperimentConfig ExperimentConfig::load(const std::string& ini)
 	{
 		const auto& cfg = *layers.merged;
 		table().load(c, cfg, "experiment");
+		// Loaded with their ranges checked: a bad value fails before the simulation, not after it.
+		if (cfg.sectionExists(kTrainingSection)) TrainingParams::table().load(c.training, cfg, kTrainingSection);
+		if (cfg.sectionExists(kLearningSection)) LearningOptions::table().load(c.learning, cfg, kLearningSection);
 		resolvePaths(c, layers);
 		// What is checked is what the programs get: their inis' bytes, taken first (requireMrptInisAsChecked()).
 		for (const auto* mrpt_ini : {&c.icp_laser_ini, &c.icp_omni_ini, &c.icp_fused_ini, &c.map_laser_ini,

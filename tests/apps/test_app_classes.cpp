@@ -551,6 +551,34 @@ TEST(AppClasses, LearnedParametersLoadAndScoreOnFramesTheyNeverSaw)
 	EXPECT_LT(acc.stats.meanAbs(), 0.1375);  // within the paper's worst Table II figure
 }
 
+TEST(AppClasses, AnExperimentReadsTrainingAndLearningAsOmnirangeTrainDoes)
+{
+	const std::string ini = kSource + "/ini/tmp-training.ini", factory = readText(kSource + "/ini/factory.ini");
+	const auto load = [&](const std::string& extra) {
+		std::ofstream(ini) << factory << extra;
+		const auto cleanup = [&] { fs::remove(ini); };
+		try
+		{
+			auto c = eval::ExperimentConfig::load(ini);
+			cleanup();
+			return c;
+		}
+		catch (...)
+		{
+			cleanup();
+			throw;
+		}
+	};
+	const auto c = load("\n[training]\nbins = 8\ncolour_space = CHROMA\n[learning]\nhold_out_every = 3\n");
+	EXPECT_EQ(c.training.bins, 8);
+	EXPECT_EQ(c.training.space, ColourSpace::Chroma);
+	EXPECT_EQ(c.learning.hold_out_every, 3);
+	EXPECT_NE(test::errorOf([&] { load("\n[training]\nbins = 100\n"); }).find("[training] bins must be within [1, 64] in an experiment"),
+			  std::string::npos);
+	EXPECT_NE(test::errorOf([&] { load("bins = 8\n"); }).find("set bins in [training]"), std::string::npos)
+		<< test::errorOf([&] { load("bins = 8\n"); });
+}
+
 TEST(AppClasses, AnMrptProgramsIniEditedAfterItWasCheckedIsNotRun)
 {
 	// The factory's experiment with its omnicam icp-slam ini in a copy of the user's, edited once checked.

@@ -179,8 +179,8 @@ TEST(IniFiles, DocsListEveryKeyWithTheCodesUnitAndDefault)
 		if (std::regex_search(l, m, row)) documented[m[1]] = {m[2], m[3], m[4]};
 	}
 	expectDocumented(RangefinderParams::table(), documented);
-	expectDocumented(RawlogTrainingOptions::table(), documented);
+	expectDocumented(TrainingParams::table(), documented);
 	expectDocumented(LearningOptions::table(), documented);
-	EXPECT_EQ(documented.size(), RangefinderParams::table().fields().size() + RawlogTrainingOptions::table().fields().size() +
+	EXPECT_EQ(documented.size(), RangefinderParams::table().fields().size() + TrainingParams::table().fields().size() +
 									 LearningOptions::table().fields().size());
 }

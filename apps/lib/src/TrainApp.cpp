@@ -78,7 +78,7 @@ RawlogTrainingResult TrainApp::run()
 						   figure("_fused.png")},
 						  kProgram, inputs());
 	const RangefinderParams params = loadRangefinderIni(o_.ini, o_.section, *this);
-	loadIniSection(o_.ini, kTrainingSection, RawlogTrainingOptions::table(), o_.training);
+	loadIniSection(o_.ini, kTrainingSection, TrainingParams::table(), o_.training.training);
 	loadIniSection(o_.ini, kLearningSection, LearningOptions::table(), o_.learning);
 	Progress progress("objects read");
 	if (!o_.learn_ini.empty()) return learn(params);

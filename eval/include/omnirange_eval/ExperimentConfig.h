@@ -4,6 +4,7 @@
 
 #include <omnirange/core/Rangefinder.h>
 #include <omnirange/train/HistogramTrainer.h>
+#include <omnirange/train/ParameterLearning.h>
 #include <omnirange/config/OptionsTable.h>
 
 #include <array>
@@ -35,12 +36,10 @@ struct ExperimentConfig
 	double train_fraction{0.2};
 	/** Learn colour space, bins, Theta, obstacle_ratio, N, K and the boundary model against the laser
 	 * on held-aside training pairs (ParameterLearning.h) instead of taking
-	 * [rangefinder]'s and colour_space. */
+	 * [rangefinder]'s and [training]'s. */
 	bool learn{false};
-	ColourSpace colour_space{ColourSpace::RGB};  ///< of the trained histogram
-	int bins{ColourHistogram::kDefaultBins};  ///< per colour channel
-	/** [m] obstacle colours counted this far beyond the laser's hits (0: floor only). */
-	double obstacle_band{TrainingParams{}.obstacle_band};
+	TrainingParams training;  ///< [training], as omnirange-train reads it
+	LearningOptions learning;  ///< [learning], with learn
 	double match_tolerance{0.10};  ///< [m] a built map's cell within this of a true wall is correct
 	/** "x y w d" [m]: a box whose occupied cells the report measures (empty: none). */
 	std::string check_region;

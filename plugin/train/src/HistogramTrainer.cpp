@@ -9,6 +9,33 @@
 
 namespace omnirange
 {
+const OptionsTable<TrainingParams>& TrainingParams::table()
+{
+	using T = TrainingParams;
+	static const auto t =
+		OptionsTable<T>()
+			.add("bins", "bins", "histogram bins per colour channel", [](T& t) -> auto& { return t.bins; })
+			.within(Range::closed(1, 256))
+			.addEnum("colour_space", "the histogram's colour space (CHROMA: rg chromaticity and log brightness)",
+					 [](T& t) -> auto& { return t.space; }, colourSpaceFromString,
+					 {ColourSpace::RGB, ColourSpace::HSV, ColourSpace::Chroma})
+			// Farther than the laser sees is no margin; a huge one only costs time (each hit walks it).
+			.add("laser_margin", "m", "distance kept clear of every laser hit (mixed pixels)",
+				 [](T& t) -> auto& { return t.laser_margin; })
+			.within(Range::closed(0, 5))
+			.add("obstacle_band", "m",
+				 "how far beyond each laser hit the obstacle's colours are counted (the two-class model); 0: the "
+				 "floor only",
+				 [](T& t) -> auto& { return t.obstacle_band; })
+			.within(Range::closed(0, 5))
+			.add("light_change", "-",
+				 "also count every floor pixel as seen in light this much dimmer and brighter (gains 1 - a, 1 + a); "
+				 "0: as seen",
+				 [](T& t) -> auto& { return t.light_change; })
+			.within(Range::openHigh(0, 1));
+	return t;
+}
+
 cv::Mat withGain(const cv::Mat& bgr, double gain)
 {
 	if (gain == 1.0) return bgr;

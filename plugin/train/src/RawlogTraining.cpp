@@ -8,40 +8,13 @@
 
 namespace omnirange
 {
-const OptionsTable<RawlogTrainingOptions>& RawlogTrainingOptions::table()
-{
-	using O = RawlogTrainingOptions;
-	static const auto t =
-		OptionsTable<O>()
-			.add("bins", "bins", "histogram bins per colour channel", [](O& o) -> auto& { return o.training.bins; })
-			.within(Range::closed(1, 256))
-			.addEnum("colour_space", "the histogram's colour space (CHROMA: rg chromaticity and log brightness)",
-					 [](O& o) -> auto& { return o.training.space; }, colourSpaceFromString,
-					 {ColourSpace::RGB, ColourSpace::HSV, ColourSpace::Chroma})
-			// Farther than the laser sees is no margin; a huge one only costs time (each hit walks it).
-			.add("laser_margin", "m", "distance kept clear of every laser hit (mixed pixels)",
-				 [](O& o) -> auto& { return o.training.laser_margin; })
-			.within(Range::closed(0, 5))
-			.add("obstacle_band", "m",
-				 "how far beyond each laser hit the obstacle's colours are counted (the two-class model); 0: the "
-				 "floor only",
-				 [](O& o) -> auto& { return o.training.obstacle_band; })
-			.within(Range::closed(0, 5))
-			.add("light_change", "-",
-				 "also count every floor pixel as seen in light this much dimmer and brighter (gains 1 - a, 1 + a); "
-				 "0: as seen",
-				 [](O& o) -> auto& { return o.training.light_change; })
-			.within(Range::openHigh(0, 1));
-	return t;
-}
-
 void RawlogTrainingOptions::validate() const
 {
 	require(every >= 1, "every must be >= 1");
 	require(first >= 0 && max_frames >= 0 && until >= 0, "first, until and max_frames must be >= 0");
 	require(figures_frame >= 0, "figures_frame must be >= 0");
 	requirePairingDt(max_dt);
-	table().requireRanges(*this);
+	TrainingParams::table().requireRanges(training);
 }
 
 RawlogTrainingResult trainFromRawlog(const RangefinderParams& rp, const RawlogTrainingOptions& o, Progress* progress)

@@ -33,6 +33,9 @@ struct TrainingParams
 	 * orientation, so a first histogram for omnirange-calibrate cannot
 	 * learn the orientation it was trained with. */
 	bool near_disc_only{false};
+
+	/** The keys of [training] (kTrainingSection): all but resolution and near_disc_only. */
+	static const OptionsTable<TrainingParams>& table();
 };
 
 /** The three images of paper Fig. 1 for one frame. */

@@ -39,8 +39,6 @@ struct RawlogTrainingOptions
 
 	/** Whether the k-th image/laser pair of the rawlog is used (first, every, until). */
 	bool selects(int k) const { return !((until > 0 && k >= until) || k < first || (k - first) % every != 0); }
-	/** The keys of [training]: the histogram's (TrainingParams). */
-	static const OptionsTable<RawlogTrainingOptions>& table();
 	/** Throws std::invalid_argument on an impossible value. */
 	void validate() const;
 };
