@@ -113,24 +113,22 @@ std::vector<std::string> withWhatInputsBring(const std::vector<std::string>& inp
 	return all;
 }
 
-void requireApartFromInputs(const std::string& output, OutputKind kind, const std::vector<std::string>& inputs)
+/** Where `output` is written (through links, as every output is) is no input, holds none and lies in none. */
+void requireApartFromInputs(const std::string& output, const std::vector<std::string>& inputs)
 {
 	std::error_code ec;
-	// A folder that is a link is replaced as a link (nothing it names is touched); a file is written through.
-	const bool link_itself = kind == OutputKind::Folder && fs::is_symlink(output, ec);
-	const fs::path out = link_itself ? whereWritten(fs::path(output).parent_path().string()) / fs::path(output).filename()
-									 : whereWritten(output);
+	const fs::path out = whereWritten(output);
 	for (const auto& in : withWhatInputsBring(inputs))
 	{
 		(void)fs::canonical(fs::absolute(in), ec);
 		if (ec == std::errc::too_many_symbolic_link_levels)
 			throw std::runtime_error("the input '" + in + "' is a link that leads back to itself, or one of more than 40 in a row");
 		const fs::path input = whereWritten(in);
-		if (link_itself ? out == input : same(out, input))
+		if (same(out, input))
 			throw std::runtime_error("the output '" + output + "' is the input '" + in + "': refusing to overwrite it");
-		if (!link_itself && within(input, out))
+		if (within(input, out))
 			throw std::runtime_error("the output '" + output + "' holds the input '" + in + "': refusing to replace it");
-		if (within(link_itself ? out.parent_path() : out, input) || (link_itself && within(out, input)))
+		if (within(out, input))
 			throw std::runtime_error("the output '" + output + "' is inside the input '" + in + "': write it elsewhere");
 	}
 }
@@ -251,7 +249,7 @@ void requireAllowed(const Output& o, const std::string& program, const std::vect
 	if (o.kind != OutputKind::Folder && o.path.back() == '/')
 		throw std::runtime_error("'" + o.path + "' ends with '/', which names a folder: this output is a file");
 	requireNameFits(given);
-	requireApartFromInputs(given, o.kind, inputs);
+	requireApartFromInputs(given, inputs);
 	if (!force && !program.empty()) requireNotAnothersPart(given, program);
 	// A link, to a file or a folder, is written through: what it leads to is replaced, the link stays.
 	std::error_code ec;
