@@ -201,6 +201,9 @@ void requireNotAnothersPart(const std::string& output, const std::string& progra
 		}
 }
 
+/** After access(W_OK) failed: the file's mode, or the file system mounted read-only. */
+std::string readOnlyWhy() { return errno == EROFS ? "is on a read-only file system" : "is read-only"; }
+
 void requireFolderAllowed(const std::string& output, const std::string& program, bool force)
 {
 	std::error_code ec;
@@ -208,8 +211,9 @@ void requireFolderAllowed(const std::string& output, const std::string& program,
 	if (!fs::is_directory(output, ec))
 		throw std::runtime_error("the output folder '" + output + "' is a file (give another output)");
 	// Moved to the staging folder by the exchange, a folder must be writable (its ".." changes).
+	errno = 0;
 	if (::access(output.c_str(), W_OK) != 0)
-		throw std::runtime_error("the output folder '" + output + "' is read-only: refusing to replace it");
+		throw std::runtime_error("the output folder '" + output + "' " + readOnlyWhy() + ": refusing to replace it");
 	if (fs::is_empty(output, ec)) return;
 	if (const std::string writer = writerOf(output); writer != program)
 		throw std::runtime_error("'" + output + "' is " + (writer.empty() ? "a folder " + program + " did not write" : "what " + writer + " wrote, not " + program) +
@@ -225,8 +229,9 @@ void requireFileAllowed(const Output& o, const std::string& output, const std::s
 	const auto status = fs::status(output, ec);
 	if (!fs::exists(status)) return;
 	if (!fs::is_regular_file(status)) throw std::runtime_error("the output '" + output + "' exists and is not a file");
+	errno = 0;
 	if (::access(output.c_str(), W_OK) != 0 || (status.permissions() & fs::perms::owner_write) == fs::perms::none)
-		throw std::runtime_error("'" + output + "' is read-only: refusing to replace it");
+		throw std::runtime_error("'" + output + "' " + readOnlyWhy() + ": refusing to replace it");
 	// In a sticky folder (as /tmp) only the file's or the folder's owner may rename over it.
 	struct stat folder{}, file{};
 	const std::string parent = fs::path(output).parent_path().empty() ? "." : fs::path(output).parent_path().string();
