@@ -368,6 +368,7 @@ TEST(Output, NamesNoRunCanKeepItsPromiseForAreRefused)
 	EXPECT_REFUSED(requireOutputAllowed(d + "/ro.csv", OutputKind::Text, "p", {}, true), "read-only");
 	fs::create_directories(d + "/dir.csv");
 	EXPECT_REFUSED(requireOutputAllowed(d + "/dir.csv", OutputKind::Text, "p", {}, true), "is not a file");
+	EXPECT_REFUSED(writeFileAtomically(d + "/no_such_folder/x.csv", "x"), "'" + d + "/no_such_folder' of the output");
 	put(d + "/file_not_folder", "x");
 	EXPECT_REFUSED(requireOutputAllowed(d + "/file_not_folder", OutputKind::Folder, "p", {}), "is a file");
 }

@@ -463,7 +463,9 @@ OutputSet::Folder& OutputSet::folderFor(const std::string& parent, const std::st
 	recoverLeftoversIn(parent);
 	std::string path = parent + "/" + kStagingPrefix + "XXXXXX";
 	errno = 0;
-	if (!::mkdtemp(path.data())) throw std::runtime_error(cannotWrite(output, "cannot make a folder beside it"));
+	if (!::mkdtemp(path.data()))
+		throw std::runtime_error(errno == ENOENT ? "the folder '" + parent + "' of the output '" + output + "' does not exist (make it first)"
+												 : cannotWrite(output, "cannot make a folder beside it"));
 	temporaries::add(path);
 	const int fd = ::open((path + "/" + kCommitList).c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
 	if (fd < 0 || ::flock(fd, LOCK_EX) != 0) throw std::runtime_error(cannotWrite(path + "/" + kCommitList));
