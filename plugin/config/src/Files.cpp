@@ -44,6 +44,12 @@ std::string fileLedTo(const std::string& path)
 	return fs::weakly_canonical(path, ec).string();
 }
 
+std::string writtenThrough(const std::string& path)
+{
+	std::error_code ec;
+	return fs::is_symlink(path, ec) ? fileLedTo(path) : path;
+}
+
 void requireStillLeadsTo(const std::string& path, const std::string& was, const std::string& since)
 {
 	if (const std::string now = fileLedTo(path); now != was)

@@ -261,7 +261,7 @@ void requireAllowed(const Output& o, const std::string& program, const std::vect
 	if (fs::is_symlink(given, ec) && !fs::exists(given, ec))
 		throw std::runtime_error("the output '" + given + "' is a symbolic link to '" + fs::read_symlink(given, ec).string() +
 								 "', which does not exist (remove the link, or give another output)");
-	const std::string output = fs::is_symlink(given, ec) ? fileLedTo(given) : given;
+	const std::string output = writtenThrough(given);
 	if (o.kind == OutputKind::Folder) return requireFolderAllowed(output, program, force);
 	requireFileAllowed(o, output, program, force);
 }
@@ -475,10 +475,9 @@ OutputSet::Folder& OutputSet::folderFor(const std::string& parent, const std::st
 
 std::string OutputSet::stage(const Output& output)
 {
-	std::error_code ec;
 	const std::string given = outputPath(output.path);
 	// Written through a link: the file or folder it leads to is replaced, the link stays.
-	const std::string target = fs::is_symlink(given, ec) ? fileLedTo(given) : given;
+	const std::string target = writtenThrough(given);
 	const fs::path p(target);
 	const std::string parent = p.parent_path().empty() ? "." : p.parent_path().string();
 	const std::string staged = folderFor(parent, output.path).path + "/" + p.filename().string();

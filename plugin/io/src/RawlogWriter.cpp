@@ -22,11 +22,7 @@ namespace omnirange
 namespace
 {
 /** The file a rawlog output writes: through a link, the file it names (its images go beside that). */
-std::string fileWritten(const std::string& rawlog)
-{
-	std::error_code ec;
-	return fs::is_symlink(rawlog, ec) ? fileLedTo(rawlog) : outputPath(rawlog);
-}
+std::string fileWritten(const std::string& rawlog) { return writtenThrough(outputPath(rawlog)); }
 
 /** NAME_Images serves every rawlog named NAME (NAME.rawlog, NAME.rawlog.gz,
  * NAME): while another of them is there, this one does not take its images over. */

@@ -14,6 +14,9 @@ std::string imagesDirFor(const std::string& rawlog_path);
 std::string imagesDirToRead(const std::string& rawlog_path);
 /** The file `path` leads to, links resolved (what a save into it writes). */
 std::string fileLedTo(const std::string& path);
+/** Where an output at `path` is written: through a link, what it leads to
+ * (fileLedTo()); otherwise `path` as given. */
+std::string writtenThrough(const std::string& path);
 /** Throws naming both unless `path` leads to `was` still (fileLedTo() when
  * `since` began): a link made meanwhile would send a save to a file never given. */
 void requireStillLeadsTo(const std::string& path, const std::string& was, const std::string& since);
