@@ -6,8 +6,11 @@
 #include <omnirange/io/ObservationImage.h>
 
 #include <gtest/gtest.h>
+#include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+
+#include <fstream>
 
 using namespace omnirange;
 
@@ -104,4 +107,36 @@ TEST(RegionDecoding, ABoxOutsideASmallerImageDecodesItWhole)
 	PixelBox box;
 	box.left = 150, box.right = 400, box.top = 20, box.bottom = 300;
 	EXPECT_EQ(cv::norm(decodeImageFile(file, ""), decodeImageFile(file, "", cv::IMREAD_COLOR, box), cv::NORM_INF), 0.0);
+}
+
+TEST(RegionDecoding, DamageInRowsTheScanReadsIsRefusedAndBelowThemIsNot)
+{
+	// Noise: the coded data is spread evenly over the rows, so a cut at 70-80 % of it is far below row 116.
+	cv::Mat noise(768, 1024, CV_8UC3);
+	cv::randu(noise, 0, 255);
+	std::vector<uchar> buf;
+	cv::imencode(".jpg", noise, buf);
+	const std::string whole(buf.begin(), buf.end()), d = test::freshDir("omnirange_region", "damage");
+	const std::size_t n = whole.size();
+	std::ofstream(d + "/whole.jpg", std::ios::binary) << whole;
+	std::ofstream(d + "/damaged.jpg", std::ios::binary) << whole.substr(0, n * 7 / 10) + whole.substr(n * 8 / 10);
+	PixelBox top, bottom;
+	top.left = 10, top.right = 100, top.top = 10, top.bottom = 100;
+	bottom.left = 10, bottom.right = 100, bottom.top = 600, bottom.bottom = 700;
+	const cv::Rect read(10, 10, 91, 91);
+	const cv::Mat part = decodeImageFile(d + "/damaged.jpg", "", cv::IMREAD_COLOR, top);
+	EXPECT_EQ(cv::norm(part(read), decodeImageFile(d + "/whole.jpg", "")(read), cv::NORM_INF), 0.0);
+	for (const PixelBox& box : {bottom, PixelBox{}})
+	{
+		std::string why;
+		try
+		{
+			decodeImageFile(d + "/damaged.jpg", "", cv::IMREAD_COLOR, box);
+		}
+		catch (const std::exception& e)
+		{
+			why = e.what();
+		}
+		EXPECT_NE(why.find("is damaged"), std::string::npos) << why;
+	}
 }

@@ -60,7 +60,9 @@ void readRegion(jpeg_decompress_struct& info, const PixelBox& region, cv::Mat& i
 		JSAMPROW row = image.ptr(static_cast<int>(info.output_scanline)) + x * image.elemSize();
 		jpeg_read_scanlines(&info, &row, 1);
 	}
-	jpeg_skip_scanlines(&info, info.output_height - info.output_scanline);  // still read: damage below is found
+	// To the end: libjpeg-turbo stops there, unread. Damage in the rows above and in the box is found (their
+	// coded data is read in order); below the box, where the scan reads nothing, it is not looked for.
+	jpeg_skip_scanlines(&info, info.output_height - info.output_scanline);
 }
 
 }  // namespace
