@@ -49,7 +49,9 @@ double meiUndistorted(const CameraParams& p, double rd)
 		const double r2 = r * r;
 		const double df = 1 + 3 * p.k1 * r2 + 5 * p.k2 * r2 * r2;
 		if (df <= 0) break;
-		r -= (meiDistorted(p, r) - rd) / df;
+		const double step = (meiDistorted(p, r) - rd) / df;
+		if (step == 0) break;  // a fixed point: the iterations left would not change r
+		r -= step;
 	}
 	return r;
 }
