@@ -328,9 +328,9 @@ run_case "import: --carmen with no CARMEN message" "error:no CARMEN" imp4.rawlog
 mkfifo fill.fifo
 run_case "summary: --fill a FIFO" "error:not a regular file" none.out -- "$apps/omnirange-summary" -q --csv "$src/docs/results/suite.csv" --fill fill.fifo
 long_name=$(printf 'c%.0s' $(seq 249)).rawlog
-run_case "scan: an output name of 256 characters" "error:characters: the system takes at most 255" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o "$long_name"
+run_case "scan: an output name of 256 characters" "error:(File name too long)" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o "$long_name"
 run_case "scan: a line break in the output's name (a marker would list another file)" "error:has a control character" none.out -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H floor.hist -o $'nl\nfile f.ini.rawlog'
-run_case "accuracy: a prefix of 250 characters (names each output it would make)" "error:_pairs.csv' is 260 characters" none.out -- "$apps/omnirange-accuracy" -q -i scanned.rawlog -o "$(printf 'c%.0s' $(seq 250))"
+run_case "accuracy: a prefix of 250 characters (names each output it would make)" "error:_pairs.csv' (File name too long)" none.out -- "$apps/omnirange-accuracy" -q -i scanned.rawlog -o "$(printf 'c%.0s' $(seq 250))"
 # Sparse files: large to a reader, nothing on the disk.
 cp floor.hist big.hist && truncate -s 1G big.hist
 run_case "scan: -H a 1 GB file that begins as a histogram" "error:more than the" none.rawlog -- "$apps/omnirange-scan" -q -i s.rawlog -c f.ini -H big.hist -o none.rawlog

@@ -359,7 +359,7 @@ TEST(Output, NamesNoRunCanKeepItsPromiseForAreRefused)
 	EXPECT_REFUSED(requireOutputAllowed(d + "/a\nb.csv", OutputKind::Text, "p", {}), "control character");
 	EXPECT_REFUSED(requireOutputAllowed(d + "/.omnirange-abcdef", OutputKind::Text, "p", {}), "staging folders");
 	EXPECT_REFUSED(requireOutputAllowed(d + "/x.csv/", OutputKind::Text, "p", {}), "names a folder");
-	EXPECT_REFUSED(requireOutputAllowed(d + "/" + std::string(256, 'n'), OutputKind::Text, "p", {}), "at most 255");
+	EXPECT_REFUSED(requireOutputAllowed(d + "/" + std::string(256, 'n'), OutputKind::Text, "p", {}), "(File name too long)");
 	EXPECT_NO_THROW(requireOutputAllowed(d + "/" + std::string(255, 'n'), OutputKind::Text, "p", {}));
 	fs::create_symlink("nowhere.csv", d + "/dangling.csv");
 	EXPECT_REFUSED(requireOutputAllowed(d + "/dangling.csv", OutputKind::Text, "p", {}), "which does not exist");

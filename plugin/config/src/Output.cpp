@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -172,15 +171,7 @@ void requireNameFits(const std::string& output)
 	if (name.rfind(kStagingPrefix, 0) == 0)
 		throw std::runtime_error("the output's name '" + name + "' begins as the runs' staging folders do (" + kStagingPrefix +
 								 "): give another name");
-	// Staged as .omnirange-XXXXXX/NAME beside itself: the name as it is, the path 19 characters longer.
-	if (name.size() > NAME_MAX)
-		throw std::runtime_error("the output's name '" + name.substr(0, 12) + "..." + name.substr(name.size() - 20) + "' is " +
-								 std::to_string(name.size()) + " characters: the system takes at most " + std::to_string(NAME_MAX));
-	if (output.size() >= PATH_MAX - 20)
-		throw std::runtime_error("cannot reach the output '..." + output.substr(output.size() - 60) + "': its path is " +
-								 std::to_string(output.size()) + " characters, and the system takes at most " +
-								 std::to_string(PATH_MAX - 21) + " here (write it from a folder with a shorter path)");
-	std::error_code ec;
+	std::error_code ec;  // a name or a path too long for the system is refused here
 	(void)fs::symlink_status(output, ec);
 	if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
 		throw std::runtime_error("cannot reach the output '" + output + "' (" + ec.message() + ")");
@@ -329,6 +320,20 @@ void recoverLeftoversIn(const std::string& parent)
 	}
 }
 
+/** What killed runs left beside each of `paths`, recovered (above). */
+void finishKilledCommitsBeside(const std::vector<std::string>& paths)
+{
+	std::error_code ec;
+	for (const auto& path : paths)
+	{
+		if (path.empty() || !fs::exists(path, ec)) continue;
+		const fs::path parent = fs::path(fileLedTo(path)).parent_path();
+		if (!fs::is_directory(parent, ec)) continue;
+		const FolderLock beside(parent.string());
+		recoverLeftoversIn(parent.string());
+	}
+}
+
 /** The marker of the staged folder `dir`: `program`, then every file in it. */
 void markFolder(const std::string& dir, const std::string& program)
 {
@@ -394,19 +399,6 @@ std::vector<std::string> markerLines(const std::string& dir)
 	std::vector<std::string> lines;
 	for (std::string l; std::getline(f, l);) lines.push_back(l);
 	return lines;
-}
-
-void finishKilledCommitsBeside(const std::vector<std::string>& paths)
-{
-	std::error_code ec;
-	for (const auto& path : paths)
-	{
-		if (path.empty() || !fs::exists(path, ec)) continue;
-		const fs::path parent = fs::path(fileLedTo(path)).parent_path();
-		if (!fs::is_directory(parent, ec)) continue;
-		const FolderLock beside(parent.string());
-		recoverLeftoversIn(parent.string());
-	}
 }
 
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,

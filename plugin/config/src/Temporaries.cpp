@@ -17,31 +17,19 @@ namespace omnirange::temporaries
 {
 namespace
 {
-// Never destroyed: the exit() handler below may run after the statics' destructors would have.
-std::mutex& lock()
+/** What the run keeps for its interrupt and its exit: never destroyed, for the exit() handler below
+ * may run after the statics' destructors would have. */
+struct State
 {
-	static auto* m = new std::mutex;
-	return *m;
-}
-std::recursive_mutex& commits()
+	std::mutex lock;
+	std::recursive_mutex commits;
+	std::set<std::string> paths;
+	std::string program, activity;
+};
+State& state()
 {
-	static auto* m = new std::recursive_mutex;
-	return *m;
-}
-std::set<std::string>& paths()
-{
-	static auto* p = new std::set<std::string>;
-	return *p;
-}
-std::string& program()
-{
-	static auto* p = new std::string;
-	return *p;
-}
-std::string& activity()
-{
-	static auto* a = new std::string;
-	return *a;
+	static auto* s = new State;
+	return *s;
 }
 std::atomic<pid_t> child{0};
 std::atomic<bool> interrupting{false};
@@ -50,70 +38,64 @@ std::atomic<bool> interrupting{false};
 void removeAllHeld()
 {
 	std::error_code ec;
-	for (const auto& p : paths())
+	for (const auto& p : state().paths)
 		for (int attempt = 0; attempt < 20 && std::filesystem::exists(p, ec); ++attempt) std::filesystem::remove_all(p, ec);
-	paths().clear();
+	state().paths.clear();
 }
 
 void atExit()
 {
 	// Another thread may hold the lock while exit() runs: do not wait for it long.
-	std::unique_lock<std::mutex> g(lock(), std::defer_lock);
+	std::unique_lock<std::mutex> g(state().lock, std::defer_lock);
 	for (int i = 0; i < 100 && !g.try_lock(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
 	// A normal exit: everything was committed or removed, and the app said it was done (runApp()).
-	if (!g.owns_lock() || (paths().empty() && activity().empty())) return;
-	const bool unfinished = !paths().empty();
+	if (!g.owns_lock() || (state().paths.empty() && state().activity.empty())) return;
+	const bool unfinished = !state().paths.empty();
 	removeAllHeld();
-	std::fprintf(stderr, "%s: error: ended by a library (its message is above) while %s%s\n", program().c_str(),
-				 activity().empty() ? "running" : activity().c_str(), unfinished ? "; its unfinished outputs were removed" : "");
+	std::fprintf(stderr, "%s: error: ended by a library (its message is above) while %s%s\n", state().program.c_str(),
+				 state().activity.empty() ? "running" : state().activity.c_str(), unfinished ? "; its unfinished outputs were removed" : "");
 }
 }  // namespace
 
 void add(const std::string& path)
 {
-	const std::lock_guard<std::mutex> g(lock());
-	paths().insert(path);
+	const std::lock_guard<std::mutex> g(state().lock);
+	state().paths.insert(path);
 }
 
 void forget(const std::string& path)
 {
-	const std::lock_guard<std::mutex> g(lock());
-	paths().erase(path);
+	const std::lock_guard<std::mutex> g(state().lock);
+	state().paths.erase(path);
 }
 
 void setChild(int pid) { child.store(pid); }
 
 void removeAtExit(const std::string& name)
 {
-	program() = name;
+	state().program = name;
 	static const bool registered = (std::atexit(atExit), true);
 	(void)registered;
 }
 
 void setActivity(const std::string& what)
 {
-	const std::lock_guard<std::mutex> g(lock());
-	activity() = what;
+	const std::lock_guard<std::mutex> g(state().lock);
+	state().activity = what;
 }
 
 void warn(const std::string& what)
 {
-	std::fprintf(stderr, "%s: warning: %s\n", program().empty() ? "omnirange" : program().c_str(), what.c_str());
+	std::fprintf(stderr, "%s: warning: %s\n", state().program.empty() ? "omnirange" : state().program.c_str(), what.c_str());
 }
 
 std::string currentActivity()
 {
-	const std::lock_guard<std::mutex> g(lock());
-	return activity();
+	const std::lock_guard<std::mutex> g(state().lock);
+	return state().activity;
 }
 
-void removeAll()
-{
-	const std::lock_guard<std::mutex> g(lock());
-	removeAllHeld();
-}
-
-std::unique_lock<std::recursive_mutex> interruptsDeferred() { return std::unique_lock<std::recursive_mutex>(commits()); }
+std::unique_lock<std::recursive_mutex> interruptsDeferred() { return std::unique_lock<std::recursive_mutex>(state().commits); }
 
 void removeOnInterrupt()
 {
@@ -134,7 +116,10 @@ void removeOnInterrupt()
 			::waitpid(c, nullptr, 0);
 		}
 		const auto no_commit = interruptsDeferred();  // held to the end: no commit begins after this
-		removeAll();
+		{
+			const std::lock_guard<std::mutex> g(state().lock);
+			removeAllHeld();
+		}
 		// End the way the signal would have ended the run.
 		std::signal(sig, SIG_DFL);
 		sigset_t one;

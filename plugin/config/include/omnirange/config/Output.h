@@ -62,16 +62,12 @@ bool isOfKind(const std::string& path, OutputKind kind);
  * file of that name of a marker's size). */
 std::vector<std::string> markerLines(const std::string& dir);
 
-/** What killed runs left beside each of `paths` (staging folders whose
- * lock is free): a commit whose list was written finished, the rest
- * removed. So no run reads a set a kill left half in place. */
-void finishKilledCommitsBeside(const std::vector<std::string>& paths);
-
 /** Throws std::runtime_error, one line, before any work, when the guarantee
  * forbids `program` to write one of `outputs` ("" paths skipped), or two of
  * them are one place. With `force`, an existing file or folder of another's
  * may be replaced (a folder is kept, renamed NAME.replaced), never an input.
- * First finishes what killed runs left beside the inputs (above). */
+ * First finishes what killed runs left beside the inputs: no run reads a set
+ * a kill left half in place. */
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force = false);
 inline void requireOutputAllowed(const std::string& path, OutputKind kind, const std::string& program,

@@ -14,8 +14,6 @@ void forget(const std::string& path);
 /** The program a run has started and waits for (0: none): an interrupt
  * ends it first, so it writes nothing into a folder being removed. */
 void setChild(int pid);
-/** Removes every remembered path (at an interrupt). */
-void removeAll();
 /** On SIGINT or SIGTERM: removeAll(), then end by that signal as before. */
 void removeOnInterrupt();
 /** Held while a commit moves its outputs in: an interrupt waits for it,
