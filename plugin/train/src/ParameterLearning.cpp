@@ -6,10 +6,12 @@
 #include "omnirange/train/LaserComparison.h"
 
 #include <mrpt/obs/CObservationImage.h>
+#include <opencv2/core/utility.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -44,6 +46,27 @@ int countSelected(const RawlogTrainingOptions& o)
 	return selected;
 }
 
+/** `rf`'s scan of each held-aside pair, in their order; the pairs are
+ * scanned on the threads OpenCV may use (each alone: the sums stay the same). */
+std::vector<CObservation2DRangeScan::Ptr> scansOf(const Rangefinder& rf, const std::vector<Validation>& validation)
+{
+	std::vector<CObservation2DRangeScan::Ptr> scans(validation.size());
+	std::vector<std::exception_ptr> errors(validation.size());
+	cv::parallel_for_(cv::Range(0, static_cast<int>(validation.size())), [&](const cv::Range& r) {
+		for (int i = r.start; i < r.end; ++i) try
+			{
+				scans[i] = rf.toObservation(rf.process(validation[i].image), validation[i].laser->timestamp);
+			}
+			catch (...)
+			{
+				errors[i] = std::current_exception();
+			}
+	});
+	for (const std::exception_ptr& e : errors)
+		if (e) std::rethrow_exception(e);
+	return scans;
+}
+
 /** The candidate's error on the held-aside pairs, and per pair in
  * `frame_errors` (see LearnedCandidate::score). */
 double score(const Rangefinder& rf, const std::vector<Validation>& validation, std::vector<double>& frame_errors,
@@ -54,11 +77,13 @@ double score(const Rangefinder& rf, const std::vector<Validation>& validation, s
 	const double max_range = rf.params().scanner.max_range, cap = kDefaultMaxDifference;
 	frame_errors.clear();
 	frame_shortfalls.clear();
-	for (const auto& v : validation)
+	const auto scans = scansOf(rf, validation);
+	for (std::size_t i = 0; i < validation.size(); ++i)
 	{
 		double frame = 0, short_of_laser = 0;
 		std::size_t rays = 0;
-		const auto omni = rf.toObservation(rf.process(v.image), v.laser->timestamp);
+		const auto& v = validation[i];
+		const auto& omni = scans[i];
 		for (const RangePair& p : pairScans(*v.laser, *omni, cap))
 		{
 			const RayError e = learningError(p, omni->getScanRangeValidity(p.omni_ray), max_range);
@@ -86,10 +111,11 @@ constexpr double kSureRatios[] = {0, 1, 2, 4, 8};
 DoubtChoice scoreDoubt(const Rangefinder& rf, const std::vector<Validation>& validation, double& cost)
 {
 	std::size_t rays = 0, in_range = 0, false_free = 0, unsure = 0;
-	for (const auto& v : validation)
+	const auto scans = scansOf(rf, validation);
+	for (std::size_t i = 0; i < validation.size(); ++i)
 	{
-		const auto omni = rf.toObservation(rf.process(v.image), v.laser->timestamp);
-		for (const RangePair& p : pairScans(*v.laser, *omni))
+		const auto& omni = scans[i];
+		for (const RangePair& p : pairScans(*validation[i].laser, *omni))
 		{
 			++rays;
 			unsure += rayIsUnsure(*omni, p.omni_ray);
