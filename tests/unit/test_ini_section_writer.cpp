@@ -26,7 +26,16 @@ std::string read(const std::string& path)
 	s << in.rdbuf();
 	return s.str();
 }
-std::string tmp(const std::string& name) { return testing::TempDir() + name; }
+/** `name` in a folder of the running test's own (tests run side by side: one
+ * test's staging folder must not show in another's). */
+std::string tmp(const std::string& name)
+{
+	static std::string test;
+	const std::string now = testing::UnitTest::GetInstance()->current_test_info()->name();
+	const auto dir = std::filesystem::temp_directory_path() / "omnirange_ini_section_writer" / now;
+	if (test != now) std::filesystem::remove_all(dir), std::filesystem::create_directories(dir), test = now;
+	return (dir / name).string();
+}
 }  // namespace
 
 TEST(IniSectionWriter, ReplacesInPlaceAddsAtTheSectionsEndAndKeepsTheRest)

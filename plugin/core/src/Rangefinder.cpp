@@ -154,6 +154,11 @@ void RangefinderParams::validate() const
 	// The camera model and the scanner check their keys as they are made, and the scanner that its circle
 	// (N, K, max_range and the camera at once) fits in the image.
 	PolarScanner(OmniCameraModel(camera), scanner);
+	validateRest();
+}
+
+void RangefinderParams::validateRest() const
+{
 	outliers.validate();
 	walls.validate();
 	table().requireRanges(*this);
@@ -181,7 +186,7 @@ double floorBeyondBase(const OmniCameraModel& camera, const PolarScannerParams& 
 }
 
 Rangefinder::Rangefinder(const RangefinderParams& params, const ColourModel& colours)
-	: p_((params.validate(), params)),
+	: p_((params.validateRest(), params)),  // camera_ and scanner_ check the rest as they are made
 	  camera_(p_.camera),
 	  classifier_(colours, p_.threshold, p_.obstacle_ratio, p_.histogram_smoothing, p_.shadow_depth,
 				  p_.sure_floor_share, p_.sure_obstacle_ratio),

@@ -147,8 +147,12 @@ struct RangefinderParams
 						const std::vector<std::string>& also_allowed = {});
 	/** Throws std::invalid_argument on the first impossible value or
 	 * combination (the scan circle must fit in the image): the one check
-	 * loading, the tuner and the Rangefinder's constructor run. */
+	 * loading and the tuner run. The camera model and the scanner check their
+	 * own keys as they are made; then validateRest(). */
 	void validate() const;
+	/** validate() but for the camera model and the scanner: what the
+	 * Rangefinder's constructor runs before it makes them. */
+	void validateRest() const;
 	/** One "key = value" line per parameter, in ini syntax. */
 	std::string asIni() const;
 	/** "key=value key=value ..." for the parameters that differ from their defaults, on one line. */
