@@ -2,6 +2,7 @@
 
 #include "omnirange_eval/TruthComparison.h"
 
+#include <omnirange/core/Threads.h>
 #include <omnirange/io/ObservationImage.h>
 #include <omnirange/io/RawlogProcessor.h>
 
@@ -10,9 +11,7 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <exception>
 
-#include <opencv2/core/utility.hpp>
 
 namespace omnirange::eval
 {
@@ -73,27 +72,15 @@ std::string studyCandidates(const LearningResult& learned, const RangefinderPara
 	const std::vector<Frame> frames = framesAfter(start, o, progress);
 	const std::vector<LearnedCandidate>& tried = learned.tried;
 	std::vector<std::string> rows(tried.size());
-	std::vector<std::exception_ptr> errors(tried.size());
-	cv::parallel_for_(cv::Range(0, static_cast<int>(tried.size())), [&](const cv::Range& r) {
-		for (int i = r.start; i < r.end; ++i) try
-			{
-				const LearnedCandidate& c = tried[i];
-				// The chosen one as it runs: with the edge bias learned for it.
-				const bool chosen = sameCandidate(c, learned.best);
-				const Rangefinder rf(chosen ? learned.params : withCandidate(start, c),
-									 learned.models.at(histogramKeyOf(c)));
-				TruthStats s;
-				for (const Frame& f : frames)
-					s.add(*f.truth, *rf.toObservation(rf.process(f.image), f.truth->timestamp));
-				rows[i] = rowOf(c, chosen, s);
-			}
-			catch (...)
-			{
-				errors[i] = std::current_exception();
-			}
+	forEachOnThreads(static_cast<int>(tried.size()), [&](int i) {
+		const LearnedCandidate& c = tried[i];
+		// The chosen one as it runs: with the edge bias learned for it.
+		const bool chosen = sameCandidate(c, learned.best);
+		const Rangefinder rf(chosen ? learned.params : withCandidate(start, c), learned.models.at(histogramKeyOf(c)));
+		TruthStats s;
+		for (const Frame& f : frames) s.add(*f.truth, *rf.toObservation(rf.process(f.image), f.truth->timestamp));
+		rows[i] = rowOf(c, chosen, s);
 	});
-	for (const std::exception_ptr& e : errors)
-		if (e) std::rethrow_exception(e);
 	std::string csv = candidateColumns() +
 					  ",score_m,chosen,route_within_2cm,route_within_5cm,route_mean_abs_m,route_missed,"
 					  "route_false_obstacles,frame_errors_m,frame_shortfalls_m\n";

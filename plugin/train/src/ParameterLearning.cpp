@@ -5,13 +5,13 @@
 #include "omnirange/train/EdgeBiasLearning.h"
 #include "omnirange/train/LaserComparison.h"
 
+#include <omnirange/core/Threads.h>
+
 #include <mrpt/obs/CObservationImage.h>
-#include <opencv2/core/utility.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -51,19 +51,9 @@ int countSelected(const RawlogTrainingOptions& o)
 std::vector<CObservation2DRangeScan::Ptr> scansOf(const Rangefinder& rf, const std::vector<Validation>& validation)
 {
 	std::vector<CObservation2DRangeScan::Ptr> scans(validation.size());
-	std::vector<std::exception_ptr> errors(validation.size());
-	cv::parallel_for_(cv::Range(0, static_cast<int>(validation.size())), [&](const cv::Range& r) {
-		for (int i = r.start; i < r.end; ++i) try
-			{
-				scans[i] = rf.toObservation(rf.process(validation[i].image), validation[i].laser->timestamp);
-			}
-			catch (...)
-			{
-				errors[i] = std::current_exception();
-			}
+	forEachOnThreads(static_cast<int>(validation.size()), [&](int i) {
+		scans[i] = rf.toObservation(rf.process(validation[i].image), validation[i].laser->timestamp);
 	});
-	for (const std::exception_ptr& e : errors)
-		if (e) std::rethrow_exception(e);
 	return scans;
 }
 

@@ -14,7 +14,7 @@ void forget(const std::string& path);
 /** The program a run has started and waits for (0: none): an interrupt
  * ends it first, so it writes nothing into a folder being removed. */
 void setChild(int pid);
-/** On SIGINT or SIGTERM: removeAll(), then end by that signal as before. */
+/** On SIGINT or SIGTERM: every remembered path removed, then the run ended by that signal as before. */
 void removeOnInterrupt();
 /** Held while a commit moves its outputs in: an interrupt waits for it,
  * so the moves are done whole or not begun. */
