@@ -10,7 +10,7 @@
 #include <omnirange/config/Output.h>
 #include <omnirange/io/ImageFile.h>
 #include <omnirange/config/ErrorText.h>
-#include <omnirange/config/Temporaries.h>
+#include <omnirange/config/Activity.h>
 #include <omnirange/io/Progress.h>
 #include <omnirange/io/RawlogScan.h>
 
@@ -166,7 +166,7 @@ Metrics Experiment::runStages()
 	// centre (a --robot of another camera) reads every ray wrong, which the report must not blame on colour.
 	r_.camera_mismatch = cameraMismatch(sim::RobotParams::loadFile(c_.robot).omnicam.camera, c_.rangefinder.camera);
 	if (!r_.camera_mismatch.empty())  // on stderr, -q or not: every figure of the run depends on it
-		temporaries::warn("the robot's camera (" + c_.robot + ") is not [rangefinder]'s camera: they differ in " +
+		activity::warn("the robot's camera (" + c_.robot + ") is not [rangefinder]'s camera: they differ in " +
 						  joined(r_.camera_mismatch) + ": the images are read as another camera's, and every range with them");
 	fs::create_directories(out_ + "/dataset");
 	stage_ = 0;

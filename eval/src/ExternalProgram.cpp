@@ -2,7 +2,6 @@
 
 #include <omnirange/io/MemoryLimit.h>
 #include <omnirange/config/ErrorText.h>
-#include <omnirange/config/Temporaries.h>
 
 #include <fcntl.h>
 #include <sys/prctl.h>
@@ -54,13 +53,9 @@ std::string lastLine(const std::string& file)
 /** In the child: redirect, change folder, exec; never returns. */
 [[noreturn]] void execIn(const std::vector<char*>& args, const std::string& dir, int out, pid_t parent)
 {
-	// A run killed outright (kill -9) cannot end its program itself: the
-	// kernel does, so no observations2map or icp-slam is left running.
+	// However the run ends (an error, Ctrl-C, kill -9), the kernel ends its
+	// program: no observations2map or icp-slam is left writing into its folder.
 	if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || ::getppid() != parent) ::_exit(125);
-	// The run blocks SIGINT and SIGTERM (Temporaries.h); the program must not inherit that.
-	sigset_t none;
-	sigemptyset(&none);
-	::sigprocmask(SIG_SETMASK, &none, nullptr);
 	::signal(SIGXFSZ, SIG_DFL);  // the apps ignore it (CommandLine.cpp); MRPT's programs keep their default
 	restoreAddressSpaceLimit();  // the apps cap their own (MemoryLimit.h), not MRPT's programs
 	const int in = ::open("/dev/null", O_RDONLY);
@@ -91,15 +86,9 @@ void runProgram(const std::vector<std::string>& argv, const std::string& dir, co
 	}
 	if (pid == 0) execIn(args, dir, out, parent);
 	::close(out);
-	temporaries::setChild(pid);  // an interrupt ends it before removing its folder
 	int status = 0;
 	while (::waitpid(pid, &status, 0) < 0)
-		if (errno != EINTR)
-		{
-			temporaries::setChild(0);
-			throw std::runtime_error("lost " + argv[0] + ": " + std::strerror(errno));
-		}
-	temporaries::setChild(0);
+		if (errno != EINTR) throw std::runtime_error("lost " + argv[0] + ": " + std::strerror(errno));
 	if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
 	const std::string how = WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
 											  : "signal " + std::to_string(WTERMSIG(status));

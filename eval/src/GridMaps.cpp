@@ -82,7 +82,8 @@ mrpt::maps::CSimpleMap simplemapWithGroundTruth(const std::string& rawlog, const
 
 void saveSimplemap(const mrpt::maps::CSimpleMap& sm, const std::string& file)
 {
-	writeAtomically(file, [&](const std::string& tmp) {
+	OutputSet set;
+	set.write({file, OutputKind::Text}, [&](const std::string& tmp) {  // no program: staged and committed, not checked
 		{
 			mrpt::io::CFileGZOutputStream f;
 			errno = 0;
@@ -91,6 +92,7 @@ void saveSimplemap(const mrpt::maps::CSimpleMap& sm, const std::string& file)
 		}
 		requireWholeGzipFile(tmp, file);  // the stream reports no failed write (a full disk)
 	});
+	set.commit();
 }
 
 Grid mapFromSimplemap(const mrpt::maps::CSimpleMap& sm, const mrpt::poses::CPose2D& alignment, const Grid& like,

@@ -18,7 +18,7 @@
 #include <omnirange/io/RawlogProcessor.h>
 #include <omnirange/io/RawlogReader.h>
 #include <omnirange/io/RawlogWriter.h>
-#include <omnirange/config/Temporaries.h>
+#include <omnirange/config/Activity.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -831,10 +831,10 @@ TEST(AppClasses, OutOfMemoryIsOneLineNamingWhatWasBeingRead)
 {
 	testing::internal::CaptureStderr();
 	const int code = runApp("omnirange-test", [] {
-		temporaries::setActivity("reading rawlog 'big.rawlog'");
+		activity::set("reading rawlog 'big.rawlog'");
 		throw std::bad_alloc();
 	});
-	temporaries::setActivity("");
+	activity::set("");
 	const std::string err = testing::internal::GetCapturedStderr();
 	EXPECT_EQ(code, 1);
 	EXPECT_EQ(err, "omnirange-test: error: out of memory while reading rawlog 'big.rawlog'\n");

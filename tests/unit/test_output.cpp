@@ -40,6 +40,15 @@ using test::errorOf;
 		EXPECT_NE(why.find(phrase), std::string::npos) << "said: '" << why << "'"; \
 	} while (0)
 
+/** The lines of the marker in the folder `dir`. */
+std::vector<std::string> markerLines(const std::string& dir)
+{
+	std::ifstream f(fs::path(dir) / kOutputMarker);
+	std::vector<std::string> lines;
+	for (std::string l; std::getline(f, l);) lines.push_back(l);
+	return lines;
+}
+
 /** The names in `dir` that are staging folders (none once every run there is over). */
 int stagingIn(const std::string& dir)
 {

@@ -4,7 +4,7 @@
 #include <omnirange/io/MemoryLimit.h>
 #include <omnirange/config/Output.h>
 #include <omnirange/config/ErrorText.h>
-#include <omnirange/config/Temporaries.h>
+#include <omnirange/config/Activity.h>
 
 
 #include <opencv2/core.hpp>
@@ -121,8 +121,7 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	// OpenCV's own log lines (a cut image, a codec's complaint) would make an
 	// error several lines; what fails is reported once, naming the file.
 	cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
-	temporaries::removeOnInterrupt();
-	temporaries::removeAtExit(name);
+	activity::nameExitsAs(name);
 	// Past a file-size limit (ulimit -f) a write then fails with EFBIG, which
 	// the writers report naming the file, rather than the signal killing the
 	// run without a word.
@@ -131,7 +130,7 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	// However the body ends, the run has ended: an exit() after it is no library's doing.
 	struct Ended
 	{
-		~Ended() { temporaries::setActivity(""); }
+		~Ended() { activity::set(""); }
 	} ended;
 	try
 	{
@@ -144,17 +143,12 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	}
 	catch (const std::bad_alloc&)
 	{
-		const std::string doing = temporaries::currentActivity();
+		const std::string doing = activity::current();
 		std::cerr << name << ": error: out of memory" << (doing.empty() ? "" : " while " + oneLine(doing)) << "\n";
 		return 1;
 	}
 	catch (const std::exception& e)
 	{
-		if (temporaries::interrupted())  // the interrupt's own doing: it ends the run
-		{
-			std::cerr << name << ": interrupted\n";
-			temporaries::waitForInterrupt();
-		}
 		std::cerr << name << ": error: " << (workingFolderGone(e) ? "the working folder no longer exists: change to one that does" : errorText(e)) << "\n";
 		return 1;
 	}

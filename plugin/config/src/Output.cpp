@@ -2,7 +2,7 @@
 
 #include "omnirange/config/LayeredIni.h"
 #include "omnirange/config/OptionsTable.h"
-#include "omnirange/config/Temporaries.h"
+#include "omnirange/config/Activity.h"
 
 #include <fcntl.h>
 #include <stdio.h>
@@ -130,6 +130,19 @@ void requireApartFromInputs(const std::string& output, const std::vector<std::st
 		if (within(out, input))
 			throw std::runtime_error("the output '" + output + "' is inside the input '" + in + "': write it elsewhere");
 	}
+}
+
+/** The lines of the marker in the folder `dir` (none when it has no plain file of that name of a marker's size). */
+std::vector<std::string> markerLines(const std::string& dir)
+{
+	// Only a plain file of a marker's size: a FIFO there would block, a link to /dev/zero never end.
+	const fs::path marker = fs::path(dir) / kOutputMarker;
+	std::error_code ec;
+	if (!fs::is_regular_file(fs::symlink_status(marker, ec)) || fs::file_size(marker, ec) > (64u << 20)) return {};
+	std::ifstream f(marker);
+	std::vector<std::string> lines;
+	for (std::string l; std::getline(f, l);) lines.push_back(l);
+	return lines;
 }
 
 /** Every file, link and empty folder under `dir` but its marker, relative to it. */
@@ -389,18 +402,6 @@ bool isOfKind(const std::string& path, OutputKind kind)
 	return false;
 }
 
-std::vector<std::string> markerLines(const std::string& dir)
-{
-	// Only a plain file of a marker's size: a FIFO there would block, a link to /dev/zero never end.
-	const fs::path marker = fs::path(dir) / kOutputMarker;
-	std::error_code ec;
-	if (!fs::is_regular_file(fs::symlink_status(marker, ec)) || fs::file_size(marker, ec) > (64u << 20)) return {};
-	std::ifstream f(marker);
-	std::vector<std::string> lines;
-	for (std::string l; std::getline(f, l);) lines.push_back(l);
-	return lines;
-}
-
 void requireOutputsAllowed(const std::vector<Output>& outputs, const std::string& program,
 						   const std::vector<std::string>& inputs, bool force)
 {
@@ -439,10 +440,9 @@ OutputSet::~OutputSet()
 {
 	for (auto& f : folders_)
 	{
-		temporaries::forget(f.path);
 		std::error_code ec;
 		if (!kept_ && (fs::remove_all(f.path, ec), ec) && done_)  // the new outputs are in: say it, do not fail
-			temporaries::warn("could not remove the replaced outputs in '" + f.path + "' (" + ec.message() + ")");
+			activity::warn("could not remove the replaced outputs in '" + f.path + "' (" + ec.message() + ")");
 		::close(f.list_fd);
 	}
 }
@@ -458,7 +458,6 @@ OutputSet::Folder& OutputSet::folderFor(const std::string& parent, const std::st
 	if (!::mkdtemp(path.data()))
 		throw std::runtime_error(errno == ENOENT ? "the folder '" + parent + "' of the output '" + output + "' does not exist (make it first)"
 												 : cannotWrite(output, "cannot make a folder beside it"));
-	temporaries::add(path);
 	const int fd = ::open((path + "/" + kCommitList).c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
 	if (fd < 0 || ::flock(fd, LOCK_EX) != 0) throw std::runtime_error(cannotWrite(path + "/" + kCommitList));
 	folders_.push_back({parent, path, fd});
@@ -495,25 +494,6 @@ void OutputSet::requireUnchanged(const std::string& path, const std::string& sta
 {
 	for (auto& s : staged_)
 		if (s.output.path == path) s.state = state;
-}
-
-void OutputSet::check(const Staged& s) const
-{
-	if (!program_.empty()) requireAllowed({s.target, s.output.kind, s.output.begins_with}, program_, inputs_, force_);
-}
-
-std::vector<const OutputSet::Staged*> OutputSet::commitOrder() const
-{
-	std::error_code ec;
-	// Updates first (their check comes with their move: one found changed stops the commit before any other
-	// move), then folders, then files: the files (a rawlog) name what is in the folders.
-	std::vector<const Staged*> updates, folders, files;
-	for (const auto& s : staged_)
-		if (fs::exists(fs::symlink_status(s.staged, ec)))  // staged and never written: nothing to put in
-			(s.state ? updates : fs::is_directory(fs::symlink_status(s.staged, ec)) ? folders : files).push_back(&s);
-	updates.insert(updates.end(), folders.begin(), folders.end());
-	updates.insert(updates.end(), files.begin(), files.end());
-	return updates;
 }
 
 void OutputSet::ready(const Staged& s) const
@@ -564,9 +544,25 @@ void OutputSet::placeUpdate(const Staged& s) const
 	}
 }
 
-void OutputSet::placeAll(const std::vector<const Staged*>& order)
+void OutputSet::commit()
 {
-	const auto whole = temporaries::interruptsDeferred();  // an interrupt waits for the last move
+	if (done_) return;
+	std::error_code ec;
+	// Updates first (one found changed at its move stops the commit before any other), then as staged: the
+	// file that names the others (a rawlog) last. What was staged and never written has nothing to put in.
+	std::vector<const Staged*> order;
+	for (const bool updates : {true, false})
+		for (const auto& s : staged_)
+			if (s.state.has_value() == updates && fs::exists(fs::symlink_status(s.staged, ec))) order.push_back(&s);
+	std::vector<std::string> parents;
+	for (const auto& f : folders_) parents.push_back(f.parent);
+	std::sort(parents.begin(), parents.end());  // two runs lock in one order: neither waits for the other
+	std::vector<std::unique_ptr<FolderLock>> locks;  // two runs' commits here do not interleave
+	for (const auto& p : parents) locks.push_back(std::make_unique<FolderLock>(p));
+	for (const Staged* s : order)  // all checked before anything moves: a refusal replaces nothing
+		if (!program_.empty()) requireAllowed({s->target, s->output.kind, s->output.begins_with}, program_, inputs_, force_);
+	for (const Staged* s : order) ready(*s);
+	writeLists(order);
 	for (std::size_t i = 0; i < order.size(); ++i)
 		try
 		{
@@ -577,25 +573,9 @@ void OutputSet::placeAll(const std::vector<const Staged*>& order)
 		{
 			if (i == 0 && dynamic_cast<const ChangedMeanwhile*>(&e)) throw;
 			if (i == 0) throw std::runtime_error(std::string(e.what()) + "; the old outputs are as they were");
-			kept_ = true;  // the next run beside it puts the rest in; an interrupt does not remove it
-			for (const auto& f : folders_) temporaries::forget(f.path);
+			kept_ = true;  // the next run beside it puts the rest in
 			throw std::runtime_error(std::string(e.what()) + "; the next run writing beside it puts the rest in place");
 		}
-}
-
-void OutputSet::commit()
-{
-	if (done_) return;
-	const auto order = commitOrder();
-	std::vector<std::string> parents;
-	for (const auto& f : folders_) parents.push_back(f.parent);
-	std::sort(parents.begin(), parents.end());  // two runs lock in one order: neither waits for the other
-	std::vector<std::unique_ptr<FolderLock>> locks;  // two runs' commits here do not interleave
-	for (const auto& p : parents) locks.push_back(std::make_unique<FolderLock>(p));
-	for (const Staged* s : order) check(*s);
-	for (const Staged* s : order) ready(*s);
-	writeLists(order);
-	placeAll(order);
 	done_ = true;
 }
 
@@ -603,13 +583,6 @@ void writeFileAtomically(const std::string& path, const std::string& bytes)
 {
 	OutputSet set;
 	set.write({path, OutputKind::Text}, bytes);
-	set.commit();
-}
-
-void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write)
-{
-	OutputSet set;
-	set.write({path, OutputKind::Text}, write);
 	set.commit();
 }
 

@@ -3,7 +3,7 @@
 #include <omnirange/config/Output.h>
 #include "omnirange/config/ErrorText.h"
 #include "omnirange/config/OptionsTable.h"
-#include "omnirange/config/Temporaries.h"
+#include "omnirange/config/Activity.h"
 
 
 #include <mrpt/img/CImage.h>
@@ -35,7 +35,7 @@ RawlogReader::RawlogReader(const std::string& path)
 								 "read it again");
 	requireImagesUnchanged();
 	mrpt::img::CImage::setImagesPathBase(imagesDirToRead(path));
-	temporaries::setActivity("reading rawlog '" + path + "'");
+	activity::set("reading rawlog '" + path + "'");
 }
 
 RawlogReader::~RawlogReader() = default;

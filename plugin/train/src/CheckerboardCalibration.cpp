@@ -1,7 +1,7 @@
 #include "omnirange/train/CheckerboardCalibration.h"
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/config/OptionsTable.h"
-#include "omnirange/config/Temporaries.h"
+#include "omnirange/config/Activity.h"
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/vision/chessboard_find_corners.h>
@@ -159,7 +159,7 @@ void measureCentreSpread(const Boards3d& object, const Boards2d& image, const st
 	const int groups = std::min(n, kCentreSubsets);
 	for (int g = 0; g < groups; ++g)
 	{
-		temporaries::setActivity("calibrating without board group " + std::to_string(g + 1));
+		activity::set("calibrating without board group " + std::to_string(g + 1));
 		Boards3d o;
 		Boards2d i;
 		for (int k = 0; k < n; ++k)
@@ -195,7 +195,7 @@ void requireBoardAndFiles(const std::vector<std::string>& files, const Checkerbo
 /** The image `file`, checked against the first one's size and the board's. */
 cv::Mat readBoardImage(const std::string& file, const CheckerboardOptions& o, cv::Size& first_size)
 {
-	temporaries::setActivity("reading image '" + file + "'");
+	activity::set("reading image '" + file + "'");
 	const cv::Mat gray = decodeImageFile(file, "", cv::IMREAD_GRAYSCALE);
 	if (first_size.empty()) first_size = gray.size();
 	if (gray.size() != first_size)

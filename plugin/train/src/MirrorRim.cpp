@@ -1,7 +1,7 @@
 #include "omnirange/train/MirrorRim.h"
 #include "omnirange/io/ObservationImage.h"
 #include "omnirange/config/OptionsTable.h"
-#include "omnirange/config/Temporaries.h"
+#include "omnirange/config/Activity.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -42,7 +42,7 @@ MirrorRim detectMirrorRim(const std::vector<std::string>& images)
 	std::vector<cv::Point2f> centres;  // each image's own disc, where one is found in it alone
 	for (const auto& file : images)
 	{
-		temporaries::setActivity("reading image '" + file + "'");
+		activity::set("reading image '" + file + "'");
 		const cv::Mat gray = decodeImageFile(file, "", cv::IMREAD_GRAYSCALE);
 		if (brightest.empty()) brightest = gray.clone();
 		else if (gray.size() != brightest.size())

@@ -16,10 +16,11 @@
 // hidden folder beside the outputs (mkdtemp, held by flock while the run
 // lives), then commits: the list of what goes in is written to the staging
 // folder, each file is renamed into place and each folder exchanged with the
-// old one (renameat2), in the order staged (the file that names the others
-// last). A staging folder whose lock is free is a killed run's: the next run
-// writing beside it finishes its commit if the list was written (the moves
-// are repeated until every listed entry is in), else removes it.
+// old one (renameat2), folders first and then files (the file that names the others
+// last). A staging folder whose lock is free is a run's that ended before it
+// could remove it (killed, interrupted, ended by a library): the next run
+// writing beside it, or reading an input there, finishes its commit if the
+// list was written (each listed entry not yet in is moved in), else removes it.
 
 #include "omnirange/config/Files.h"
 
@@ -58,9 +59,6 @@ struct Output
 std::string outputPath(const std::string& path);
 /** Whether the existing file `path` is of `kind`, told by its first bytes. */
 bool isOfKind(const std::string& path, OutputKind kind);
-/** The lines of the marker in the folder `dir` (none when it has no plain
- * file of that name of a marker's size). */
-std::vector<std::string> markerLines(const std::string& dir);
 
 /** Throws std::runtime_error, one line, before any work, when the guarantee
  * forbids `program` to write one of `outputs` ("" paths skipped), or two of
@@ -116,12 +114,9 @@ class OutputSet
 	struct Staged;
 	struct Folder;
 	Folder& folderFor(const std::string& parent, const std::string& output);
-	void check(const Staged& s) const;
-	std::vector<const Staged*> commitOrder() const;
 	void ready(const Staged& s) const;
 	void writeLists(const std::vector<const Staged*>& order) const;
 	void placeUpdate(const Staged& s) const;
-	void placeAll(const std::vector<const Staged*>& order);
 	std::string program_;
 	std::vector<std::string> inputs_;
 	bool force_{false}, done_{false}, kept_{false};
@@ -131,6 +126,4 @@ class OutputSet
 
 /** `bytes` written to `path` atomically (a one-file OutputSet). */
 void writeFileAtomically(const std::string& path, const std::string& bytes);
-/** `write(tmp)` then renamed to `path`; if it throws, nothing is replaced. */
-void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
 }  // namespace omnirange
