@@ -371,12 +371,8 @@ std::string outputPath(const std::string& path)
 {
 	// Only trailing slashes and '.' go: "a/link/.." is where the link leads, for the system to resolve.
 	std::string p = path;
-	for (bool changed = true; changed;)
-	{
-		changed = false;
-		while (p.size() > 1 && p.back() == '/') p.pop_back(), changed = true;
-		if (p.size() > 2 && p.compare(p.size() - 2, 2, "/.") == 0) p.resize(p.size() - 2), changed = true;
-	}
+	while (p.size() > 1 && (p.back() == '/' || (p.size() > 2 && p.compare(p.size() - 2, 2, "/.") == 0)))
+		p.resize(p.size() - (p.back() == '/' ? 1 : 2));
 	return p;
 }
 

@@ -1,7 +1,5 @@
 #include "omnirange/io/RawlogWriter.h"
 
-#include "omnirange/io/RawlogReader.h"
-
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <opencv2/imgcodecs.hpp>
@@ -10,9 +8,7 @@
 
 #include <cerrno>
 #include <filesystem>
-#include <optional>
 #include <set>
-#include <fstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -52,6 +48,13 @@ void requireRawlogName(const std::string& rawlog)
 							 "rawlog-edit) would look for its images in '" + name.substr(0, name.rfind('.')) +
 							 "_Images', not in '" + images + "' where they go; name it " +
 							 images.substr(0, images.size() - 7) + ".rawlog");
+}
+
+/** What a write that failed with `ec` may add: a full disk's errors say so. */
+std::string diskFullHint(const std::error_code& ec)
+{
+	const int e = ec.value();
+	return e == ENOSPC || e == EDQUOT || e == EIO || e == EFBIG ? " (is the disk full?)" : "";
 }
 
 }  // namespace
@@ -108,9 +111,7 @@ mrpt::img::CImage RawlogWriter::externalImageCopy(const std::string& source, con
 	// Reading the source was checked when it was decoded: what fails here is the writing (a full disk).
 	if (ec)
 		throw std::runtime_error("cannot write image '" + (fs::path(imagesDirFor(path_)) / name).string() + "' (copied from '" +
-								 source + "'): " + ec.message() + (ec.value() == EIO || ec.value() == EFBIG || ec.value() == ENOSPC
-																	   ? " (is the disk full?)"
-																	   : ""));
+								 source + "'): " + ec.message() + diskFullHint(ec));
 	// After the copy: changed before or while it was copied, what went in is not what was checked.
 	if (fileStateOf(source) != checked_state)
 		throw std::runtime_error("image '" + source + "' changed after it was checked (a run wrote it again " +
@@ -164,13 +165,8 @@ std::size_t RawlogWriter::shareImagesOf(const std::string& existing_dir)
 			// A link to the same bytes; across file systems (or where links are not allowed), a copy.
 			if (::linkat(AT_FDCWD, it->path().c_str(), AT_FDCWD, to.c_str(), AT_SYMLINK_FOLLOW) == 0) continue;
 			if (fs::copy_file(it->path(), to, broken); broken)
-				throw std::runtime_error("cannot put '" + it->path().string() + "' into '" + imagesDirFor(path_) + "' (" +
-										 broken.message() +
-										 (broken.value() == ENOSPC || broken.value() == EDQUOT || broken.value() == EIO ||
-												  broken.value() == EFBIG
-											  ? "; is the disk full?"
-											  : "") +
-										 ")");
+				throw std::runtime_error("cannot put '" + it->path().string() + "' into '" + imagesDirFor(path_) + "': " +
+										 broken.message() + diskFullHint(broken));
 			++copied;
 		}
 		if (ec)

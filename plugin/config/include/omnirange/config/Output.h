@@ -95,11 +95,13 @@ class OutputSet
 	OutputSet& operator=(const OutputSet&) = delete;
 
 	/** Where the run writes `output` (a file, or a folder it makes there):
-	 * a path in the staging folder beside it. A link is written through. */
+	 * a path in the staging folder beside it. A link is written through.
+	 * commit() puts the outputs in in the order staged: the one that names
+	 * the others (a rawlog, its images) last. */
 	std::string stage(const Output& output);
-	/** Stages the file `path` by calling `write(staged_path)`. */
+	/** Stages the file `output` by calling `writer(staged_path)`. */
 	void write(const Output& output, const std::function<void(const std::string&)>& writer);
-	/** Stages the file `path` holding `bytes`. */
+	/** Stages the file `output` holding `bytes`. */
 	void write(const Output& output, const std::string& bytes);
 	/** commit() throws ChangedMeanwhile, replacing nothing, unless `path` is
 	 * still as fileStateOf() said when it was read. */
