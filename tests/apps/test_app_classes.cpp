@@ -319,7 +319,9 @@ TEST(AppClasses, CalibrateSavesAnOCamCalibModelIntoTheIni)
 	CalibrateApp::Options o = ocamCalibrationIn(dir, "1.001 0.0005 -0.0002");
 	o.save_to = dir + "/my.ini";
 	std::ofstream(o.save_to) << "[rangefinder]\n; [-] kept\nthreshold = 0.075\n";
+	testing::internal::CaptureStdout();
 	CalibrateApp(o).runOCamCalib();
+	EXPECT_EQ(testing::internal::GetCapturedStdout(), "");  // -q: errors only, no summary
 	mrpt::system::COutputLogger quiet("test");
 	quiet.setMinLoggingLevel(mrpt::system::LVL_ERROR);
 	const RangefinderParams saved = loadRangefinderIni(o.save_to, "rangefinder", quiet);

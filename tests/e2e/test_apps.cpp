@@ -148,9 +148,10 @@ TEST(Apps, AnInterruptedRunLeavesTheOldOutputAndTheNextRunRemovesWhatItLeft)
 					  " -r " + q(kSource + "/worlds/factory.route") + " -o " + q(dir + "/sim.rawlog"));
 	EXPECT_NE(r.code, 0) << r.out;  // it was interrupted, not finished
 	EXPECT_FALSE(fs::exists(dir + "/sim.rawlog"));
-	r = run("timeout -s INT 4 " + app("omnirange-experiment") + " -q " + q(kSource + "/ini/maze.ini") + " -o " +
+	r = run("timeout -s INT 4 " + app("omnirange-experiment") + " " + q(kSource + "/ini/maze.ini") + " -o " +
 			q(dir + "/report"));
 	EXPECT_NE(r.code, 0) << r.out;
+	EXPECT_NE(r.out.find("[1/8] simulate"), std::string::npos) << r.out;  // what it said, into a pipe, is kept
 	EXPECT_EQ(fs::file_size(old_report), 3u);
 	// The next run writing there removes what the interrupted ones left.
 	const RunResult next = run(app("omnirange-train") + " -q -i " + q(kSample) + " -c " + q(kIni) + " -o " + q(dir + "/g.hist"));

@@ -276,8 +276,11 @@ std::string halfCommitted(const std::string& name)
 		::lstat(p.c_str(), &st);
 		return std::to_string(st.st_ino);
 	};
-	put(staging + "/.omnirange-commit", ino(staging + "/report") + " report\n" + ino(staging + "/a.csv") + " a.csv\n" +
-											ino(staging + "/b.csv") + " b.csv\n");
+	// The list a commit writes before its moves: each entry's inode and what it replaces, as checked.
+	std::string list;
+	for (const std::string name : {"report", "a.csv", "b.csv"})
+		list += ino(staging + "/" + name) + " " + fileStateOf(d + "/" + name) + " " + name + "\n";
+	put(staging + "/.omnirange-commit", list);
 	fs::rename(staging + "/report", d + "/report.tmp"), fs::rename(d + "/report", staging + "/report"),
 		fs::rename(d + "/report.tmp", d + "/report");  // the folder exchanged
 	fs::rename(staging + "/a.csv", d + "/a.csv");  // a.csv moved; killed before b.csv
@@ -292,6 +295,17 @@ TEST(Output, ARunKilledInTheMiddleOfItsCommitIsFinishedByTheNextRun)
 	EXPECT_EQ(read(d + "/report/x.md"), "new report");
 	EXPECT_EQ(read(d + "/a.csv"), "new a");
 	EXPECT_EQ(read(d + "/b.csv"), "new b");
+	EXPECT_EQ(stagingIn(d), 0);
+}
+
+TEST(Output, AKilledCommitIsNotFinishedOverAFileChangedSince)
+{
+	// Killed before b.csv went in; the user edits b.csv, then any run beside it: the edit stays.
+	const std::string d = halfCommitted("half_then_edited");
+	put(d + "/b.csv", "the user's b");
+	writeFileAtomically(d + "/other.txt", "another run beside them");
+	EXPECT_EQ(read(d + "/b.csv"), "the user's b");
+	EXPECT_EQ(read(d + "/a.csv"), "new a");
 	EXPECT_EQ(stagingIn(d), 0);
 }
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <optional>
 
@@ -60,6 +61,15 @@ void addImagesOf(const std::string& dir, std::vector<std::string>& files)
 	files.insert(files.end(), found.begin(), found.end());
 }
 }  // namespace
+
+void CalibrateApp::say(const char* format, ...) const
+{
+	if (getMinLoggingLevel() > mrpt::system::LVL_INFO) return;
+	va_list args;
+	va_start(args, format);
+	std::vprintf(format, args);
+	va_end(args);
+}
 
 CalibrateApp::Options CalibrateApp::parse(int argc, const char* const* argv)
 {
@@ -135,7 +145,7 @@ void CalibrateApp::saveCameraKeys(const CameraParams& cam, const std::vector<std
 								  const std::function<void(OutputSet&)>& with) const
 {
 	saveKeys(cameraKeys(cam, model_keys), with);
-	std::printf("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), o_.section.c_str(),
+	say("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), o_.section.c_str(),
 				o_.save_to.c_str());
 }
 
@@ -166,22 +176,22 @@ MirrorCalibration CalibrateApp::run()
 	const MirrorCalibration c =
 		calibrateMirror(rf, o_.calibration, progressAt(o_.verbosity, progress));
 	// The result is the program's output: on stdout, whatever the verbosity.
-	std::printf("pairs: %zu (%zu kept after dropping residuals over 3x the median)\n", c.pairs, c.kept);
-	std::printf("paraboloid:   R = %.2f px      RMS range error %.3f m (ini's R = %.2f: %.3f m)\n", c.R, c.rms_R,
+	say("pairs: %zu (%zu kept after dropping residuals over 3x the median)\n", c.pairs, c.kept);
+	say("paraboloid:   R = %.2f px      RMS range error %.3f m (ini's R = %.2f: %.3f m)\n", c.R, c.rms_R,
 				params.camera.R, c.rms_given);
-	std::printf("first order:  alpha = %.2f px/rad   RMS range error %.3f m\n", c.alpha, c.rms_alpha);
-	std::printf("height:       h = %.4f m +- %.4f (standard error over %d images), from %zu pairs with the ini's %s "
+	say("first order:  alpha = %.2f px/rad   RMS range error %.3f m\n", c.alpha, c.rms_alpha);
+	say("height:       h = %.4f m +- %.4f (standard error over %d images), from %zu pairs with the ini's %s "
 				"model; RMS range error %.3f m (the ini's h = %.3f m)\n",
 				c.height.h, c.height.std_error, c.height.frames, c.height.used,
 				toString(params.camera.mirror_model).c_str(), c.rms_height, params.camera.h);
-	std::printf("boundary: the laser's edge lies a median %+.2f px beyond the omnicam's "
+	say("boundary: the laser's edge lies a median %+.2f px beyond the omnicam's "
 				"(suggested boundary_offset = %.2f with the ini's mirror%s)\n",
 				c.boundary_px, c.suggested_boundary_offset, c.clamped ? ", clamped to [-1, 1]" : "");
 	constexpr double kDeg = 57.29577951308232;
 	const ScaledOrientationFit scaled = fitOrientationAndScale(params, colours, c, o_.calibration);
 	const OrientationFit& f = scaled.fit;
 	orientation_ = f;
-	std::printf("orientation: forward_azimuth_deg = %.0f, mirrored = %s (at %s = %.4g; %d of %d frames agree within "
+	say("orientation: forward_azimuth_deg = %.0f, mirrored = %s (at %s = %.4g; %d of %d frames agree within "
 				"%.0f deg); mean error %.3f m (the ini's %.0f deg, %s: %.3f m)\n",
 				f.forward_azimuth * kDeg, f.mirrored ? "true" : "false", scaled.scale_key.c_str(), scaled.scale,
 				f.agreeing, f.frames, kAgreeingTurn * kDeg, f.error, params.camera.forward_azimuth * kDeg,
@@ -196,7 +206,7 @@ MirrorCalibration CalibrateApp::run()
 	const double turn = std::abs(std::remainder(f.forward_azimuth - params.camera.forward_azimuth, 2 * M_PI));
 	const bool orientation_ok = f.mirrored == params.camera.mirrored && turn <= 1.5 / kDeg;
 	if (!orientation_ok)
-		std::printf("the ini's orientation is off: set forward_azimuth_deg and mirrored as above and run again "
+		say("the ini's orientation is off: set forward_azimuth_deg and mirrored as above and run again "
 					"(R, alpha and the boundary above were fitted with the ini's orientation)\n");
 	if (!o_.save_to.empty())
 	{
@@ -214,7 +224,7 @@ MirrorCalibration CalibrateApp::run()
 			keys.push_back({"boundary_offset", formatDouble(c.suggested_boundary_offset)});
 		}
 		saveKeys(keys);
-		std::printf("wrote %zu keys into [%s] of %s\n", keys.size(), o_.section.c_str(), o_.save_to.c_str());
+		say("wrote %zu keys into [%s] of %s\n", keys.size(), o_.section.c_str(), o_.save_to.c_str());
 	}
 	return c;
 }
@@ -223,7 +233,7 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 {
 	const CheckerboardCalibration c = calibrateFromCheckerboards(o_.checkerboards, o_.board);
 	for (const auto& i : c.images)
-		std::printf("%s: %s%s\n", i.file.c_str(),
+		say("%s: %s%s\n", i.file.c_str(),
 					i.found ? ("board found (" + i.detector + ")").c_str()
 							: ("no board of " + std::to_string(o_.board.columns) + "x" + std::to_string(o_.board.rows) +
 							   " inner corners found")
@@ -231,12 +241,12 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 					i.used ? (", reprojection " + std::to_string(i.rms).substr(0, 5) + " px").c_str()
 					: !i.same_view_as.empty() ? (", not used: the board lies as in " + i.same_view_as).c_str()
 					: (i.found ? ", not used: cv::omnidir could not start its fit from it" : ""));
-	std::printf("boards found in %d of %zu images, %d used; RMS reprojection error %.3f px\n", c.found(),
+	say("boards found in %d of %zu images, %d used; RMS reprojection error %.3f px\n", c.found(),
 				c.images.size(), c.used(), c.rms);
-	std::printf("fx %.2f  fy %.2f  skew %.3f  cx %.2f  cy %.2f px;  xi %.4f;  k1 %.4f  k2 %.4f  p1 %.5f  p2 %.5f\n",
+	say("fx %.2f  fy %.2f  skew %.3f  cx %.2f  cy %.2f px;  xi %.4f;  k1 %.4f  k2 %.4f  p1 %.5f  p2 %.5f\n",
 				c.K(0, 0), c.K(1, 1), c.K(0, 1), c.K(0, 2), c.K(1, 2), c.xi, c.D[0], c.D[1], c.D[2], c.D[3]);
 	if (c.centre_subsets > 0)
-		std::printf("the centre moves up to %.2f px when a group of boards is left out (%d calibrations)\n",
+		say("the centre moves up to %.2f px when a group of boards is left out (%d calibrations)\n",
 					c.centre_spread, c.centre_subsets);
 
 	std::vector<std::string> doubts;
@@ -314,7 +324,7 @@ std::optional<CameraParams> CalibrateApp::calibratedCamera()
 MirrorRim CalibrateApp::runRim()
 {
 	const MirrorRim rim = detectMirrorRim(o_.rim_images);
-	std::printf("mirror disc: centre cx = %.1f px, cy = %.1f px; rim radius %.1f px; ellipticity %.3f (from %zu images; "
+	say("mirror disc: centre cx = %.1f px, cy = %.1f px; rim radius %.1f px; ellipticity %.3f (from %zu images; "
 				"one image's own centre at most %.1f px from it)\n",
 				rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size(), rim.centre_spread);
 	// A disc the whole image could not hold, or far from round, is not a mirror's rim.
@@ -365,7 +375,7 @@ MirrorRim CalibrateApp::runRim()
 				  {"image_height", std::to_string(rim.image_height)},
 				  {"cx", formatDouble(std::round(rim.cx * 10) / 10)},
 				  {"cy", formatDouble(std::round(rim.cy * 10) / 10)}});
-		std::printf("wrote image_width, image_height, cx, cy into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
+		say("wrote image_width, image_height, cx, cy into [%s] of %s\n", o_.section.c_str(), o_.save_to.c_str());
 	}
 	return rim;
 }
@@ -385,10 +395,10 @@ CameraParams CalibrateApp::runOCamCalib()
 		throw std::runtime_error(o_.ocamcalib + ": " + e.what());
 	}
 	const OmniCameraModel& model = *checked;
-	std::printf("OCamCalib model: %zu coefficients, centre cx = %.2f px, cy = %.2f px, image %d x %d; "
+	say("OCamCalib model: %zu coefficients, centre cx = %.2f px, cy = %.2f px, image %d x %d; "
 				"the horizon at %.1f px\n",
 				f.poly.size(), cam.cx, cam.cy, cam.image_width, cam.image_height, model.horizonRho());
-	std::printf("affine terms c %.5f, d %.5f, e %.5f%s\n", f.c, f.d, f.e,
+	say("affine terms c %.5f, d %.5f, e %.5f%s\n", f.c, f.d, f.e,
 				model.radial() ? " (none: the image is radial)" : " (the scanlines follow them)");
 	if (!o_.save_to.empty())
 	{

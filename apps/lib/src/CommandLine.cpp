@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <csignal>
+#include <cstdio>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -122,6 +123,8 @@ int runApp(const std::string& name, const std::function<void()>& body)
 	// error several lines; what fails is reported once, naming the file.
 	cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
 	activity::nameExitsAs(name);
+	// Each line out as it is made: a run interrupted with its output in a file or a pipe keeps what it said.
+	std::setvbuf(stdout, nullptr, _IOLBF, 0);
 	// Past a file-size limit (ulimit -f) a write then fails with EFBIG, which
 	// the writers report naming the file, rather than the signal killing the
 	// run without a word.

@@ -19,6 +19,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <sstream>
 
 namespace fs = std::filesystem;
 
@@ -27,7 +28,8 @@ namespace omnirange
 namespace
 {
 constexpr const char* kStagingPrefix = ".omnirange-";  // mkdtemp's ".omnirange-XXXXXX"
-// In a staging folder, held by flock while its run lives; at commit, "INODE NAME" per entry that goes in.
+// In a staging folder, held by flock while its run lives; at commit, "INODE REPLACES NAME" per entry that
+// goes in: its inode, and fileStateOf() what it replaces as the commit checked it ("-": nothing).
 constexpr const char* kCommitList = ".omnirange-commit";
 
 std::string firstBytes(const std::string& path, std::size_t n)
@@ -302,17 +304,20 @@ void place(const std::string& staged, const std::string& target)
 		throw std::runtime_error("cannot put '" + target + "' in place (" + std::strerror(errno) + ")");
 }
 
-/** A killed run's commit finished: every entry its list names put in, once. */
+/** A killed run's commit finished: every entry its list names put in, once, and only over what the
+ * commit checked (a file edited or put there since is the user's, and stays). */
 void finishCommit(const std::string& parent, const std::string& staging)
 {
 	std::ifstream list(fs::path(staging) / kCommitList);
 	for (std::string line; std::getline(list, line);)
 	{
-		const auto space = line.find(' ');
-		if (space == std::string::npos) continue;
-		const ino_t ino = std::stoull(line.substr(0, space));
-		const std::string name = line.substr(space + 1), target = parent + "/" + name, staged = staging + "/" + name;
-		if (inodeOf(target) != ino && inodeOf(staged) == ino) place(staged, target);
+		std::istringstream in(line);
+		ino_t ino = 0;
+		std::string replaces, name;
+		if (!(in >> ino >> replaces) || !std::getline(in.ignore(1), name)) continue;
+		const std::string target = parent + "/" + name, staged = staging + "/" + name;
+		if (inodeOf(target) != ino && inodeOf(staged) == ino && fileStateOf(target) == (replaces == "-" ? "" : replaces))
+			place(staged, target);
 	}
 }
 
@@ -511,7 +516,12 @@ void OutputSet::writeLists(const std::vector<const Staged*>& order) const
 	{
 		std::string list;
 		for (const Staged* s : order)
-			if (s->parent == f.parent) list += std::to_string(inodeOf(s->staged)) + " " + fs::path(s->staged).filename().string() + "\n";
+			if (s->parent == f.parent)
+			{
+				const std::string replaces = s->state ? *s->state : fileStateOf(s->target);  // an update: as it was read
+				list += std::to_string(inodeOf(s->staged)) + " " + (replaces.empty() ? "-" : replaces) + " " +
+						fs::path(s->staged).filename().string() + "\n";
+			}
 		errno = 0;
 		if (::pwrite(f.list_fd, list.data(), list.size(), 0) != static_cast<ssize_t>(list.size()) || ::fsync(f.list_fd) != 0)
 			throw std::runtime_error(cannotWrite(f.path + "/" + kCommitList, "is the disk full?"));

@@ -64,6 +64,8 @@ class CalibrateApp : public mrpt::system::COutputLogger
 	const OrientationFit& orientation() const { return orientation_; }
 
    private:
+	/** printf() on stdout unless -q: the results are the summary -q leaves out. */
+	void say(const char* format, ...) const __attribute__((format(printf, 2, 3)));
 	/** The camera of the -c ini, or of the --save-to ini when it loads; none otherwise. */
 	std::optional<CameraParams> calibratedCamera();
 	/** Unless --accept, an error naming every doubt (one line): nothing is
