@@ -298,9 +298,9 @@ TEST(RealParaboloidMiscount, ABoardGivenOneCornerShortIsFoundAsPartOfTheLargerOn
 {
 	// 7 x 5 for the 8 x 6 board: OCamCalib and MATLAB count squares, so a
 	// user coming from them gives one less... or one more; the smaller is
-	// found inside the real board, and the calibration must say so. In this
-	// order the first three boards found (5, 4, 7) show no larger grid; the
-	// sixth (2) does, and any board may be the one that tells.
+	// found inside the real board, and the calibration must say so: on each
+	// board where a column or row of corners lies past its edge (here 2 and
+	// most of the others).
 	if (!std::filesystem::exists(kRealDir)) GTEST_SKIP() << "no " << kRealDir;
 	const std::vector<std::string> files = realImages({5, 4, 7, 9, 10, 2});
 	CheckerboardOptions o;

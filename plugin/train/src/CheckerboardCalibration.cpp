@@ -209,9 +209,41 @@ cv::Mat readBoardImage(const std::string& file, const CheckerboardOptions& o, cv
 	return gray;
 }
 
+/** One step past the last of `line` (corners in order along a row or column of the board): quadratic from
+ * the last three, as the mirror bends the board's lines, linear from two. */
+cv::Point2f onePast(const std::vector<cv::Point2f>& line)
+{
+	const std::size_t n = line.size();
+	return n >= 3 ? 3.f * line[n - 1] - 3.f * line[n - 2] + line[n - 3] : 2.f * line[n - 1] - line[n - 2];
+}
+
+/** `grid` (`pattern`) with one column more on its right and left, one row more below and above, each new
+ * corner where its row or column of the board leads: where a miscounted board's missing corners lie. */
+std::vector<std::pair<cv::Size, std::vector<cv::Point2f>>> gridsOneLarger(const cv::Size& pattern,
+																		   const std::vector<cv::Point2f>& grid)
+{
+	const int w = pattern.width, h = pattern.height;
+	const auto at = [&](int c, int r) { return grid[static_cast<std::size_t>(r * w + c)]; };
+	const auto line = [&](int from_c, int from_r, int dc, int dr, int n) {
+		std::vector<cv::Point2f> l;
+		for (int k = 0; k < n; ++k) l.push_back(at(from_c + k * dc, from_r + k * dr));
+		return onePast(l);
+	};
+	std::vector<cv::Point2f> right, left, below = grid, above;
+	for (int r = 0; r < h; ++r)
+	{
+		left.push_back(line(w - 1, r, -1, 0, w));
+		for (int c = 0; c < w; ++c) left.push_back(at(c, r)), right.push_back(at(c, r));
+		right.push_back(line(0, r, 1, 0, w));
+	}
+	for (int c = 0; c < w; ++c) below.push_back(line(c, 0, 0, 1, h)), above.push_back(line(c, h - 1, 0, -1, h));
+	above.insert(above.end(), grid.begin(), grid.end());
+	return {{{w + 1, h}, right}, {{w + 1, h}, left}, {{w, h + 1}, below}, {{w, h + 1}, above}};
+}
+
 /** The board's corners in `gray` by the first detector that finds them, and
- * whether the same detector also finds a board one corner wider or taller
- * whose every corner is a checkerboard corner (a miscounted board). */
+ * whether a column or row more of checkerboard corners lies past one of its
+ * edges (a miscounted board). */
 CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o, std::vector<cv::Point2f>& corners)
 {
 	const cv::Size pattern(o.columns, o.rows);
@@ -220,15 +252,11 @@ CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o,
 		if (findCheckerboardCorners(gray, pattern, detector, corners))
 		{
 			info.found = true, info.detector = detector;
-			// A miscount means the real grid has more inner corners, each one a
-			// corner of four squares. A detector's "found" for the larger size is
-			// not that: MRPT's OCamCalib-based one can link a board's edge corners
-			// to dark blobs past a white margin and return a row on that edge.
-			std::vector<cv::Point2f> more;
-			for (const cv::Size larger : {cv::Size(pattern.width + 1, pattern.height), cv::Size(pattern.width, pattern.height + 1)})
-				info.part_of_larger = info.part_of_larger ||
-									  (findCheckerboardCorners(gray, larger, detector, more) &&
-									   isCheckerboardGrid(gray, larger, more, saddleContrast(gray, pattern, corners)));
+			// A miscount means the real grid has more inner corners, each one a corner of four squares,
+			// where the board's rows or columns lead on; past a board's edge, on a white margin, there is none.
+			const double contrast = saddleContrast(gray, pattern, corners);
+			for (const auto& [size, larger] : gridsOneLarger(pattern, corners))
+				info.part_of_larger = info.part_of_larger || isCheckerboardGrid(gray, size, larger, contrast);
 			break;
 		}
 	return info;

@@ -38,12 +38,11 @@ struct CheckerboardImage
 	std::string detector;  ///< which of CheckerboardOptions::detectors found it
 	bool used{false};  ///< kept by the calibration (cv::omnidir drops some it cannot initialise)
 	double rms{0};  ///< [px] this image's reprojection error, when used
-	/** The same detector also finds a board one corner wider or taller, and
-	 * every corner of that grid is a checkerboard corner (isCheckerboardGrid):
-	 * the board given is likely miscounted (a part of the real one, its corners
-	 * then matched to the wrong squares). Checked on every board found. A grid
-	 * a detector completes with a row on the board's outer edge, where a white
-	 * margin begins, does not count: there is no corner there. */
+	/** Past one of the board's edges, where its rows or columns lead on, lies
+	 * one more column or row of checkerboard corners (isCheckerboardGrid): the
+	 * board given is likely miscounted (a part of the real one, its corners
+	 * then matched to the wrong squares). Checked on every board found. Past
+	 * a board's outer edge, where a white margin begins, there is no corner. */
 	bool part_of_larger{false};
 	/** The board lies where it lay in this earlier image (its corners within
 	 * kSameViewPx on average): a copy or a still camera's burst adds no view,
