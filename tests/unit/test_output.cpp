@@ -382,6 +382,10 @@ TEST(Output, NamesNoRunCanKeepItsPromiseForAreRefused)
 	EXPECT_REFUSED(requireOutputAllowed(d + "/a\nb.csv", OutputKind::Text, "p", {}), "control character");
 	EXPECT_REFUSED(requireOutputAllowed(d + "/.omnirange-abcdef", OutputKind::Text, "p", {}), "staging folders");
 	EXPECT_REFUSED(requireOutputAllowed(d + "/x.csv/", OutputKind::Text, "p", {}), "names a folder");
+	// Before any work, not at the commit: the folder an output goes in must be one.
+	EXPECT_REFUSED(requireOutputAllowed(d + "/nodir/x.csv", OutputKind::Text, "p", {}), "does not exist (make it first)");
+	put(d + "/plain", "a file");
+	EXPECT_REFUSED(requireOutputAllowed(d + "/plain/x.csv", OutputKind::Text, "p", {}), "is not a folder");
 	EXPECT_REFUSED(requireOutputAllowed(d + "/" + std::string(256, 'n'), OutputKind::Text, "p", {}), "(File name too long)");
 	EXPECT_NO_THROW(requireOutputAllowed(d + "/" + std::string(255, 'n'), OutputKind::Text, "p", {}));
 	fs::create_symlink("nowhere.csv", d + "/dangling.csv");

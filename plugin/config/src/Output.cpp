@@ -207,6 +207,15 @@ void requireNotAnothersPart(const std::string& output, const std::string& progra
 		}
 }
 
+/** Why the folder `parent` cannot hold `output` ("" when it can): said before any work, not at the commit. */
+std::string folderMissing(const fs::path& parent, const std::string& output)
+{
+	std::error_code ec;
+	if (parent.empty() || fs::is_directory(parent, ec)) return "";
+	return "the folder '" + parent.string() + "' of the output '" + output + "' " +
+		   (fs::exists(parent, ec) ? "is not a folder" : "does not exist (make it first)");
+}
+
 /** After access(W_OK) failed: the file's mode, or the file system mounted read-only. */
 std::string readOnlyWhy() { return errno == EROFS ? "is on a read-only file system" : "is read-only"; }
 
@@ -268,6 +277,7 @@ void requireAllowed(const Output& o, const std::string& program, const std::vect
 		throw std::runtime_error("the output '" + given + "' is a symbolic link to '" + fs::read_symlink(given, ec).string() +
 								 "', which does not exist (remove the link, or give another output)");
 	const std::string output = writtenThrough(given);
+	if (const std::string why = folderMissing(fs::path(output).parent_path(), given); !why.empty()) throw std::runtime_error(why);
 	if (o.kind == OutputKind::Folder) return requireFolderAllowed(output, program, force);
 	requireFileAllowed(o, output, program, force);
 }
@@ -457,8 +467,10 @@ OutputSet::Folder& OutputSet::folderFor(const std::string& parent, const std::st
 	std::string path = parent + "/" + kStagingPrefix + "XXXXXX";
 	errno = 0;
 	if (!::mkdtemp(path.data()))
-		throw std::runtime_error(errno == ENOENT ? "the folder '" + parent + "' of the output '" + output + "' does not exist (make it first)"
-												 : cannotWrite(output, "cannot make a folder beside it"));
+	{
+		const std::string why = folderMissing(parent, output);
+		throw std::runtime_error(!why.empty() ? why : cannotWrite(output, "cannot make a folder beside it"));
+	}
 	const int fd = ::open((path + "/" + kCommitList).c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
 	if (fd < 0 || ::flock(fd, LOCK_EX) != 0) throw std::runtime_error(cannotWrite(path + "/" + kCommitList));
 	folders_.push_back({parent, path, fd});
