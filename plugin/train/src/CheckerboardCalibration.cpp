@@ -254,9 +254,13 @@ CheckerboardImage detectBoard(const cv::Mat& gray, const CheckerboardOptions& o,
 			info.found = true, info.detector = detector;
 			// A miscount means the real grid has more inner corners, each one a corner of four squares,
 			// where the board's rows or columns lead on; past a board's edge, on a white margin, there is none.
+			// A line that leaves the image is not seen, and tells nothing.
 			const double contrast = saddleContrast(gray, pattern, corners);
+			const cv::Rect2f image(0, 0, static_cast<float>(gray.cols), static_cast<float>(gray.rows));
+			const auto seen = [&](const cv::Point2f& p) { return image.contains(p); };
 			for (const auto& [size, larger] : gridsOneLarger(pattern, corners))
-				info.part_of_larger = info.part_of_larger || isCheckerboardGrid(gray, size, larger, contrast);
+				info.part_of_larger = info.part_of_larger || (std::all_of(larger.begin(), larger.end(), seen) &&
+															  isCheckerboardGrid(gray, size, larger, contrast));
 			break;
 		}
 	return info;
