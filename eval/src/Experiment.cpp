@@ -167,7 +167,7 @@ Metrics Experiment::runStages()
 	r_.camera_mismatch = cameraMismatch(sim::RobotParams::loadFile(c_.robot).omnicam.camera, c_.rangefinder.camera);
 	if (!r_.camera_mismatch.empty())  // on stderr, -q or not: every figure of the run depends on it
 		activity::warn("the robot's camera (" + c_.robot + ") is not [rangefinder]'s camera: they differ in " +
-						  joined(r_.camera_mismatch) + ": the images are read as another camera's, and every range with them");
+					   joined(r_.camera_mismatch) + ": the images are read as another camera's, and every range with them");
 	fs::create_directories(out_ + "/dataset");
 	stage_ = 0;
 	const bool rbpf = std::any_of(r_.sensors.begin(), r_.sensors.end(), [](const auto& s) { return !s.rbpf_ini.empty(); });

@@ -146,7 +146,7 @@ void CalibrateApp::saveCameraKeys(const CameraParams& cam, const std::vector<std
 {
 	saveKeys(cameraKeys(cam, model_keys), with);
 	say("wrote the %s model's keys into [%s] of %s\n", toString(cam.mirror_model).c_str(), o_.section.c_str(),
-				o_.save_to.c_str());
+		o_.save_to.c_str());
 }
 
 void CalibrateApp::saveKeys(const std::vector<std::pair<std::string, std::string>>& keys,
@@ -175,27 +175,27 @@ MirrorCalibration CalibrateApp::run()
 	Progress progress("objects read");
 	const MirrorCalibration c =
 		calibrateMirror(rf, o_.calibration, progressAt(o_.verbosity, progress));
-	// The result is the program's output: on stdout, whatever the verbosity.
+	// The result is the program's output: on stdout, unless -q.
 	say("pairs: %zu (%zu kept after dropping residuals over 3x the median)\n", c.pairs, c.kept);
 	say("paraboloid:   R = %.2f px      RMS range error %.3f m (ini's R = %.2f: %.3f m)\n", c.R, c.rms_R,
-				params.camera.R, c.rms_given);
+		params.camera.R, c.rms_given);
 	say("first order:  alpha = %.2f px/rad   RMS range error %.3f m\n", c.alpha, c.rms_alpha);
 	say("height:       h = %.4f m +- %.4f (standard error over %d images), from %zu pairs with the ini's %s "
-				"model; RMS range error %.3f m (the ini's h = %.3f m)\n",
-				c.height.h, c.height.std_error, c.height.frames, c.height.used,
-				toString(params.camera.mirror_model).c_str(), c.rms_height, params.camera.h);
+		"model; RMS range error %.3f m (the ini's h = %.3f m)\n",
+		c.height.h, c.height.std_error, c.height.frames, c.height.used,
+		toString(params.camera.mirror_model).c_str(), c.rms_height, params.camera.h);
 	say("boundary: the laser's edge lies a median %+.2f px beyond the omnicam's "
-				"(suggested boundary_offset = %.2f with the ini's mirror%s)\n",
-				c.boundary_px, c.suggested_boundary_offset, c.clamped ? ", clamped to [-1, 1]" : "");
+		"(suggested boundary_offset = %.2f with the ini's mirror%s)\n",
+		c.boundary_px, c.suggested_boundary_offset, c.clamped ? ", clamped to [-1, 1]" : "");
 	constexpr double kDeg = 57.29577951308232;
 	const ScaledOrientationFit scaled = fitOrientationAndScale(params, colours, c, o_.calibration);
 	const OrientationFit& f = scaled.fit;
 	orientation_ = f;
 	say("orientation: forward_azimuth_deg = %.0f, mirrored = %s (at %s = %.4g; %d of %d frames agree within "
-				"%.0f deg); mean error %.3f m (the ini's %.0f deg, %s: %.3f m)\n",
-				f.forward_azimuth * kDeg, f.mirrored ? "true" : "false", scaled.scale_key.c_str(), scaled.scale,
-				f.agreeing, f.frames, kAgreeingTurn * kDeg, f.error, params.camera.forward_azimuth * kDeg,
-				params.camera.mirrored ? "true" : "false", f.error_as_given);
+		"%.0f deg); mean error %.3f m (the ini's %.0f deg, %s: %.3f m)\n",
+		f.forward_azimuth * kDeg, f.mirrored ? "true" : "false", scaled.scale_key.c_str(), scaled.scale,
+		f.agreeing, f.frames, kAgreeingTurn * kDeg, f.error, params.camera.forward_azimuth * kDeg,
+		params.camera.mirrored ? "true" : "false", f.error_as_given);
 	if (!pinnedDown(f))
 		requireSure({"only " + std::to_string(f.agreeing) + " of " + std::to_string(f.frames) +
 					 " frames have their own best orientation within " + formatDouble(std::round(kAgreeingTurn * kDeg)) +
@@ -207,7 +207,7 @@ MirrorCalibration CalibrateApp::run()
 	const bool orientation_ok = f.mirrored == params.camera.mirrored && turn <= 1.5 / kDeg;
 	if (!orientation_ok)
 		say("the ini's orientation is off: set forward_azimuth_deg and mirrored as above and run again "
-					"(R, alpha and the boundary above were fitted with the ini's orientation)\n");
+			"(R, alpha and the boundary above were fitted with the ini's orientation)\n");
 	if (!o_.save_to.empty())
 	{
 		std::vector<std::pair<std::string, std::string>> keys{
@@ -234,20 +234,20 @@ CheckerboardCalibration CalibrateApp::runIntrinsics()
 	const CheckerboardCalibration c = calibrateFromCheckerboards(o_.checkerboards, o_.board);
 	for (const auto& i : c.images)
 		say("%s: %s%s\n", i.file.c_str(),
-					i.found ? ("board found (" + i.detector + ")").c_str()
-							: ("no board of " + std::to_string(o_.board.columns) + "x" + std::to_string(o_.board.rows) +
-							   " inner corners found")
-								  .c_str(),
-					i.used ? (", reprojection " + std::to_string(i.rms).substr(0, 5) + " px").c_str()
-					: !i.same_view_as.empty() ? (", not used: the board lies as in " + i.same_view_as).c_str()
-					: (i.found ? ", not used: cv::omnidir could not start its fit from it" : ""));
+			i.found ? ("board found (" + i.detector + ")").c_str()
+					: ("no board of " + std::to_string(o_.board.columns) + "x" + std::to_string(o_.board.rows) +
+					   " inner corners found")
+						  .c_str(),
+			i.used ? (", reprojection " + std::to_string(i.rms).substr(0, 5) + " px").c_str()
+			: !i.same_view_as.empty() ? (", not used: the board lies as in " + i.same_view_as).c_str()
+			: (i.found ? ", not used: cv::omnidir could not start its fit from it" : ""));
 	say("boards found in %d of %zu images, %d used; RMS reprojection error %.3f px\n", c.found(),
-				c.images.size(), c.used(), c.rms);
+		c.images.size(), c.used(), c.rms);
 	say("fx %.2f  fy %.2f  skew %.3f  cx %.2f  cy %.2f px;  xi %.4f;  k1 %.4f  k2 %.4f  p1 %.5f  p2 %.5f\n",
-				c.K(0, 0), c.K(1, 1), c.K(0, 1), c.K(0, 2), c.K(1, 2), c.xi, c.D[0], c.D[1], c.D[2], c.D[3]);
+		c.K(0, 0), c.K(1, 1), c.K(0, 1), c.K(0, 2), c.K(1, 2), c.xi, c.D[0], c.D[1], c.D[2], c.D[3]);
 	if (c.centre_subsets > 0)
 		say("the centre moves up to %.2f px when a group of boards is left out (%d calibrations)\n",
-					c.centre_spread, c.centre_subsets);
+			c.centre_spread, c.centre_subsets);
 
 	std::vector<std::string> doubts;
 	for (const auto& i : c.images)
@@ -325,8 +325,8 @@ MirrorRim CalibrateApp::runRim()
 {
 	const MirrorRim rim = detectMirrorRim(o_.rim_images);
 	say("mirror disc: centre cx = %.1f px, cy = %.1f px; rim radius %.1f px; ellipticity %.3f (from %zu images; "
-				"one image's own centre at most %.1f px from it)\n",
-				rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size(), rim.centre_spread);
+		"one image's own centre at most %.1f px from it)\n",
+		rim.cx, rim.cy, rim.radius, rim.ellipticity, o_.rim_images.size(), rim.centre_spread);
 	// A disc the whole image could not hold, or far from round, is not a mirror's rim.
 	std::vector<std::string> doubts;
 	if (rim.cx - rim.radius < 0 || rim.cy - rim.radius < 0 || rim.cx + rim.radius > rim.image_width ||
@@ -396,10 +396,10 @@ CameraParams CalibrateApp::runOCamCalib()
 	}
 	const OmniCameraModel& model = *checked;
 	say("OCamCalib model: %zu coefficients, centre cx = %.2f px, cy = %.2f px, image %d x %d; "
-				"the horizon at %.1f px\n",
-				f.poly.size(), cam.cx, cam.cy, cam.image_width, cam.image_height, model.horizonRho());
+		"the horizon at %.1f px\n",
+		f.poly.size(), cam.cx, cam.cy, cam.image_width, cam.image_height, model.horizonRho());
 	say("affine terms c %.5f, d %.5f, e %.5f%s\n", f.c, f.d, f.e,
-				model.radial() ? " (none: the image is radial)" : " (the scanlines follow them)");
+		model.radial() ? " (none: the image is radial)" : " (the scanlines follow them)");
 	if (!o_.save_to.empty())
 	{
 		saveCameraKeys(cam, {"ocam_poly", "ocam_affine"});
